@@ -1,0 +1,138 @@
+"""Command-line entry points called by the Snakemake rules (``python -m vibroadhesion.cli STEP ...``).
+
+Each step reads artefacts, calls the package and writes artefacts atomically; a failure
+prints one line to stderr and exits with status 1, leaving no output behind.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from vibroadhesion import data, figures, groups
+from vibroadhesion.artefacts import save_figure, write_csv, write_json
+from vibroadhesion.fitting import FitError, fit_gent_schultz, parameters_from_fit
+from vibroadhesion.jkr import pulloff_force
+from vibroadhesion.pulloff import MODELS, GentSchultzParameters
+from vibroadhesion.roots import NoRootError
+
+
+def _fit(args: argparse.Namespace) -> None:
+    setup = data.read_canonical_setup(args.setup)
+    rows = data.read_canonical_pulloff(args.pulloff)
+    published = GentSchultzParameters(setup.w0, setup.n, setup.v0)
+    geometry = {"radius": setup.radius, "reduced_modulus": setup.reduced_modulus}
+    fits = {model: fit_gent_schultz(rows, model, published, **geometry) for model in MODELS}
+    summary = {
+        "data_rows": len(rows),
+        "status": "published parameters passed through (no measured rows)" if rows.empty else "fitted",
+        "published": {"w0": setup.w0, "n": setup.n, "v0": setup.v0, "source": setup.sources["gent_schultz_published.w0"]},
+        "figures_use": args.figures_use,
+        "fits": fits,
+    }
+    write_json(summary, args.out)
+    for model, fit in fits.items():
+        p = fit["parameters"]
+        print(f"{model}: {fit['status']}; w0 = {p['w0']['estimate']:.6g} J/m^2, n = {p['n']['estimate']:.6g}, "
+              f"v0 = {p['v0']['estimate']:.6g} m/s; {fit['v0_note']}")
+
+
+def _load_fit(path: str) -> dict:
+    return json.loads(Path(path).read_text())
+
+
+def _fig3_data(args: argparse.Namespace) -> None:
+    fit = _load_fit(args.fit)
+    n_fitted = parameters_from_fit(fit["fits"][fit["figures_use"]]).n
+    abar = np.logspace(args.log10_abar_min, args.log10_abar_max, args.points)
+    write_csv(figures.fig3_table([n_fitted, *args.panel_n], abar), args.out)
+
+
+def _fig3_plot(args: argparse.Namespace) -> None:
+    fit = _load_fit(args.fit)
+    n_fitted = parameters_from_fit(fit["fits"][fit["figures_use"]]).n
+    fig = figures.plot_fig3(pd.read_csv(args.csv), n_fitted, args.panel_n)
+    save_figure(fig, args.pdf, args.png)
+
+
+def _fig4_data(args: argparse.Namespace) -> None:
+    setup = data.read_canonical_setup(args.setup)
+    fit = _load_fit(args.fit)
+    params = {model: parameters_from_fit(fit["fits"][model]) for model in MODELS}
+    h1 = np.linspace(0.0, args.h1_max_um, args.points)
+    table = figures.fig4_table(params, setup.frequencies_hz, h1, radius=setup.radius,
+                               reduced_modulus=setup.reduced_modulus)
+    write_csv(table, args.out)
+
+
+def _fig4_plot(args: argparse.Namespace) -> None:
+    setup = data.read_canonical_setup(args.setup)
+    fit = _load_fit(args.fit)
+    w0 = parameters_from_fit(fit["fits"]["leading"]).w0
+    jkr_mN = float(-pulloff_force(w0, setup.radius)) * 1e3
+    fig = figures.plot_fig4(pd.read_csv(args.csv), data.read_canonical_pulloff(args.pulloff), jkr_mN)
+    save_figure(fig, args.pdf, args.png)
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="python -m vibroadhesion.cli", description=__doc__)
+    steps = parser.add_subparsers(dest="step", required=True)
+
+    p = steps.add_parser("fit", help="Gent–Schultz fit with both model levels")
+    p.add_argument("--setup", required=True)
+    p.add_argument("--pulloff", required=True)
+    p.add_argument("--figures-use", choices=MODELS, default="refined")
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_fit)
+
+    for name, run, needs_csv in (("fig3-data", _fig3_data, False), ("fig3-plot", _fig3_plot, True)):
+        p = steps.add_parser(name)
+        p.add_argument("--fit", required=True)
+        p.add_argument("--panel-n", type=float, nargs="+", required=True)
+        if needs_csv:
+            p.add_argument("--csv", required=True)
+            p.add_argument("--pdf", required=True)
+            p.add_argument("--png", required=True)
+        else:
+            p.add_argument("--log10-abar-min", type=float, required=True)
+            p.add_argument("--log10-abar-max", type=float, required=True)
+            p.add_argument("--points", type=int, required=True)
+            p.add_argument("--out", required=True)
+        p.set_defaults(run=run)
+
+    p = steps.add_parser("fig4-data")
+    p.add_argument("--setup", required=True)
+    p.add_argument("--fit", required=True)
+    p.add_argument("--h1-max-um", type=float, required=True)
+    p.add_argument("--points", type=int, required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_fig4_data)
+
+    p = steps.add_parser("fig4-plot")
+    p.add_argument("--setup", required=True)
+    p.add_argument("--fit", required=True)
+    p.add_argument("--pulloff", required=True)
+    p.add_argument("--csv", required=True)
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png", required=True)
+    p.set_defaults(run=_fig4_plot)
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
+    try:
+        args.run(args)
+    except (data.DataError, NoRootError, FitError, ValueError) as exc:
+        print(f"error: {args.step}: {exc}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

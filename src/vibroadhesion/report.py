@@ -1,0 +1,105 @@
+"""Tables and the index page of the rendered report (results/report/).
+
+Notebooks in notebooks/ call these functions on the pipeline's artefacts; they hold no model
+code. Every table a page shows is built here, so the pages stay a few lines long.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import math
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from vibroadhesion import data, groups
+from vibroadhesion.artefacts import atomic_path
+from vibroadhesion.jkr import pulloff_force
+
+#: (file stem, title) of every report page, in the order of the index.
+PAGES: list[tuple[str, str]] = [
+    ("fig3", "Fig. 3 — J-integrals of the Gent–Schultz law"),
+    ("fig4", "Fig. 4 — pull-off amplification against base amplitude"),
+    ("fit", "Gent–Schultz fit and parameter provenance"),
+    ("benchmarks", "Speed against error: J-integrals and rule timings"),
+]
+
+
+def setup_table(setup_json: str | Path) -> pd.DataFrame:
+    """Every input value with its unit and source, as ingested from data/setup.yaml."""
+    setup = data.read_canonical_setup(setup_json)
+    rows = []
+    for key, source in sorted(setup.sources.items()):
+        rows.append({"quantity": key, "value": setup.values[key], "unit": setup.units.get(key, ""), "source": source})
+    return pd.DataFrame(rows)
+
+
+def derived_table(setup_json: str | Path, fit_json: str | Path, model: str) -> pd.DataFrame:
+    """Dimensionless groups at the parameters of ``model``'s fit, with the formula of each."""
+    setup = data.read_canonical_setup(setup_json)
+    p = json.loads(Path(fit_json).read_text())["fits"][model]["parameters"]
+    w0, v0 = p["w0"]["estimate"], p["v0"]["estimate"]
+    e_star, r = setup.reduced_modulus, setup.radius
+    rows = [
+        ("E*", e_star, "Pa", "f_storage E / (1 - nu^2) (Sec. 3.4, App. A)"),
+        ("chi0", groups.chi0(w0, e_star, r), "1", "(9 pi w0 / (E* R))^(1/3), Eq. (64)"),
+        ("a_o", groups.contact_radius_scale(w0, e_star, r), "m", "(2 pi w0 R^2 / E*)^(1/3), Eq. (86)"),
+        ("|P_JKR|", float(-pulloff_force(w0, r)) * 1e3, "mN", "(3 pi / 2) R w0, Eq. (71)"),
+    ]
+    rows += [(f"eta1 at h1 = {h:g} um", float(groups.eta1(h * 1e-6, r)), "1", "h1 / R, Eq. (65)") for h in setup.amplitudes_um]
+    rows += [(f"omega_check at {f:g} Hz", float(groups.omega_check(f, v0, r)), "1", "omega R / v0, Eq. (105)")
+             for f in setup.frequencies_hz]
+    return pd.DataFrame(rows, columns=["quantity", "value", "unit", "definition"])
+
+
+def fit_table(fit_json: str | Path) -> pd.DataFrame:
+    """Estimates and standard errors of both fits, with where each value comes from."""
+    fit = json.loads(Path(fit_json).read_text())
+    rows = []
+    for model, summary in fit["fits"].items():
+        for name, entry in summary["parameters"].items():
+            rows.append({"model": model, "status": summary["status"], "parameter": name, "estimate": entry["estimate"],
+                         "std_error": entry["std_error"], "unit": entry["unit"], "source": entry["source"]})
+    return pd.DataFrame(rows)
+
+
+def rows_at(table: pd.DataFrame, column: str, values: Sequence[float]) -> pd.DataFrame:
+    """The rows of ``table`` whose ``column`` is closest to each of ``values`` (for compact display)."""
+    picks = [int(np.argmin(np.abs(np.log(table[column].to_numpy()) - math.log(v)))) for v in values]
+    return table.iloc[sorted(set(picks))]
+
+
+def rule_timings(tsv_files: Sequence[str | Path]) -> pd.DataFrame:
+    """Wall time and peak memory of the rules that carry a ``benchmark:`` directive."""
+    rows = []
+    for path in tsv_files:
+        t = pd.read_csv(path, sep="\t")
+        rows.append({"rule": Path(path).stem, "wall_s": float(t["s"].iloc[0]), "max_rss_MB": float(t["max_rss"].iloc[0])})
+    return pd.DataFrame(rows)
+
+
+def write_index(out: str | Path, pages: Sequence[tuple[str, str]] = PAGES) -> None:
+    """results/report/index.html: one link per page (pages are siblings of the index)."""
+    items = "\n".join(f'    <li><a href="{html.escape(stem)}.html">{html.escape(title)}</a></li>' for stem, title in pages)
+    text = f"""<!DOCTYPE html>
+<html lang="en">
+<head><meta charset="utf-8"><title>Vibroadhesion: report</title>
+<style>body {{ font-family: sans-serif; max-width: 48em; margin: 2em auto; line-height: 1.5; }}</style></head>
+<body>
+  <h1>An asymptotic model of vibroadhesion — reproduction report</h1>
+  <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>. Every page is a
+  notebook executed by papermill on the artefacts of the pipeline (<code>snakemake -c2</code>);
+  the numbers behind each figure are in <code>results/figN/figN.csv</code>.</p>
+  <p>No measured pull-off forces are published in text form; unless you added rows to
+  <code>data/pulloff.csv</code>, the figures use the published Gent–Schultz parameters.</p>
+  <ul>
+{items}
+  </ul>
+</body>
+</html>
+"""
+    with atomic_path(out) as tmp:
+        tmp.write_text(text)
