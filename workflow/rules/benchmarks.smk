@@ -1,0 +1,13 @@
+rule benchmark_j_integrals:
+    """Speed against error of the J-integrals: fixed rule vs scipy quad, both against mpmath."""
+    input:
+        script="benchmarks/j_integrals.py",
+        reference="tests/mpmath_reference.py",
+        code=code("ratelaw", "integrals", "benchmarking", "artefacts"),
+    output:
+        csv="results/benchmarks/j_integrals.csv",
+        txt="results/benchmarks/j_integrals.txt",
+    log:
+        "results/logs/benchmark_j_integrals.log",
+    shell:
+        "{PYTHON} {input.script} {output.csv} {output.txt} 2>&1 | tee {log}"

@@ -1,0 +1,21 @@
+# Helpers shared by the rules.
+import sys
+from pathlib import Path
+
+# Run every step with the interpreter that runs Snakemake (the project's virtual environment),
+# whether or not that environment is activated in the shell.
+PYTHON = sys.executable
+
+FIGURES = ["fig3", "fig4"]
+
+
+def code(*modules):
+    """Package sources a rule depends on, plus the lock: editing any of them reruns the rule.
+
+    Snakemake does not track imported code by itself; listing the files as inputs makes a
+    change of their content trigger a rerun of exactly the rules that use them.
+    """
+    return [f"src/vibroadhesion/{m}.py" for m in modules] + ["environment.lock"]
+
+
+NUMERICS = ["ratelaw", "integrals", "roots", "groups", "jkr", "leading_order", "refined", "pulloff"]

@@ -1,0 +1,63 @@
+# Report: each page is a notebook executed by papermill, then rendered to HTML by nbconvert.
+
+PAGE_INPUTS = {
+    "fig3": {"fig_csv": "results/fig3/fig3.csv", "fig_png": "results/fig3/fig3.png",
+             "fit_json": "results/fit/gent_schultz.json"},
+    "fig4": {"fig_csv": "results/fig4/fig4.csv", "fig_png": "results/fig4/fig4.png",
+             "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json",
+             "pulloff_csv": "results/data/pulloff.csv"},
+    "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
+    "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",
+                   "rule_tsvs": [f"results/benchmarks/rules/{r}.tsv" for r in ("fit_gent_schultz", "fig3_data", "fig4_data")]},
+}
+
+
+def papermill_parameters(wildcards, input):
+    """-r NAME PATH for every artefact the page reads (paths as strings: -r, not -p)."""
+    args = [f"-r {name} {getattr(input, name)}" for name in PAGE_INPUTS[wildcards.page] if name != "rule_tsvs"]
+    if wildcards.page == "benchmarks":
+        args.append("-r rule_tsv_glob 'results/benchmarks/rules/*.tsv'")
+    return " ".join(args)
+
+
+rule execute_notebook:
+    """Run one report notebook with papermill on the pipeline's artefacts."""
+    input:
+        unpack(lambda wc: PAGE_INPUTS[wc.page]),
+        notebook="notebooks/{page}.ipynb",
+        code=code("report", "data", "groups", "jkr"),
+    output:
+        "results/report/notebooks/{page}.ipynb",
+    params:
+        parameters=papermill_parameters,
+    log:
+        "results/logs/notebook_{page}.log",
+    shell:
+        "{PYTHON} -m papermill --no-progress-bar -k python3 --cwd . {input.notebook} {output} {params.parameters} "
+        "> {log} 2>&1 || (cat {log} >&2; exit 1)"
+
+
+rule render_page:
+    """Render an executed notebook to a self-contained HTML page."""
+    input:
+        "results/report/notebooks/{page}.ipynb",
+    output:
+        "results/report/{page}.html",
+    log:
+        "results/logs/render_{page}.log",
+    localrule: True
+    shell:
+        "{PYTHON} -m nbconvert --to html --output-dir results/report --output {wildcards.page} {input} > {log} 2>&1"
+
+
+rule report_index:
+    input:
+        expand("results/report/{page}.html", page=list(PAGE_INPUTS)),
+        code=code("report"),
+    output:
+        "results/report/index.html",
+    log:
+        "results/logs/report_index.log",
+    localrule: True
+    shell:
+        "{PYTHON} -c 'from vibroadhesion.report import write_index; write_index(\"{output}\")' > {log} 2>&1"
