@@ -79,6 +79,56 @@ def _fig4_plot(args: argparse.Namespace) -> None:
     save_figure(fig, args.pdf, args.png)
 
 
+def _rig_and_parameters(args: argparse.Namespace):
+    """The ingested rig, the parameters of the fit the figures use, and chi0 at those parameters."""
+    setup = data.read_canonical_setup(args.setup)
+    fit = _load_fit(args.fit)
+    params = parameters_from_fit(fit["fits"][fit["figures_use"]])
+    return setup, params, groups.chi0(params.w0, setup.reduced_modulus, setup.radius)
+
+
+def _experiment_omega_check(setup, params) -> dict[float, float]:
+    return {f: float(groups.omega_check(f, params.v0, setup.radius)) for f in setup.frequencies_hz}
+
+
+def _omega_grid(args: argparse.Namespace) -> np.ndarray:
+    return np.logspace(args.log10_omega_min, args.log10_omega_max, args.points)
+
+
+def _fig6_data(args: argparse.Namespace) -> None:
+    setup, params, chi0 = _rig_and_parameters(args)
+    table = figures.fig6_table(setup.amplitudes_um, _omega_grid(args), chi0=chi0, radius=setup.radius, n=params.n)
+    write_csv(table, args.out)
+    outside = table["A_over_am"] > figures.APPLICABILITY_LIMIT
+    impossible = table["A_over_am"] > 1.0
+    print(f"{len(table)} points solved; {int(outside.sum())} with A/a_m > {figures.APPLICABILITY_LIMIT} (outside the "
+          f"asymptotic model), of which {int(impossible.sum())} with A/a_m > 1 (geometrically impossible)")
+
+
+def _fig7_data(args: argparse.Namespace) -> None:
+    setup, params, chi0 = _rig_and_parameters(args)
+    write_csv(figures.fig7_table(setup.amplitudes_um, _omega_grid(args), chi0=chi0, radius=setup.radius, n=params.n), args.out)
+
+
+def _fig8_data(args: argparse.Namespace) -> None:
+    _, params, chi0 = _rig_and_parameters(args)
+    write_csv(figures.fig8_table(pd.read_csv(args.fig6), chi0=chi0, n=params.n), args.out)
+
+
+def _rigid_fixation_plot(args: argparse.Namespace) -> None:
+    setup, params, _ = _rig_and_parameters(args)
+    marks = _experiment_omega_check(setup, params)
+    table = pd.read_csv(args.csv)
+    if args.step == "fig6-plot":
+        fig = figures.plot_fig6(table, marks)
+    elif args.step == "fig7-plot":
+        fig4 = pd.read_csv(args.fig4)
+        fig = figures.plot_fig7(table, fig4[fig4["model"] == "leading"], marks)
+    else:
+        fig = figures.plot_fig8(table, marks)
+    save_figure(fig, args.pdf, args.png)
+
+
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m vibroadhesion.cli", description=__doc__)
     steps = parser.add_subparsers(dest="step", required=True)
@@ -121,7 +171,35 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--pdf", required=True)
     p.add_argument("--png", required=True)
     p.set_defaults(run=_fig4_plot)
+
+    for name, run in (("fig6-data", _fig6_data), ("fig7-data", _fig7_data)):
+        p = steps.add_parser(name)
+        _rig_arguments(p)
+        p.add_argument("--log10-omega-min", type=float, required=True)
+        p.add_argument("--log10-omega-max", type=float, required=True)
+        p.add_argument("--points", type=int, required=True)
+        p.add_argument("--out", required=True)
+        p.set_defaults(run=run)
+    p = steps.add_parser("fig8-data")
+    _rig_arguments(p)
+    p.add_argument("--fig6", required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_fig8_data)
+    for name in ("fig6-plot", "fig7-plot", "fig8-plot"):
+        p = steps.add_parser(name)
+        _rig_arguments(p)
+        p.add_argument("--csv", required=True)
+        if name == "fig7-plot":
+            p.add_argument("--fig4", required=True, help="fig4.csv: its leading-order rows are Fig. 7's asymptotes")
+        p.add_argument("--pdf", required=True)
+        p.add_argument("--png", required=True)
+        p.set_defaults(run=_rigid_fixation_plot)
     return parser
+
+
+def _rig_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--setup", required=True)
+    p.add_argument("--fit", required=True)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -16,6 +16,9 @@ import pandas as pd
 
 from vibroadhesion.integrals import j_integrals, j_integrals_large_abar
 from vibroadhesion.pulloff import GentSchultzParameters, Model, predict_pulloff
+from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.refined import nominal_point_contact, pulloff_refined
+from vibroadhesion.stiffness import dynamic_stiffness
 
 FIG3_COLUMNS = ["n", "Abar", "J0", "Jc1", "J1"]
 FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
@@ -104,4 +107,105 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
                 va="top", fontsize=7.5, color="0.35")
     ax.set(xlabel=r"base amplitude $h_1$ (µm)", ylabel=r"$P_{cr}/P^{JKR}_{cr}$", xlim=(0, None), ylim=(0, None))
     ax.legend(loc="lower right")
+    return fig
+
+
+# --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
+
+FIG6_COLUMNS = ["h1_um", "omega_check", "Abar", "abar_m", "w_eff_ratio", "A_over_am"]
+FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "ratio"]
+FIG8_COLUMNS = ["h1_um", "omega_check", "S_storage_rel", "S_loss_rel", "phase_rad"]
+
+#: The asymptotic model needs A << a_m; the paper takes A <= 0.1 a_m as its region (Sec. 3.5.3).
+APPLICABILITY_LIMIT = 0.1
+
+
+def fig6_table(h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float) -> pd.DataFrame:
+    """Nominal point contact of a rigidly fixed indenter (Eqs. 122–123, 49, corrected 98)."""
+    h1 = np.asarray(h1_um, dtype=float)[:, None]
+    sol = nominal_point_contact(h1 * 1e-6 / radius, omega_check[None, :], chi0, GentSchultz(n))
+    return pd.DataFrame(
+        {"h1_um": np.broadcast_to(h1, sol.abar.shape).ravel(), "omega_check": np.broadcast_to(omega_check, sol.abar.shape).ravel(),
+         "Abar": sol.abar.ravel(), "abar_m": sol.abar_m.ravel(), "w_eff_ratio": sol.w_eff_ratio.ravel(),
+         "A_over_am": sol.a_over_am.ravel()}
+    )[FIG6_COLUMNS]
+
+
+def fig7_table(h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float) -> pd.DataFrame:
+    """Refined pull-off estimate against omega_check (Eq. 106) for each amplitude."""
+    h1 = np.asarray(h1_um, dtype=float)[:, None]
+    est = pulloff_refined(h1 * 1e-6 / radius, chi0, omega_check[None, :], GentSchultz(n))
+    return pd.DataFrame(
+        {"h1_um": np.broadcast_to(h1, est.abar_cr.shape).ravel(), "omega_check": np.broadcast_to(omega_check, est.abar_cr.shape).ravel(),
+         "Abar_cr": est.abar_cr.ravel(), "ratio": est.ratio.ravel()}
+    )[FIG7_COLUMNS]
+
+
+def fig8_table(fig6: pd.DataFrame, *, chi0: float, n: float) -> pd.DataFrame:
+    """Dynamic contact stiffness (Eqs. 117–121) along the Fig. 6 solution: no new solve."""
+    s = dynamic_stiffness(fig6["Abar"].to_numpy(), fig6["abar_m"].to_numpy(), chi0, fig6["omega_check"].to_numpy(), GentSchultz(n))
+    return pd.DataFrame({"h1_um": fig6["h1_um"], "omega_check": fig6["omega_check"], "S_storage_rel": s.storage_rel,
+                         "S_loss_rel": s.loss_rel, "phase_rad": s.phase_rad})[FIG8_COLUMNS]
+
+
+def _by_amplitude(table: pd.DataFrame):
+    return table.groupby("h1_um", sort=True)
+
+
+def _mark_frequencies(ax: plt.Axes, experiment_omega_check: Mapping[float, float]) -> None:
+    for k, (f, w) in enumerate(sorted(experiment_omega_check.items())):
+        ax.axvline(w, color="0.5", lw=0.7, ls=(0, (1, 2)), label="test frequencies 200/300/400 Hz" if k == 0 else None)
+
+
+def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
+    """(a) Abar, (b) abar_m, (c) w_eff/w0, (d) A/a_m against omega_check, regions of (d) shaded."""
+    fig, axes = plt.subplots(2, 2, figsize=(9.0, 6.4), constrained_layout=True, sharex=True)
+    panels = [("Abar", r"$\bar A$", "log"), ("abar_m", r"$\bar a_m = a_m/a_o$", "linear"),
+              ("w_eff_ratio", r"$w_{eff}/w_0$", "linear"), ("A_over_am", r"$A/a_m$", "log")]
+    for ax, (column, label, yscale), letter in zip(axes.flat, panels, "abcd"):
+        for k, (h1, rows) in enumerate(_by_amplitude(table)):
+            ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
+        ax.set(xscale="log", yscale=yscale, ylabel=label, title=f"({letter})")
+        _mark_frequencies(ax, experiment_omega_check)
+    ax_d = axes.flat[3]
+    lo, hi = ax_d.get_ylim()
+    ax_d.axhspan(1.0, max(hi, 10.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
+    ax_d.axhspan(min(lo, 1e-7), APPLICABILITY_LIMIT, color="C2", alpha=0.12, label=r"$A \leq 0.1\,a_m$: model applies")
+    ax_d.set_ylim(min(lo, 1e-7), max(hi, 10.0))
+    for ax in axes[1]:
+        ax.set_xlabel(r"$\check{\omega} = \omega R / v_0$")
+    axes.flat[0].legend()
+    ax_d.legend(loc="lower left")
+    return fig
+
+
+def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
+    """(a) Abar_cr and (b) P_cr/P_JKR against omega_check; dashed: the leading-order values (Eq. 72)."""
+    fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
+    for k, (h1, rows) in enumerate(_by_amplitude(table)):
+        lead = leading[np.isclose(leading["h1_um"], h1)].iloc[0]
+        for ax, column, asymptote in ((ax_a, "Abar_cr", lead["Abar_cr"]), (ax_b, "ratio", lead["ratio"])):
+            ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
+            ax.axhline(asymptote, color=f"C{k}", ls="--", lw=0.8)
+    for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):
+        _mark_frequencies(ax, experiment_omega_check)
+        ax.set(xscale="log", xlabel=r"$\check{\omega} = \omega R / v_0$", ylabel=label,
+               title=f"({letter}) dashed: leading order, Eq. (72)")
+    ax_a.set_yscale("log")
+    ax_b.legend()
+    return fig
+
+
+def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
+    """Storage and loss contact stiffness relative to 2E*a_m, and the phase, against omega_check."""
+    fig, axes = plt.subplots(1, 3, figsize=(11.0, 3.5), constrained_layout=True)
+    panels = [("S_storage_rel", r"$\tilde S'/(2E^*a_m)$"), ("S_loss_rel", r"$\tilde S''/(2E^*a_m)$"), ("phase_rad", "phase (rad)")]
+    for ax, (column, label), letter in zip(axes, panels, "abc"):
+        for k, (h1, rows) in enumerate(_by_amplitude(table)):
+            ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
+        _mark_frequencies(ax, experiment_omega_check)
+        ax.set(xscale="log", xlabel=r"$\check{\omega}$", ylabel=label, title=f"({letter})")
+    axes[0].axhline(1.0, color="k", lw=0.6, ls="--")
+    axes[0].axhline(1.0 / 3.0, color="k", lw=0.6, ls=":")
+    axes[0].legend()
     return fig

@@ -1,63 +1,110 @@
-"""Refined asymptotic model (Sec. 3.6): frequency-dependent pull-off estimate.
+"""Refined asymptotic model (Secs. 3.5.4, 3.6, 3.7): rigid fixation, frequency dependent.
 
-The refined harmonic coefficients, Eqs. (93)–(94), keep the quasi-static term of Eq. (46)
-that the leading order drops. With a_m = a_cr, i.e. abar_m^(3/2) = (3/4) J0 (Eq. 61 over the
-scale a_o of Eq. 86), they become Eq. (104), and the high-frequency displacement condition
-(103) gives
+The refined harmonic coefficients of the indentation, Eqs. (93)–(94), keep the quasi-static
+term of Eq. (46) that the leading order drops. Divided by R, and with nu0/omega_bar =
+1/omega_check (Eqs. 97, 105):
 
-    chi0^4/9 J0^(2/3) Jc1^2 + chi0^2/w^2 Abar^2 J0^(4/3) (1 - J1/(3 J0))^2 = eta1^2,   Eq. (106)
+    delta_c = -(2^(2/3) / 3^(4/3)) chi0^2 abar_m^(1/2) Jc1                          Eq. (93)
+    delta_s = (2^(4/3) / 3^(2/3)) chi0 (Abar / omega_check) abar_m (1 - J1/(4 abar_m^(3/2)))   Eq. (94)
 
-with w = omega_check = omega R / v0 (Eq. 105). As omega_check -> infinity the second term
-vanishes and Eq. (106) is the square of Eq. (72): the leading-order estimate.
+For a rigidly fixed indenter the displacement amplitude equals the base amplitude,
+delta_c^2 + delta_s^2 = eta1^2 (Eqs. 100, 103). Two closures fix abar_m:
 
-Uniqueness (Gent–Schultz law). The first term is the square of the leading-order left-hand
-side, strictly increasing (:mod:`vibroadhesion.leading_order`). In the second term write
-Abar J0^(2/3) (1 - J1/(3J0)) = Abar J0^(-1/3) (J0 - J1/3). J0 - J1/3 = 1/pi int S(u)
-(1 - 2/3 cos^2 t) dt has a positive weight and an increasing S, so it increases. And
-d ln J0 / d ln Abar = n <u S'(u)> / <S(u)> < n/2 because u S'(u)/S(u) = u^2/(2(1+u)(2+u)) < 1/2,
-so Abar J0^(-1/3) increases whenever n < 6. The left-hand side thus rises strictly from 0 to
-infinity and Eq. (106) has exactly one root for every eta1 > 0, omega_check > 0, n < 6.
+* pull-off (Sec. 3.6): a_m = a_cr, abar_m = (9/16)^(1/3) J0^(2/3) (Eqs. 61, 86), which turns
+  Eq. (103) into Eq. (106);
+* nominal point contact (Secs. 3.5.4, 3.7): abar_m = J0^(2/3) (Eqs. 99, 123), which turns it
+  into Eq. (122) (the printed Eq. 101 is wrong: docs/errata.md, E2).
+
+As omega_check -> infinity delta_s vanishes and both reduce to the leading order (Eqs. 72, 55).
+
+Uniqueness (Gent–Schultz law). With abar_m = c J0^(2/3) (c > 0), delta_c^2 = const J0^(2/3) Jc1^2
+is strictly increasing (J0 and |Jc1| are, :mod:`vibroadhesion.leading_order`). delta_s is
+proportional to Abar J0^(2/3) (1 - J1/(4 c^(3/2) J0)) = Abar J0^(-1/3) (J0 - J1/(4 c^(3/2))).
+For both closures 4 c^(3/2) >= 3, so J0 - J1/(4c^(3/2)) = 1/pi int S(u) (1 - 2 cos^2 t/(4 c^(3/2))) dt
+has a positive weight and an increasing S: it increases. And d ln J0 / d ln Abar
+= n <u S'(u)> / <S(u)> < n/2 because u S'/S = u^2/(2(1+u)(2+u)) < 1/2, so Abar J0^(-1/3)
+increases whenever n < 6. The left-hand side rises strictly from 0 to infinity: one root for
+every eta1 > 0, omega_check > 0 and n < 6.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.leading_order import PulloffEstimate, critical_abar_leading
+from vibroadhesion.leading_order import PulloffEstimate
 from vibroadhesion.ratelaw import RateLaw
 from vibroadhesion.roots import solve_log_increasing
 
+Array = NDArray[np.float64]
 
-def pulloff_lhs_refined(abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float) -> NDArray[np.float64]:
-    """Left-hand side of Eq. (106); ``omega_check = inf`` drops the frequency term."""
-    abar = np.asarray(abar, dtype=float)
-    j0, jc1, j1 = j_integrals_for_law(abar, law)
-    static = chi0**4 / 9.0 * np.cbrt(j0) ** 2 * jc1**2
+
+def pulloff_closure(j0: Array) -> Array:
+    """abar_m = a_cr / a_o = (9/16)^(1/3) J0^(2/3): detachment at the JKR critical radius (Eqs. 61, 86)."""
+    return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
+
+
+def nominal_point_contact_closure(j0: Array) -> Array:
+    """abar_m = J0^(2/3): rigidly fixed nominal point contact (Eqs. 99, 123)."""
+    return np.cbrt(j0) ** 2
+
+
+def displacement_harmonics(
+    abar: ArrayLike, abar_m: ArrayLike, jc1: ArrayLike, j1: ArrayLike, chi0: float, omega_check: float
+) -> tuple[Array, Array]:
+    """(delta_c, delta_s) / R of Eqs. (93)–(94); ``omega_check = inf`` gives delta_s = 0."""
+    abar, abar_m = np.asarray(abar, dtype=float), np.asarray(abar_m, dtype=float)
+    delta_c = -(2.0 ** (2 / 3) / 3.0 ** (4 / 3)) * chi0**2 * np.sqrt(abar_m) * np.asarray(jc1)
     if math.isinf(omega_check):
-        return static
-    dynamic = (chi0 * abar / omega_check) ** 2 * np.cbrt(j0) ** 4 * (1.0 - j1 / (3.0 * j0)) ** 2
-    return static + dynamic
+        return delta_c, np.zeros_like(delta_c)
+    delta_s = (2.0 ** (4 / 3) / 3.0 ** (2 / 3)) * chi0 * (abar / omega_check) * abar_m * (
+        1.0 - np.asarray(j1) / (4.0 * abar_m**1.5)
+    )
+    return delta_c, delta_s
 
 
-def critical_abar_refined(eta1: float, chi0: float, omega_check: float, law: RateLaw) -> float:
-    """Root Abar_cr of Eq. (106) for one (eta1, omega_check); eta1 = 0 gives 0."""
+def rigid_amplitude_squared(
+    abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float, closure: Callable[[Array], Array]
+) -> Array:
+    """delta_c^2 + delta_s^2 (left-hand side of Eq. 103) along a closure abar_m(J0)."""
+    j0, jc1, j1 = j_integrals_for_law(abar, law)
+    delta_c, delta_s = displacement_harmonics(abar, closure(j0), jc1, j1, chi0, omega_check)
+    return delta_c**2 + delta_s**2
+
+
+def solve_rigid_abar(
+    eta1: float, chi0: float, omega_check: float, law: RateLaw, closure: Callable[[Array], Array], what: str
+) -> float:
+    """The unique root Abar of delta_c^2 + delta_s^2 = eta1^2 along ``closure``; eta1 = 0 gives 0."""
     if not omega_check > 0:
         raise ValueError(f"omega_check must be positive, got {omega_check}")
-    if math.isinf(omega_check):
-        return critical_abar_leading(eta1, chi0, law)
     if eta1 < 0 or not np.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
     if eta1 == 0:
         return 0.0
     log_target = 2.0 * math.log(eta1)
     return solve_log_increasing(
-        lambda z: float(np.log(pulloff_lhs_refined(math.exp(z), law, chi0, omega_check))) - log_target,
-        what=f"Eq. (106) at eta1 = {eta1:.6g}, omega_check = {omega_check:.6g}",
+        lambda z: float(np.log(rigid_amplitude_squared(math.exp(z), law, chi0, omega_check, closure))) - log_target,
+        what=f"{what} at eta1 = {eta1:.6g}, omega_check = {omega_check:.6g}",
     )
+
+
+# --- Pull-off, Eq. (106) ------------------------------------------------------------------
+
+
+def pulloff_lhs_refined(abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float) -> Array:
+    """Left-hand side of Eq. (106); ``omega_check = inf`` drops the frequency term."""
+    return rigid_amplitude_squared(abar, law, chi0, omega_check, pulloff_closure)
+
+
+def critical_abar_refined(eta1: float, chi0: float, omega_check: float, law: RateLaw) -> float:
+    """Root Abar_cr of Eq. (106) for one (eta1, omega_check); eta1 = 0 gives 0."""
+    return solve_rigid_abar(eta1, chi0, omega_check, law, pulloff_closure, "Eq. (106)")
 
 
 def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> PulloffEstimate:
@@ -66,3 +113,36 @@ def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: R
         np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float)
     )
     return PulloffEstimate.from_abar(abar, law)
+
+
+# --- Nominal point contact of a rigidly fixed indenter, Eqs. (122)–(123) -------------------
+
+
+class NominalPointContact(NamedTuple):
+    """Steady state of the rigidly fixed nominal point contact (Secs. 3.5.4, 3.7)."""
+
+    abar: Array  # internal variable Abar = omega A / v0, Eq. (45)
+    abar_m: Array  # a_m / a_o = J0^(2/3), Eq. (123)
+    w_eff_ratio: Array  # w_eff / w0 = J0^2, Eq. (49)
+    a_over_am: Array  # A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check), Eq. (98) corrected
+
+
+def contact_radius_amplitude_ratio(abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike) -> Array:
+    """A / a_m from Eqs. (45), (86), (105): the printed Eq. (98) drops 1/omega_bar (errata E1)."""
+    return 3.0 ** (2 / 3) * np.asarray(abar) / (2.0 ** (1 / 3) * chi0 * np.asarray(abar_m) * np.asarray(omega_check))
+
+
+def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: RateLaw) -> NominalPointContact:
+    """Solve Eqs. (122)–(123) for Abar, broadcast over eta1 and omega_check.
+
+    Points with A/a_m > 1 are geometrically impossible and A/a_m > 0.1 lies outside the
+    asymptotic model's applicability (Sec. 3.5.3); they are returned, not hidden, so the caller
+    can report them.
+    """
+    eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
+    abar = np.vectorize(
+        lambda e, w: solve_rigid_abar(e, chi0, w, law, nominal_point_contact_closure, "Eq. (122)"), otypes=[float]
+    )(eta1, omega_check)
+    j0 = j_integrals_for_law(abar, law)[0]
+    abar_m = nominal_point_contact_closure(j0)
+    return NominalPointContact(abar, abar_m, j0**2, contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check))

@@ -75,3 +75,116 @@ rule fig4_plot:
     shell:
         "{PYTHON} -m vibroadhesion.cli fig4-plot --setup {input.setup} --fit {input.fit} --pulloff {input.pulloff} "
         "--csv {input.csv} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+
+
+# Figs. 6-8: rigidly fixed indenter, refined model (Secs. 3.5.4, 3.6, 3.7). Fig. 8 reuses the
+# Fig. 6 solution and Fig. 7 takes its asymptotes from Fig. 4's leading-order rows.
+
+
+rule fig6_data:
+    """Nominal point contact: Abar, abar_m, w_eff/w0, A/a_m (Eqs. 122-123, 49, corrected 98)."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code(*NUMERICS, "figures", "fitting", "data", "cli", "artefacts"),
+    output:
+        "results/fig6/fig6.csv",
+    params:
+        lo=config["fig6"]["log10_omega_check_min"],
+        hi=config["fig6"]["log10_omega_check_max"],
+        points=config["fig6"]["points"],
+    log:
+        "results/logs/fig6_data.log",
+    benchmark:
+        "results/benchmarks/rules/fig6_data.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig6-data --setup {input.setup} --fit {input.fit} --log10-omega-min {params.lo} "
+        "--log10-omega-max {params.hi} --points {params.points} --out {output} 2>&1 | tee {log}"
+
+
+rule fig7_data:
+    """Refined pull-off estimate against omega_check (Eq. 106)."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code(*NUMERICS, "figures", "fitting", "data", "cli", "artefacts"),
+    output:
+        "results/fig7/fig7.csv",
+    params:
+        lo=config["fig7"]["log10_omega_check_min"],
+        hi=config["fig7"]["log10_omega_check_max"],
+        points=config["fig7"]["points"],
+    log:
+        "results/logs/fig7_data.log",
+    benchmark:
+        "results/benchmarks/rules/fig7_data.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig7-data --setup {input.setup} --fit {input.fit} --log10-omega-min {params.lo} "
+        "--log10-omega-max {params.hi} --points {params.points} --out {output} 2>&1 | tee {log}"
+
+
+rule fig8_data:
+    """Dynamic contact stiffness (Eqs. 117-121) along the Fig. 6 solution."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        fig6="results/fig6/fig6.csv",
+        code=code("ratelaw", "integrals", "stiffness", "groups", "figures", "fitting", "data", "cli", "artefacts"),
+    output:
+        "results/fig8/fig8.csv",
+    log:
+        "results/logs/fig8_data.log",
+    benchmark:
+        "results/benchmarks/rules/fig8_data.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig8-data --setup {input.setup} --fit {input.fit} --fig6 {input.fig6} "
+        "--out {output} 2>&1 | tee {log}"
+
+
+rule fig6_plot:
+    input:
+        csv="results/fig6/fig6.csv",
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code("figures", "groups", "fitting", "data", "cli", "artefacts"),
+    output:
+        pdf="results/fig6/fig6.pdf",
+        png=report("results/fig6/fig6.png", caption="../report/fig6.rst", category="Figures"),
+    log:
+        "results/logs/fig6_plot.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig6-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
+        "--pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+
+
+rule fig8_plot:
+    input:
+        csv="results/fig8/fig8.csv",
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code("figures", "groups", "fitting", "data", "cli", "artefacts"),
+    output:
+        pdf="results/fig8/fig8.pdf",
+        png=report("results/fig8/fig8.png", caption="../report/fig8.rst", category="Figures"),
+    log:
+        "results/logs/fig8_plot.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig8-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
+        "--pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+
+
+rule fig7_plot:
+    input:
+        csv="results/fig7/fig7.csv",
+        fig4="results/fig4/fig4.csv",
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code("figures", "groups", "fitting", "data", "cli", "artefacts"),
+    output:
+        pdf="results/fig7/fig7.pdf",
+        png=report("results/fig7/fig7.png", caption="../report/fig7.rst", category="Figures"),
+    log:
+        "results/logs/fig7_plot.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig7-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
+        "--fig4 {input.fig4} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"

@@ -1,0 +1,148 @@
+"""The Snakemake pipeline end to end, run through its CLI in a temporary copy of the repository.
+
+References: the issue's acceptance criteria (artefacts exist with the stated columns; a second
+run has nothing to do; a data edit reruns the fit, the figures and the report and nothing
+else; bad input stops the run with one line naming file, row and column and leaves no
+partial outputs), the papermill convention of exactly one ``parameters`` cell, and byte-level
+determinism of the writers.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import nbformat
+import numpy as np
+import pandas as pd
+import pytest
+
+from vibroadhesion.artefacts import save_figure, write_csv
+from vibroadhesion.figures import fig4_table, plot_fig4
+from vibroadhesion.pulloff import GentSchultzParameters
+
+ROOT = Path(__file__).resolve().parents[1]
+SNAKEMAKE = [sys.executable, "-m", "snakemake"]
+COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
+DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot",
+              "execute_notebook", "render_page", "report_index", "all"}
+
+
+def _copy_repo(dest: Path) -> Path:
+    for name in COPY:
+        src = ROOT / name
+        if src.is_dir():
+            shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+        else:
+            shutil.copy2(src, dest / name)
+    (dest / "tests").mkdir()
+    shutil.copy2(ROOT / "tests" / "mpmath_reference.py", dest / "tests")
+    return dest
+
+
+def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
+    return subprocess.run([*SNAKEMAKE, "-c2", *args], cwd=workdir, capture_output=True, text=True, timeout=900)
+
+
+def _planned_rules(workdir: Path) -> set[str]:
+    """Rules a dry run would execute (parsed from Snakemake's job-stats table)."""
+    out = _snakemake(workdir, "-n")
+    assert out.returncode == 0, out.stderr
+    text = out.stdout + out.stderr
+    if "Nothing to be done" in text:
+        return set()
+    stats = text.split("Job stats:", 1)[1]
+    return {m.group(1) for m in re.finditer(r"^(\w+)\s+\d+\s*$", stats, re.MULTILINE) if m.group(1) != "total"}
+
+
+@pytest.fixture(scope="module")
+def pipeline_run(tmp_path_factory) -> Path:
+    work = _copy_repo(tmp_path_factory.mktemp("pipeline"))
+    out = _snakemake(work)
+    assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+    return work
+
+
+@pytest.mark.pipeline
+def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: Path) -> None:
+    results = pipeline_run / "results"
+    for fig in ("fig3", "fig4"):
+        for ext in ("csv", "pdf", "png"):
+            assert (results / fig / f"{fig}.{ext}").stat().st_size > 0
+    assert list(pd.read_csv(results / "fig3/fig3.csv").columns) == ["n", "Abar", "J0", "Jc1", "J1"]
+    fig4 = pd.read_csv(results / "fig4/fig4.csv")
+    assert list(fig4.columns) == ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
+    for model, n_freq in (("leading", 1), ("refined", 3)):
+        rows = fig4[fig4["model"] == model]
+        assert set([20.0, 40.0, 60.0, 80.0, 100.0]) <= set(rows["h1_um"])
+        assert rows["frequency_hz"].nunique(dropna=False) == n_freq
+    assert fig4.loc[fig4["model"] == "leading", "frequency_hz"].isna().all()
+    assert (results / "fit/gent_schultz.json").exists()
+    for page in ("index", "fig3", "fig4", "fit", "benchmarks"):
+        assert (results / "report" / f"{page}.html").stat().st_size > 0
+    assert "evals/s" in (results / "benchmarks/j_integrals.txt").read_text()
+
+
+@pytest.mark.pipeline
+def test_second_run_has_nothing_to_do(pipeline_run: Path) -> None:
+    assert _planned_rules(pipeline_run) == set()
+
+
+@pytest.mark.pipeline
+def test_data_edit_reruns_fit_figures_and_report_only(pipeline_run: Path) -> None:
+    pulloff = pipeline_run / "data/pulloff.csv"
+    original = pulloff.read_text()
+    try:
+        pulloff.write_text("# an edit by the user\n" + original)
+        planned = _planned_rules(pipeline_run)
+    finally:
+        pulloff.write_text(original)
+    assert planned == DATA_RULES, planned ^ DATA_RULES
+
+
+@pytest.mark.pipeline
+def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
+    module = pipeline_run / "src/vibroadhesion/benchmarking.py"
+    original = module.read_text()
+    try:
+        module.write_text(original + "\n# edited\n")
+        planned = _planned_rules(pipeline_run)
+    finally:
+        module.write_text(original)
+    assert planned == {"benchmark_j_integrals", "execute_notebook", "render_page", "report_index", "all"}
+
+
+@pytest.mark.pipeline
+def test_bad_input_stops_with_one_line_and_leaves_no_outputs(tmp_path: Path) -> None:
+    work = _copy_repo(tmp_path)
+    with open(work / "data/pulloff.csv", "a") as fh:
+        fh.write("200,abc,120.0,my lab\n")
+    out = _snakemake(work, "results/fig4/fig4.csv")
+    assert out.returncode != 0
+    lines = [ln for ln in (out.stdout + out.stderr).splitlines() if "pulloff.csv, row" in ln]
+    assert lines and "column h1_um" in lines[0], out.stderr[-3000:]
+    produced = [p for p in (work / "results").rglob("*") if p.is_file() and "logs" not in p.parts]
+    assert produced == [], produced
+
+
+def test_every_notebook_has_exactly_one_parameters_cell() -> None:
+    for path in sorted((ROOT / "notebooks").glob("*.ipynb")):
+        nb = nbformat.read(path, as_version=4)
+        tagged = [c for c in nb.cells if "parameters" in c.metadata.get("tags", [])]
+        assert len(tagged) == 1, path.name
+
+
+def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> None:
+    params = {m: GentSchultzParameters(0.236, 0.531, 44.5e-6) for m in ("leading", "refined")}
+    geometry = {"radius": 0.0515, "reduced_modulus": 2 * 2.8e6 / 0.75}
+    measured = pd.DataFrame({"frequency_hz": [200.0], "h1_um": [40.0], "pulloff_mN": [250.0], "source": ["simulated"]})
+    digests = []
+    for k in range(2):
+        table = fig4_table(params, [200.0, 400.0], np.linspace(0, 120, 13), **geometry)
+        write_csv(table, tmp_path / f"t{k}.csv")
+        save_figure(plot_fig4(table, measured, 57.27), tmp_path / f"f{k}.pdf", tmp_path / f"f{k}.png")
+        digests.append([(tmp_path / f"{s}{k}.{e}").read_bytes() for s, e in (("t", "csv"), ("f", "pdf"), ("f", "png"))])
+    assert digests[0] == digests[1]
