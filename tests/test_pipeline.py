@@ -27,7 +27,8 @@ from vibroadhesion.pulloff import GentSchultzParameters
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
-DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot",
+DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot", "fig6_data",
+              "fig6_plot", "fig7_data", "fig7_plot", "fig8_data", "fig8_plot",
               "execute_notebook", "render_page", "report_index", "all"}
 
 
@@ -69,7 +70,7 @@ def pipeline_run(tmp_path_factory) -> Path:
 @pytest.mark.pipeline
 def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: Path) -> None:
     results = pipeline_run / "results"
-    for fig in ("fig3", "fig4"):
+    for fig in ("fig3", "fig4", "fig6", "fig7", "fig8"):
         for ext in ("csv", "pdf", "png"):
             assert (results / fig / f"{fig}.{ext}").stat().st_size > 0
     assert list(pd.read_csv(results / "fig3/fig3.csv").columns) == ["n", "Abar", "J0", "Jc1", "J1"]
@@ -81,7 +82,7 @@ def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: 
         assert rows["frequency_hz"].nunique(dropna=False) == n_freq
     assert fig4.loc[fig4["model"] == "leading", "frequency_hz"].isna().all()
     assert (results / "fit/gent_schultz.json").exists()
-    for page in ("index", "fig3", "fig4", "fit", "benchmarks"):
+    for page in ("index", "fig3", "fig4", "fig6", "fig7", "fig8", "fit", "benchmarks"):
         assert (results / "report" / f"{page}.html").stat().st_size > 0
     assert "evals/s" in (results / "benchmarks/j_integrals.txt").read_text()
 

@@ -23,6 +23,9 @@ from vibroadhesion.jkr import pulloff_force
 PAGES: list[tuple[str, str]] = [
     ("fig3", "Fig. 3 — J-integrals of the Gent–Schultz law"),
     ("fig4", "Fig. 4 — pull-off amplification against base amplitude"),
+    ("fig6", "Fig. 6 — nominal point contact of a rigidly fixed indenter"),
+    ("fig7", "Fig. 7 — refined pull-off estimate against frequency"),
+    ("fig8", "Fig. 8 — dynamic contact stiffness (storage, loss, phase)"),
     ("fit", "Gent–Schultz fit and parameter provenance"),
     ("benchmarks", "Speed against error: J-integrals and rule timings"),
 ]
@@ -70,6 +73,11 @@ def rows_at(table: pd.DataFrame, column: str, values: Sequence[float]) -> pd.Dat
     """The rows of ``table`` whose ``column`` is closest to each of ``values`` (for compact display)."""
     picks = [int(np.argmin(np.abs(np.log(table[column].to_numpy()) - math.log(v)))) for v in values]
     return table.iloc[sorted(set(picks))]
+
+
+def rows_at_each(table: pd.DataFrame, column: str, values: Sequence[float], by: str = "h1_um") -> pd.DataFrame:
+    """:func:`rows_at` within each group of ``by`` (one block of rows per amplitude)."""
+    return pd.concat([rows_at(rows, column, values) for _, rows in table.groupby(by, sort=True)])
 
 
 def rule_timings(tsv_files: Sequence[str | Path]) -> pd.DataFrame:
