@@ -1,0 +1,554 @@
+"""Ingest and validate the two user-edited inputs, ``data/setup.yaml`` and ``data/pulloff.csv``.
+
+Both are checked against JSON schemas (draft 2020-12) shipped in ``vibroadhesion/schemas/``:
+``setup.schema.json`` describes the whole YAML document, ``pulloff.schema.json`` ONE row of the
+CSV (each row is validated against it). Every problem raises :class:`DataError` whose message is
+a single line ``"<file>, row <r>, column <c>: <what is wrong>"``:
+
+* CSV: ``row`` is the 1-based line number in the file, ``column`` the column name (or ``header``);
+* YAML: ``row`` is the 1-based line of the offending node, ``column`` the dotted key path, e.g.
+  ``sample.poisson_ratio.value`` (list items as ``...value[1]``).
+
+Row 0 means the file as a whole (it cannot be read). ``python -m vibroadhesion.data SETUP PULLOFF
+OUT_JSON OUT_CSV`` validates both files and writes canonical copies atomically (see :func:`main`).
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import difflib
+import io
+import json
+import math
+import os
+import re
+import sys
+import tempfile
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+import yaml
+from jsonschema import Draft202012Validator
+from jsonschema.exceptions import ValidationError
+
+PULLOFF_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN", "source")
+NUMERIC_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN")
+_UNITS = {"frequency_hz": "Hz", "h1_um": "um", "pulloff_mN": "mN"}
+
+# (group, entry) behind each scalar field of Setup.
+_SETUP_FIELDS: dict[str, tuple[str, str]] = {
+    "radius": ("indenter", "radius"),
+    "youngs_modulus": ("sample", "youngs_modulus"),
+    "storage_modulus_factor": ("sample", "storage_modulus_factor"),
+    "poisson_ratio": ("sample", "poisson_ratio"),
+    "density": ("sample", "density"),
+    "thickness": ("sample", "thickness"),
+    "w0": ("gent_schultz_published", "w0"),
+    "n": ("gent_schultz_published", "n"),
+    "v0": ("gent_schultz_published", "v0"),
+}
+_SETUP_LISTS: dict[str, tuple[str, str]] = {
+    "frequencies_hz": ("test_conditions", "frequencies"),
+    "amplitudes_um": ("test_conditions", "amplitudes"),
+}
+
+
+class DataError(ValueError):
+    """One-line message: '<file>, row <r>, column <c>: <what is wrong>'."""
+
+    def __init__(self, path: str | Path, row: int, column: str, message: str) -> None:
+        self.path, self.row, self.column = str(path), int(row), str(column)
+        self.message = " ".join(str(message).split())  # one line, whatever the source text
+        super().__init__(f"{self.path}, row {self.row}, column {self.column}: {self.message}")
+
+
+@dataclass(frozen=True)
+class Setup:
+    """Validated contents of ``data/setup.yaml`` (SI units, amplitudes in micrometres)."""
+
+    radius: float  # m
+    youngs_modulus: float  # Pa
+    storage_modulus_factor: float
+    poisson_ratio: float
+    density: float  # kg/m^3
+    thickness: float  # m
+    frequencies_hz: tuple[float, ...]
+    amplitudes_um: tuple[float, ...]
+    w0: float  # J/m^2
+    n: float
+    v0: float  # m/s
+    sources: dict[str, str]  # "group.entry" -> source text
+    fixation: dict[str, object] = field(default_factory=dict)  # optional group: entry -> raw value
+    values: dict[str, object] = field(default_factory=dict)  # "group.entry" -> value (float or tuple)
+    units: dict[str, str] = field(default_factory=dict)  # "group.entry" -> unit
+
+    @property
+    def reduced_modulus(self) -> float:
+        """E* = f_storage * E / (1 - nu^2) (Appendix A, Sec. 3.4)."""
+        return self.storage_modulus_factor * self.youngs_modulus / (1.0 - self.poisson_ratio**2)
+
+
+# ----------------------------------------------------------------------------- schemas
+
+
+@lru_cache(maxsize=None)
+def schema(name: str) -> dict[str, Any]:
+    """The packaged JSON schema ``name`` (``"setup"`` or ``"pulloff"``)."""
+    text = resources.files("vibroadhesion").joinpath("schemas", f"{name}.schema.json").read_text(encoding="utf-8")
+    return json.loads(text)
+
+
+@lru_cache(maxsize=None)
+def _validator(name: str) -> Draft202012Validator:
+    return Draft202012Validator(schema(name))
+
+
+def _fmt(value: object) -> str:
+    if isinstance(value, bool) or value is None:
+        return str(value).lower()
+    if isinstance(value, (int, float)):
+        return repr(value)
+    if isinstance(value, str):
+        return f'"{value}"'
+    return _kind(value)
+
+
+def _kind(value: object) -> str:
+    if value is None:
+        return "an empty value"
+    if isinstance(value, bool):
+        return f"the boolean {str(value).lower()}"
+    if isinstance(value, (int, float)):
+        return f"the number {value!r}"
+    if isinstance(value, str):
+        return f'the text "{value}"'
+    if isinstance(value, list):
+        return "a list"
+    if isinstance(value, dict):
+        return "a mapping"
+    return "an unsupported value"
+
+
+_TYPE_NAMES = {"number": "a number", "array": "a list", "object": "a mapping", "string": "text"}
+
+
+def _message(error: ValidationError) -> tuple[tuple[Any, ...], str, bool]:
+    """(path of the offending node, message, whether the row is the parent key's line)."""
+    path = tuple(error.absolute_path)
+    custom = error.schema.get("x-messages", {}) if isinstance(error.schema, dict) else {}
+    value = error.instance
+    if error.validator in custom:
+        return path, custom[error.validator].format(value=_fmt(value) if not isinstance(value, str) else value,
+                                                    got=_kind(value)), False
+    if error.validator == "required":
+        present = value if isinstance(value, dict) else {}
+        missing = next(k for k in error.validator_value if k not in present)
+        return path + (missing,), f'missing required key "{missing}"', True
+    if error.validator == "additionalProperties":
+        allowed = set(error.schema.get("properties", {}))
+        extra = sorted(str(k) for k in value if k not in allowed)
+        close = difflib.get_close_matches(extra[0], sorted(allowed), n=1)
+        if close:
+            hint = f'; did you mean "{close[0]}"?'
+        else:
+            hint = f"; allowed here: {', '.join(sorted(allowed))}" if allowed else ""
+        return path + (extra[0],), f'unknown key "{extra[0]}" (not declared in the schema{hint})', True
+    if error.validator == "type":
+        expected = error.validator_value
+        names = [_TYPE_NAMES.get(t, t) for t in ([expected] if isinstance(expected, str) else expected)]
+        return path, f"expected {' or '.join(names)}, got {_kind(value)}", False
+    generic = {
+        "exclusiveMinimum": f"must be > {_fmt(error.validator_value)}, got {_fmt(value)}",
+        "minimum": f"must be >= {_fmt(error.validator_value)}, got {_fmt(value)}",
+        "maximum": f"must be <= {_fmt(error.validator_value)}, got {_fmt(value)}",
+        "minItems": "list must not be empty",
+        "uniqueItems": "list repeats a value",
+        "minLength": "must not be empty",
+        "pattern": "must not be empty",
+        "const": f"must be {_fmt(error.validator_value)}, got {_fmt(value)}",
+    }
+    return path, generic.get(error.validator, f"invalid value ({error.validator})"), False
+
+
+_KEYWORD_ORDER = {"required": 0, "additionalProperties": 1, "type": 2, "exclusiveMinimum": 3, "minimum": 4, "maximum": 5}
+
+
+def _dotted(path: Sequence[Any]) -> str:
+    out = ""
+    for part in path:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out or "(document)"
+
+
+# ----------------------------------------------------------------------------- setup.yaml
+
+
+class _Loader(yaml.SafeLoader):
+    """Safe loader that also reads ``1e-3`` / ``2E6`` as floats (YAML 1.2 style)."""
+
+
+_Loader.add_implicit_resolver(
+    "tag:yaml.org,2002:float",
+    re.compile(r"^[-+]?(?:\d[\d_]*)?(?:\.\d*)?[eE][-+]?\d+$"),
+    list("-+0123456789."),
+)
+
+
+def _node_lines(path: str | Path, node: yaml.Node) -> dict[tuple[Any, ...], tuple[int, int]]:
+    """Map each key path to (line of its key, line of its value); reject duplicate/non-text keys."""
+    lines: dict[tuple[Any, ...], tuple[int, int]] = {(): (node.start_mark.line + 1, node.start_mark.line + 1)}
+
+    def walk(n: yaml.Node, prefix: tuple[Any, ...]) -> None:
+        if isinstance(n, yaml.MappingNode):
+            seen: dict[str, int] = {}
+            for key_node, value_node in n.value:
+                row = key_node.start_mark.line + 1
+                if not isinstance(key_node, yaml.ScalarNode) or key_node.tag != "tag:yaml.org,2002:str":
+                    raise DataError(path, row, _dotted(prefix), "keys must be plain text names")
+                key = key_node.value
+                if key in seen:
+                    raise DataError(path, row, _dotted(prefix + (key,)), f"duplicate key (first given at row {seen[key]})")
+                seen[key] = row
+                lines[prefix + (key,)] = (row, value_node.start_mark.line + 1)
+                walk(value_node, prefix + (key,))
+        elif isinstance(n, yaml.SequenceNode):
+            for i, item in enumerate(n.value):
+                row = item.start_mark.line + 1
+                lines[prefix + (i,)] = (row, row)
+                walk(item, prefix + (i,))
+
+    walk(node, ())
+    return lines
+
+
+def _iter_nonfinite(value: Any, prefix: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]:
+    if isinstance(value, float) and not math.isfinite(value):
+        yield prefix
+    elif isinstance(value, dict):
+        for k, v in value.items():
+            yield from _iter_nonfinite(v, prefix + (k,))
+    elif isinstance(value, list):
+        for i, v in enumerate(value):
+            yield from _iter_nonfinite(v, prefix + (i,))
+
+
+def _read_text(path: Path) -> str:
+    try:
+        raw = path.read_bytes()
+    except OSError as exc:
+        raise DataError(path, 0, "(file)", f"cannot read file: {exc.strerror or type(exc).__name__}") from None
+    try:
+        return raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        row = raw[: exc.start].count(b"\n") + 1
+        raise DataError(path, row, "(file)", "file is not UTF-8 text") from None
+
+
+def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any, ...], bool], int]) -> Setup:
+    """Validate a setup document (parsed YAML or canonical JSON) and build :class:`Setup`.
+
+    ``locate(path, key_line)`` gives the 1-based line of the node at ``path`` (of its key when
+    ``key_line``, e.g. for a missing or unknown key).
+    """
+    if doc is None:
+        raise DataError(path, 1, "(document)", "file is empty; expected the groups indenter, sample, test_conditions, gent_schultz_published")
+    if not isinstance(doc, dict):
+        raise DataError(path, locate((), False), "(document)", f"expected a mapping of groups at the top level, got {_kind(doc)}")
+    for bad in _iter_nonfinite(doc):
+        raise DataError(path, locate(bad, False), _dotted(bad), "value must be a finite number (got nan or inf)")
+    errors = []
+    for error in _validator("setup").iter_errors(doc):
+        node_path, message, key_line = _message(error)
+        row = locate(node_path if not key_line or error.validator == "additionalProperties" else node_path[:-1], key_line)
+        # an unknown key (often a misspelt one) is reported before the missing key it stands for
+        errors.append((error.validator != "additionalProperties", row, _KEYWORD_ORDER.get(error.validator, 9),
+                       _dotted(node_path), message))
+    if errors:
+        _, row, _, column, message = min(errors)
+        raise DataError(path, row, column, message)
+
+    def value(group: str, entry: str) -> Any:
+        return doc[group][entry]["value"]
+
+    sources, values, units = {}, {}, {}
+    for group, entries in doc.items():
+        for entry, spec in entries.items():
+            key = f"{group}.{entry}"
+            v = spec["value"]
+            sources[key] = spec["source"]
+            values[key] = tuple(float(x) for x in v) if isinstance(v, list) else float(v)
+            units[key] = spec["unit"]
+    fixation = {entry: values[f"fixation.{entry}"] for entry in doc.get("fixation", {})}
+    return Setup(
+        **{name: float(value(*where)) for name, where in _SETUP_FIELDS.items()},
+        **{name: tuple(float(x) for x in value(*where)) for name, where in _SETUP_LISTS.items()},
+        sources=sources,
+        fixation=fixation,
+        values=values,
+        units=units,
+    )
+
+
+def _parse_setup(path: str | Path) -> tuple[Setup, dict[str, Any]]:
+    path = Path(path)
+    text = _read_text(path)
+    try:
+        loader = _Loader(text)
+        try:
+            node = loader.get_single_node()
+            if node is None:
+                doc: Any = None
+                lines: dict[tuple[Any, ...], tuple[int, int]] = {}
+            else:
+                lines = _node_lines(path, node)
+                doc = loader.construct_document(node)
+        finally:
+            loader.dispose()
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        row = mark.line + 1 if mark is not None else 1
+        where = f" (character {mark.column + 1})" if mark is not None else ""
+        what = re.sub(r"'?<([^>]*)>'?", r"\1", exc.problem or exc.context or "invalid YAML")
+        if "block" in what:
+            what += "; check the indentation"
+        raise DataError(path, row, "(document)", f"YAML syntax error: {what}{where}") from None
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "position", None)
+        row = text[:mark].count("\n") + 1 if isinstance(mark, int) else 1
+        raise DataError(path, row, "(document)", "YAML syntax error: unreadable character") from None
+
+    def locate(node_path: tuple[Any, ...], key_line: bool) -> int:
+        while node_path not in lines and node_path:
+            node_path = node_path[:-1]
+        key_row, value_row = lines.get(node_path, (1, 1))
+        return key_row if key_line else value_row
+
+    return _setup_from_document(path, doc, locate), doc
+
+
+def load_setup(path: str | Path) -> Setup:
+    """Read and validate ``data/setup.yaml``; raise :class:`DataError` naming file, row and key path."""
+    return _parse_setup(path)[0]
+
+
+def _canonical_setup(doc: dict[str, Any]) -> dict[str, Any]:
+    """The validated document with every number as a float (keys in file order)."""
+
+    def num(v: Any) -> Any:
+        return [float(x) for x in v] if isinstance(v, list) else float(v)
+
+    return {g: {e: {"value": num(s["value"]), "unit": s["unit"], "source": s["source"]} for e, s in entries.items()}
+            for g, entries in doc.items()}
+
+
+def read_canonical_setup(path: str | Path) -> Setup:
+    """Read the canonical JSON written by :func:`main` (re-validated against the same schema)."""
+    path = Path(path)
+    text = _read_text(path)
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise DataError(path, exc.lineno, "(document)", f"invalid JSON: {exc.msg}") from None
+    return _setup_from_document(path, doc, lambda node_path, key_line: 1)
+
+
+# ----------------------------------------------------------------------------- pulloff.csv
+
+
+def _empty_pulloff() -> pd.DataFrame:
+    return _pulloff_frame([])
+
+
+def _pulloff_frame(records: list[dict[str, Any]]) -> pd.DataFrame:
+    return pd.DataFrame({
+        "frequency_hz": pd.Series([r["frequency_hz"] for r in records], dtype="float64"),
+        "h1_um": pd.Series([r["h1_um"] for r in records], dtype="float64"),
+        "pulloff_mN": pd.Series([r["pulloff_mN"] for r in records], dtype="float64"),
+        "source": pd.Series([r["source"] for r in records], dtype="str"),
+        "line": pd.Series([r["line"] for r in records], dtype="int64"),
+    })
+
+
+def _split(path: Path, line_no: int, line: str, column: str) -> list[str]:
+    try:
+        return next(csv.reader([line], strict=True))
+    except csv.Error as exc:
+        raise DataError(path, line_no, column, f"malformed CSV line ({exc})") from None
+
+
+def _number(path: Path, line_no: int, column: str, cell: str) -> float:
+    text = cell.strip()
+    unit = _UNITS[column]
+    if not text:
+        raise DataError(path, line_no, column, f"empty value; expected a number in {unit}")
+    try:
+        value = float(text)
+    except ValueError:
+        value = None
+    if value is None or "_" in text:
+        raise DataError(path, line_no, column, f'not a number: "{text}" (expected a number in {unit}, no unit suffix)')
+    if not math.isfinite(value):
+        raise DataError(path, line_no, column, f'"{text}" is not a finite number')
+    return value
+
+
+def load_pulloff(path: str | Path) -> pd.DataFrame:
+    """Read and validate ``data/pulloff.csv``.
+
+    Lines whose first non-blank character is ``#`` and blank lines are skipped; the first other
+    line is the header (the four columns, in any order). Returns columns ``frequency_hz``,
+    ``h1_um``, ``pulloff_mN`` (float64), ``source`` (str) and ``line`` (int64, 1-based line in
+    the file); zero data rows give an empty frame with those columns and dtypes.
+    """
+    path = Path(path)
+    text = _read_text(path)
+    lines = text.splitlines()
+    if not text.strip():
+        raise DataError(path, 1, "header", f"file is empty; expected the header line {','.join(PULLOFF_COLUMNS)}")
+    header: list[str] | None = None
+    records: list[dict[str, Any]] = []
+    seen: dict[tuple[Any, ...], int] = {}
+    validator = _validator("pulloff")
+    for line_no, line in enumerate(lines, start=1):
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#"):
+            continue
+        if header is None:
+            header = [h.strip() for h in _split(path, line_no, line, "header")]
+            _check_header(path, line_no, header)
+            continue
+        cells = _split(path, line_no, line, "(row)")
+        if len(cells) != len(header):
+            _field_count_error(path, line_no, header, cells)
+        row = dict(zip(header, cells))
+        record: dict[str, Any] = {c: _number(path, line_no, c, row[c]) for c in NUMERIC_COLUMNS}
+        record["source"] = row["source"].strip()
+        errors = []
+        for error in validator.iter_errors(record):
+            node_path, message, _ = _message(error)
+            column = str(node_path[0]) if node_path else "(row)"
+            errors.append((PULLOFF_COLUMNS.index(column) if column in PULLOFF_COLUMNS else 9,
+                           _KEYWORD_ORDER.get(error.validator, 9), column, message))
+        if errors:
+            _, _, column, message = min(errors)
+            raise DataError(path, line_no, column, message)
+        key = tuple(record[c] for c in PULLOFF_COLUMNS)
+        if key in seen:
+            raise DataError(path, line_no, "(all columns)", f"duplicate row: repeats row {seen[key]}")
+        seen[key] = line_no
+        record["line"] = line_no
+        records.append(record)
+    if header is None:
+        raise DataError(path, len(lines), "header",
+                        f"no header line (only comments or blank lines); expected {','.join(PULLOFF_COLUMNS)}")
+    return _pulloff_frame(records)
+
+
+def _check_header(path: Path, line_no: int, header: list[str]) -> None:
+    expected = ",".join(PULLOFF_COLUMNS)
+    if len(header) == 1 and (";" in header[0] or "\t" in header[0]):
+        sep = "';'" if ";" in header[0] else "a tab"
+        raise DataError(path, line_no, "header", f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
+    seen: set[str] = set()
+    for name in header:
+        if not name:
+            raise DataError(path, line_no, "header", f"empty column name; expected {expected}")
+        if name in seen:
+            raise DataError(path, line_no, name, "duplicate column name")
+        seen.add(name)
+        if name not in PULLOFF_COLUMNS:
+            raise DataError(path, line_no, name, f'unknown column "{name}"; expected exactly {expected}')
+    for name in PULLOFF_COLUMNS:
+        if name not in seen:
+            raise DataError(path, line_no, name, f'missing column "{name}"; expected {expected}')
+
+
+def _field_count_error(path: Path, line_no: int, header: list[str], cells: list[str]) -> None:
+    n, m = len(cells), len(header)
+    if n < m:
+        hint = "; wrong delimiter? use commas" if n == 1 and (";" in cells[0] or "\t" in cells[0]) else ""
+        raise DataError(path, line_no, header[n], f"too few fields: {n} instead of {m}, no value for this column{hint}")
+    raise DataError(path, line_no, f"field {m + 1}",
+                    f"too many fields: {n} instead of {m} (a decimal comma, or an unquoted comma in source?)")
+
+
+def read_canonical_pulloff(path: str | Path) -> pd.DataFrame:
+    """Read the canonical CSV written by :func:`main` (same validation as :func:`load_pulloff`).
+
+    The canonical file has no ``line`` column, so ``line`` here is the line in the canonical
+    file (header = line 1), not in ``data/pulloff.csv``.
+    """
+    return load_pulloff(path)
+
+
+# ----------------------------------------------------------------------------- CLI
+
+
+def _pulloff_csv_text(frame: pd.DataFrame) -> str:
+    buf = io.StringIO()
+    writer = csv.writer(buf, lineterminator="\n")
+    writer.writerow(PULLOFF_COLUMNS)
+    for rec in frame.itertuples(index=False):
+        writer.writerow([repr(float(rec.frequency_hz)), repr(float(rec.h1_um)), repr(float(rec.pulloff_mN)), str(rec.source)])
+    return buf.getvalue()
+
+
+def _write_atomically(outputs: list[tuple[Path, str]]) -> None:
+    """Write every file to a temporary sibling first, then move all into place with os.replace."""
+    temps: list[tuple[str, Path]] = []
+    umask = os.umask(0)
+    os.umask(umask)
+    try:
+        for target, text in outputs:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
+            temps.append((tmp, target))
+            os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; give outputs the usual permissions
+            with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+                fh.write(text)
+        for tmp, target in temps:
+            os.replace(tmp, target)
+    finally:
+        for tmp, _ in temps:
+            if os.path.exists(tmp):
+                os.unlink(tmp)
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``python -m vibroadhesion.data SETUP PULLOFF OUT_JSON OUT_CSV``.
+
+    Validates both inputs; on success writes the canonical setup JSON (values, units, sources)
+    and the canonical pull-off CSV (no comments; columns frequency_hz, h1_um, pulloff_mN,
+    source; floats written with repr) atomically and returns 0. On a :class:`DataError` prints
+    its one-line message to stderr, writes nothing and returns 1.
+    """
+    parser = argparse.ArgumentParser(prog="python -m vibroadhesion.data", description=__doc__.splitlines()[0])
+    parser.add_argument("setup", help="data/setup.yaml")
+    parser.add_argument("pulloff", help="data/pulloff.csv")
+    parser.add_argument("out_json", help="canonical setup (JSON)")
+    parser.add_argument("out_csv", help="canonical pull-off rows (CSV)")
+    args = parser.parse_args(argv)
+    try:
+        setup, doc = _parse_setup(args.setup)
+        rows = load_pulloff(args.pulloff)
+    except DataError as exc:
+        print(str(exc), file=sys.stderr)
+        return 1
+    setup_text = json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    try:
+        _write_atomically([(Path(args.out_json), setup_text), (Path(args.out_csv), _pulloff_csv_text(rows))])
+    except OSError as exc:
+        print(f"error: cannot write output: {exc.strerror or type(exc).__name__}", file=sys.stderr)
+        return 1
+    print(f"validated {args.setup} ({len(setup.sources)} entries) and {args.pulloff} ({len(rows)} rows)")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

@@ -1,0 +1,353 @@
+"""Ingestion and validation of data/setup.yaml and data/pulloff.csv (vibroadhesion.data)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pandas as pd
+import pytest
+from jsonschema import Draft202012Validator
+
+from vibroadhesion import data
+from vibroadhesion.data import DataError, Setup, load_pulloff, load_setup, main
+
+ROOT = Path(__file__).resolve().parents[1]
+SETUP_YAML = ROOT / "data" / "setup.yaml"
+PULLOFF_CSV = ROOT / "data" / "pulloff.csv"
+HEADER = "frequency_hz,h1_um,pulloff_mN,source"
+
+
+# ----------------------------------------------------------------------------- helpers
+
+
+def _write(tmp_path: Path, name: str, text: str) -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def _assert_located(exc: DataError, path: Path, row: int, column: str, *fragments: str) -> None:
+    """The message is one line naming the file, the row and the column, and no internals."""
+    msg = str(exc)
+    assert "\n" not in msg
+    assert msg.startswith(f"{path}, row {row}, column {column}: "), msg
+    assert (exc.row, exc.column) == (row, column)
+    for fragment in fragments:
+        assert fragment in msg, msg
+    for leak in ("Traceback", "<", "object at", "ValidationError", "Node("):
+        assert leak not in msg, msg
+
+
+def _assert_main_fails(tmp_path: Path, setup: Path, pulloff: Path, capsys: pytest.CaptureFixture[str], expected: str) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    rc = main([str(setup), str(pulloff), str(out / "setup.json"), str(out / "pulloff.csv")])
+    err = capsys.readouterr().err
+    assert rc == 1
+    assert err.strip() == expected
+    assert err.count("\n") == 1
+    assert list(out.iterdir()) == []  # nothing written, no temporary left behind
+
+
+def _csv(tmp_path: Path, body: str) -> Path:
+    return _write(tmp_path, "pulloff.csv", body)
+
+
+def _setup_variant(tmp_path: Path, old: str, new: str) -> Path:
+    text = SETUP_YAML.read_text(encoding="utf-8")
+    assert text.count(old) == 1, old
+    return _write(tmp_path, "setup.yaml", text.replace(old, new))
+
+
+def _line_of(path: Path, needle: str, nth: int = 0) -> int:
+    hits = [i for i, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1) if needle in line]
+    return hits[nth]
+
+
+# ----------------------------------------------------------------------------- shipped files and schemas
+
+
+@pytest.mark.parametrize("name", ["setup", "pulloff"])
+def test_schemas_are_valid_draft_2020_12(name: str) -> None:
+    schema = data.schema(name)
+    assert schema["$schema"] == "https://json-schema.org/draft/2020-12/schema"
+    Draft202012Validator.check_schema(schema)
+
+
+def test_shipped_setup_loads() -> None:
+    setup = load_setup(SETUP_YAML)
+    assert isinstance(setup, Setup)
+    assert setup.radius == 51.5e-3
+    assert setup.youngs_modulus == 2.8e6
+    assert setup.storage_modulus_factor == 2.0
+    assert setup.poisson_ratio == 0.5
+    assert setup.density == 965.0 and setup.thickness == 0.02
+    assert setup.frequencies_hz == (200.0, 300.0, 400.0)
+    assert setup.amplitudes_um == (20.0, 40.0, 60.0, 80.0, 100.0)
+    assert (setup.w0, setup.n, setup.v0) == (0.236, 0.531, 44.5e-6)
+    assert setup.sources["indenter.radius"].startswith("Sec. 3.4:")
+    assert len(setup.sources) == 11 and all(s.strip() for s in setup.sources.values())
+    assert setup.fixation == {}
+    assert setup.units["gent_schultz_published.v0"] == "m/s"
+    assert setup.values["test_conditions.frequencies"] == (200.0, 300.0, 400.0)
+
+
+def test_shipped_reduced_modulus_closed_form() -> None:
+    assert load_setup(SETUP_YAML).reduced_modulus == pytest.approx(2 * 2.8e6 / (1 - 0.25), rel=1e-15)
+
+
+def test_shipped_pulloff_loads_empty_with_dtypes() -> None:
+    rows = load_pulloff(PULLOFF_CSV)
+    assert rows.empty
+    assert list(rows.columns) == ["frequency_hz", "h1_um", "pulloff_mN", "source", "line"]
+    assert [str(rows[c].dtype) for c in ("frequency_hz", "h1_um", "pulloff_mN", "line")] == ["float64"] * 3 + ["int64"]
+    assert pd.api.types.is_string_dtype(rows["source"])
+
+
+def test_main_on_shipped_files_writes_canonical_copies(tmp_path: Path) -> None:
+    out_json, out_csv = tmp_path / "setup.json", tmp_path / "pulloff.csv"
+    assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
+    canonical = json.loads(out_json.read_text())
+    assert canonical["indenter"]["radius"] == {"value": 0.0515, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
+    assert out_csv.read_text() == HEADER + "\n"
+    assert data.read_canonical_setup(out_json) == load_setup(SETUP_YAML)
+    assert data.read_canonical_pulloff(out_csv).empty
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["pulloff.csv", "setup.json"]
+
+
+# ----------------------------------------------------------------------------- pulloff.csv: valid rows
+
+
+def test_valid_rows_parse_with_line_numbers(tmp_path: Path) -> None:
+    path = _csv(tmp_path, "# a comment\n\n" + HEADER + "\n"
+                "200,40,250.5,Fig. 4 (ref. 35)\n"
+                "   # indented comment\n"
+                "\n"
+                '300, 1e2 ,3.25e2,"lab, run 2"\n')
+    rows = load_pulloff(path)
+    assert rows["frequency_hz"].tolist() == [200.0, 300.0]
+    assert rows["h1_um"].tolist() == [40.0, 100.0]
+    assert rows["pulloff_mN"].tolist() == [250.5, 325.0]
+    assert rows["source"].tolist() == ["Fig. 4 (ref. 35)", "lab, run 2"]
+    assert rows["line"].tolist() == [4, 7]
+
+
+def test_columns_in_other_order_and_crlf(tmp_path: Path) -> None:
+    path = _csv(tmp_path, "source,pulloff_mN,h1_um,frequency_hz\r\nx,250,40,200\r\n")
+    rows = load_pulloff(path)
+    assert rows.iloc[0][["frequency_hz", "h1_um", "pulloff_mN", "source", "line"]].tolist() == [200.0, 40.0, 250.0, "x", 2]
+
+
+def test_main_writes_canonical_csv_with_repr_floats(tmp_path: Path) -> None:
+    pulloff = _csv(tmp_path, "# c\n" + HEADER + "\n200,40,0.1,\"a, b\"\n400,60.5,1e3,lab\n")
+    out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
+    assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
+    assert out_csv.read_text() == HEADER + "\n200.0,40.0,0.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    back = data.read_canonical_pulloff(out_csv)
+    assert back["pulloff_mN"].tolist() == [0.1, 1000.0]
+
+
+# ----------------------------------------------------------------------------- pulloff.csv: bad input
+
+ROW = "200,40,250,lab"
+
+BAD_CSV = [
+    # id, body, row, column, fragment
+    ("empty-file", "", 1, "header", "file is empty"),
+    ("only-comments", "# one\n# two\n\n", 3, "header", "no header line"),
+    ("missing-column", "frequency_hz,h1_um,source\n200,40,lab\n", 1, "pulloff_mN", "missing column"),
+    ("unknown-column", HEADER + ",operator\n200,40,250,lab,me\n", 1, "operator", "unknown column"),
+    ("semicolon", "# c\nfrequency_hz;h1_um;pulloff_mN;source\n200;40;250;lab\n", 2, "header", "wrong delimiter"),
+    ("tab", "frequency_hz\th1_um\tpulloff_mN\tsource\n", 1, "header", "wrong delimiter"),
+    ("too-few-fields", HEADER + "\n200,40,250\n", 2, "source", "too few fields"),
+    ("too-many-fields", HEADER + "\n200,40,250,5,lab\n", 2, "field 5", "too many fields"),
+    ("non-numeric", HEADER + "\n" + ROW + "\n300,abc,250,lab\n", 3, "h1_um", 'not a number: "abc"'),
+    ("nan", HEADER + "\nnan,40,250,lab\n", 2, "frequency_hz", "not a finite number"),
+    ("inf", HEADER + "\n200,40,inf,lab\n", 2, "pulloff_mN", "not a finite number"),
+    ("empty-numeric", HEADER + "\n200,,250,lab\n", 2, "h1_um", "empty value"),
+    ("zero-frequency", HEADER + "\n0,40,250,lab\n", 2, "frequency_hz", "must be > 0"),
+    ("negative-frequency", HEADER + "\n-200,40,250,lab\n", 2, "frequency_hz", "must be > 0"),
+    ("zero-amplitude", HEADER + "\n200,0,250,lab\n", 2, "h1_um", "must be > 0"),
+    ("negative-amplitude", HEADER + "\n200,-40,250,lab\n", 2, "h1_um", "must be > 0"),
+    ("zero-force", HEADER + "\n200,40,0,lab\n", 2, "pulloff_mN", "must be > 0"),
+    ("negative-force", HEADER + "\n200,40,-250,lab\n", 2, "pulloff_mN", "must be > 0"),
+    ("amplitude-in-mm", HEADER + "\n200,0.04,250,lab\n", 2, "h1_um", "expected micrometres; looks like mm/m"),
+    ("amplitude-in-nm", HEADER + "\n200,40000,250,lab\n", 2, "h1_um", "expected micrometres; looks like nm"),
+    ("force-too-large", HEADER + "\n200,40,250000,lab\n", 2, "pulloff_mN", "above 1e5 mN"),
+    ("empty-source", HEADER + "\n200,40,250,\n", 2, "source", "empty source"),
+    ("blank-source", HEADER + "\n200,40,250,   \n", 2, "source", "empty source"),
+    ("duplicate-row", HEADER + "\n" + ROW + "\n# c\n200.0,40,2.5e2,lab\n", 4, "(all columns)", "repeats row 2"),
+]
+
+
+@pytest.mark.parametrize("body,row,column,fragment", [c[1:] for c in BAD_CSV], ids=[c[0] for c in BAD_CSV])
+def test_bad_pulloff_is_located(tmp_path: Path, capsys: pytest.CaptureFixture[str], body: str, row: int, column: str,
+                                fragment: str) -> None:
+    path = _csv(tmp_path, body)
+    with pytest.raises(DataError) as info:
+        load_pulloff(path)
+    _assert_located(info.value, path, row, column, fragment)
+    _assert_main_fails(tmp_path, SETUP_YAML, path, capsys, str(info.value))
+
+
+def test_zero_byte_pulloff_file(tmp_path: Path) -> None:
+    path = tmp_path / "pulloff.csv"
+    path.write_bytes(b"")
+    with pytest.raises(DataError) as info:
+        load_pulloff(path)
+    _assert_located(info.value, path, 1, "header", "file is empty")
+
+
+def test_missing_pulloff_file(tmp_path: Path) -> None:
+    path = tmp_path / "absent.csv"
+    with pytest.raises(DataError) as info:
+        load_pulloff(path)
+    _assert_located(info.value, path, 0, "(file)", "cannot read file")
+
+
+def test_rows_differing_only_in_source_are_not_duplicates(tmp_path: Path) -> None:
+    rows = load_pulloff(_csv(tmp_path, HEADER + "\n200,40,250,run 1\n200,40,250,run 2\n"))
+    assert rows["line"].tolist() == [2, 3]
+
+
+# ----------------------------------------------------------------------------- setup.yaml: bad input
+
+BAD_SETUP = [
+    # id, old text, new text, needle locating the row (nth hit), column, fragment
+    ("string-for-number", "value: 0.236", 'value: "0.236 J/m2"', ("0.236 J/m2", 0), "gent_schultz_published.w0.value",
+     'expected a number, got the text "0.236 J/m2"'),
+    ("missing-source", '    source: "Sec. 4: H = 2 cm"\n', "", ("thickness:", 0), "sample.thickness.source",
+     'missing required key "source"'),
+    ("empty-source", 'source: "Sec. 4: H = 2 cm"', 'source: ""', ('source: ""', 0), "sample.thickness.source", "empty source"),
+    ("blank-source", 'source: "Sec. 4: H = 2 cm"', 'source: "   "', ('source: "   "', 0), "sample.thickness.source", "empty source"),
+    ("unknown-entry", "  thickness:\n", "  colour: {value: 1.0, unit: '1', source: x}\n  thickness:\n", ("colour", 0),
+     "sample.colour", 'unknown key "colour"'),
+    ("unknown-group", "indenter:\n", "rig:\n  mass: {value: 1.0, unit: kg, source: x}\nindenter:\n", ("rig:", 0), "rig",
+     'unknown key "rig"'),
+    ("unknown-field", '    unit: m/s\n', "    unit: m/s\n    note: printed um\n", ("note:", 0),
+     "gent_schultz_published.v0.note", 'unknown key "note"'),
+    ("missing-entry", "  radius:\n    value: 51.5e-3\n    unit: m\n", "  radiuss:\n    value: 51.5e-3\n    unit: m\n",
+     ("radiuss", 0), "indenter.radiuss", 'unknown key "radiuss" (not declared in the schema; did you mean "radius"?)'),
+    ("zero-radius", "value: 51.5e-3", "value: 0", ("value: 0", 0), "indenter.radius.value", "radius must be > 0"),
+    ("negative-modulus", "value: 2.8e6", "value: -2.8e6", ("-2.8e6", 0), "sample.youngs_modulus.value", "must be > 0"),
+    ("zero-w0", "value: 0.236", "value: 0.000", ("0.000", 0), "gent_schultz_published.w0.value", "w0 must be > 0"),
+    ("negative-n", "value: 0.531", "value: -0.531", ("-0.531", 0), "gent_schultz_published.n.value", "n must be > 0"),
+    ("zero-v0", "value: 44.5e-6", "value: 0.0e-6", ("0.0e-6", 0), "gent_schultz_published.v0.value", "v0 must be > 0"),
+    ("poisson-above", "value: 0.5\n", "value: 0.6\n", ("value: 0.6", 0), "sample.poisson_ratio.value", "[0, 0.5]"),
+    ("poisson-below", "value: 0.5\n", "value: -0.1\n", ("value: -0.1", 0), "sample.poisson_ratio.value", "[0, 0.5]"),
+    ("empty-frequencies", "value: [200.0, 300.0, 400.0]", "value: []", ("value: []", 0),
+     "test_conditions.frequencies.value", "must not be empty"),
+    ("negative-frequency-item", "value: [200.0, 300.0, 400.0]", "value: [200.0, -300.0]", ("-300.0", 0),
+     "test_conditions.frequencies.value[1]", "must be > 0"),
+    ("wrong-unit", "    unit: Pa\n", "    unit: MPa\n", ("unit: MPa", 0), "sample.youngs_modulus.unit", 'unit must be "Pa"'),
+    ("nan-value", "value: 965.0", "value: .nan", (".nan", 0), "sample.density.value", "finite"),
+    ("null-value", "value: 965.0", "value: ~", ("value: ~", 0), "sample.density.value", "expected a number, got an empty value"),
+    ("duplicate-key", "  thickness:\n", "  density:\n    value: 1.0\n  thickness:\n", ("density:", 1), "sample.density",
+     "duplicate key (first given at row"),
+    ("yaml-syntax", "    unit: kg/m^3\n", "    unit: [kg/m^3\n", ("[kg/m^3", 0), "(document)", "YAML syntax error"),
+]
+
+
+@pytest.mark.parametrize("old,new,needle,column,fragment", [c[1:] for c in BAD_SETUP], ids=[c[0] for c in BAD_SETUP])
+def test_bad_setup_is_located(tmp_path: Path, capsys: pytest.CaptureFixture[str], old: str, new: str,
+                              needle: tuple[str, int], column: str, fragment: str) -> None:
+    path = _setup_variant(tmp_path, old, new)
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    if column == "(document)":  # the parser reports the line where it notices the problem
+        assert info.value.row >= _line_of(path, *needle)
+        row = info.value.row
+    else:
+        row = _line_of(path, *needle)
+    _assert_located(info.value, path, row, column, fragment)
+    _assert_main_fails(tmp_path, path, PULLOFF_CSV, capsys, str(info.value))
+
+
+def test_missing_required_entry_names_the_parent(tmp_path: Path) -> None:
+    path = _setup_variant(tmp_path, "  n:\n    value: 0.531\n    unit: \"1\"\n    source: \"Fig. 4 caption: n = 0.531\"\n", "")
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    _assert_located(info.value, path, _line_of(path, "gent_schultz_published:"), "gent_schultz_published.n",
+                    'missing required key "n"')
+
+
+def test_missing_required_group(tmp_path: Path) -> None:
+    text = SETUP_YAML.read_text(encoding="utf-8")
+    path = _write(tmp_path, "setup.yaml", text[: text.index("gent_schultz_published:")])
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    _assert_located(info.value, path, _line_of(path, "indenter:"), "gent_schultz_published", 'missing required key')
+
+
+@pytest.mark.parametrize("text,row", [("", 1), ("# only a comment\n", 1), ("\n\n", 1)], ids=["zero-bytes", "comment", "blank"])
+def test_empty_setup(tmp_path: Path, capsys: pytest.CaptureFixture[str], text: str, row: int) -> None:
+    path = _write(tmp_path, "setup.yaml", text)
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    _assert_located(info.value, path, row, "(document)", "file is empty")
+    _assert_main_fails(tmp_path, path, PULLOFF_CSV, capsys, str(info.value))
+
+
+def test_setup_top_level_not_a_mapping(tmp_path: Path) -> None:
+    path = _write(tmp_path, "setup.yaml", "# c\n- 1\n- 2\n")
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    _assert_located(info.value, path, 2, "(document)", "expected a mapping")
+
+
+def test_yaml_syntax_error_row_from_mark(tmp_path: Path) -> None:
+    path = _write(tmp_path, "setup.yaml", "indenter:\n  radius:\n    value: 1.0\n   unit: m\n")
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    _assert_located(info.value, path, 4, "(document)", "YAML syntax error")
+
+
+def test_exponent_without_dot_is_a_number(tmp_path: Path) -> None:
+    setup = load_setup(_setup_variant(tmp_path, "value: 2.8e6", "value: 2e6"))
+    assert setup.youngs_modulus == 2e6
+
+
+def test_optional_fixation_group(tmp_path: Path) -> None:
+    extra = ("fixation:\n"
+             "  stiffness_ratio_kappa: {value: 0.5, unit: '1', source: 'Sec. 2'}\n"
+             "  damping_ratio_zeta: {value: [0.01, 0.1], unit: '1', source: 'Fig. 6'}\n")
+    path = _write(tmp_path, "setup.yaml", SETUP_YAML.read_text(encoding="utf-8") + extra)
+    setup = load_setup(path)
+    assert setup.fixation == {"stiffness_ratio_kappa": 0.5, "damping_ratio_zeta": (0.01, 0.1)}
+    assert setup.sources["fixation.damping_ratio_zeta"] == "Fig. 6"
+    assert setup.reduced_modulus == load_setup(SETUP_YAML).reduced_modulus
+
+
+@pytest.mark.parametrize("entry,row_offset,column,fragment", [
+    ("  mass_ratio: {value: 1.0, unit: '1', source: x}\n", 1, "fixation.mass_ratio", 'unknown key "mass_ratio"'),
+    ("  weight_ratio_mu: {value: 0.1, unit: '1'}\n", 1, "fixation.weight_ratio_mu.source", 'missing required key "source"'),
+    ("  weight_ratio_mu: {value: high, unit: '1', source: x}\n", 1, "fixation.weight_ratio_mu.value",
+     "expected a number or a list"),
+], ids=["unknown", "no-source", "text-value"])
+def test_bad_fixation(tmp_path: Path, entry: str, row_offset: int, column: str, fragment: str) -> None:
+    base = SETUP_YAML.read_text(encoding="utf-8")
+    path = _write(tmp_path, "setup.yaml", base + "fixation:\n" + entry)
+    with pytest.raises(DataError) as info:
+        load_setup(path)
+    _assert_located(info.value, path, _line_of(path, "fixation:") + row_offset, column, fragment)
+
+
+def test_setup_is_frozen() -> None:
+    setup = load_setup(SETUP_YAML)
+    with pytest.raises(AttributeError):
+        setup.radius = 1.0  # type: ignore[misc]
+    assert math.isfinite(setup.reduced_modulus)
+
+
+def test_main_replaces_existing_outputs_only_on_success(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    out_json, out_csv = tmp_path / "s.json", tmp_path / "p.csv"
+    out_json.write_text("old"), out_csv.write_text("old")
+    bad = _csv(tmp_path, HEADER + "\n200,40,-1,lab\n")
+    assert main([str(SETUP_YAML), str(bad), str(out_json), str(out_csv)]) == 1
+    assert out_json.read_text() == "old" and out_csv.read_text() == "old"
+    assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
+    assert out_csv.read_text() == HEADER + "\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.csv", "pulloff.csv", "s.json"]
+    capsys.readouterr()

@@ -1,0 +1,385 @@
+"""J-integrals of Eqs. (28), (29), (36) for the Gent–Schultz law (vibroadhesion.integrals).
+
+Every expected number comes from an independent reference:
+
+* ``mpmath_reference.j_integrals_mp``: 30-digit mpmath quadrature of the definitions;
+* a second, 45-digit mpmath evaluation written here in a different variable (the folded form
+  over t in (0, pi/2), with its own breakpoints) that checks the 30-digit reference itself;
+* closed forms: the limits J(0) = (1, 0, 1), rigorous bounds on the large-Abar remainders,
+  mpmath quadrature of the cos-power integrals behind the Gamma-function constants, and the
+  next (u^3) Taylor coefficient of the integrands for the small-Abar remainder.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import mpmath as mp
+import numpy as np
+import pytest
+from mpmath_reference import j_integrals_mp
+
+from vibroadhesion.integrals import (
+    j_integrals,
+    j_integrals_for_law,
+    j_integrals_general,
+    j_integrals_large_abar,
+    j_integrals_small_abar,
+)
+from vibroadhesion.ratelaw import GentSchultz
+
+N_VALUES = [0.05, 0.1, 0.25, 0.531, 1.0, 1.5, 2.0, 3.0, 4.0]
+FIXED_ABAR = [0.0, 1e-12, 1e-8, 1e-4, 0.01, 0.3, 1.0, 1.5708, 2.0, 7.0, 30.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e8,
+              1e10, 1e12]
+#: three log-uniform points in [1e-3, 1e10] from a fixed seed (a fresh generator per n keeps the grid per n fixed)
+N_RANDOM = 3
+RANDOM_SEED = 20240611
+
+REL_TOL = 1e-12  # brief: 1e-12 relative (absolute where the reference is 0)
+
+
+def _abar_grid(n: float) -> np.ndarray:
+    rng = np.random.default_rng([RANDOM_SEED, int(round(1000 * n))])
+    random_abar = 10.0 ** rng.uniform(-3.0, 10.0, size=N_RANDOM)
+    return np.concatenate([np.array(FIXED_ABAR), random_abar])
+
+
+def _errors(value: float, reference: mp.mpf) -> float:
+    """Relative error, or absolute where the reference is exactly 0."""
+    if reference == 0:
+        return abs(value)
+    return float(abs((mp.mpf(value) - reference) / reference))
+
+
+# ----------------------------------------------------------------------------- accuracy vs mpmath
+
+
+@pytest.mark.parametrize("n", N_VALUES)
+def test_j_integrals_match_mpmath_30_digits_to_1e12(n: float) -> None:
+    """Reference: 30-digit mpmath quadrature of Eqs. (28), (29), (36); tolerance 1e-12 relative."""
+    abar = _abar_grid(n)
+    values = j_integrals(abar, n)  # one batched call per n
+    worst = {name: (0.0, None) for name in ("J0", "Jc1", "J1")}
+    for i, a in enumerate(abar):
+        ref = j_integrals_mp(float(a), n)
+        for k, name in enumerate(("J0", "Jc1", "J1")):
+            err = _errors(float(values[k][i]), ref[k])
+            if err > worst[name][0]:
+                worst[name] = (err, float(a))
+    print(f"n={n}: " + ", ".join(f"max err {k} = {e:.2e} at Abar={a}" for k, (e, a) in worst.items()))
+    max_err = max(e for e, _ in worst.values())
+    assert max_err < REL_TOL, f"n={n}: max error {max_err:.3e} > {REL_TOL:g}; per integral: {worst}"
+
+
+def _j_integrals_folded_mp(abar: float, n: float, dps: int) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+    """Eqs. (28), (29), (36) folded onto t = pi/2 - x in (0, pi/2), in mpmath at ``dps`` digits.
+
+    J0 = 1/pi int (g(v) + g(-v)) dt, Jc1 = 2/pi int (g(v) - g(-v)) sin t dt,
+    J1 = 2/pi int (g(v) + g(-v)) cos^2 t dt, v = Abar sin t, g = sqrt(f) with f of Eq. (75).
+    g is evaluated from f directly (not from the simplified S, D); the cancellation in
+    g(v) - g(-v) is paid for with guard digits. Breakpoints at t = 10^k / Abar (boundary layer).
+    """
+    guard = 15 + (int(n * -math.log10(abar)) + 1 if 0 < abar < 1 else 0)
+    with mp.workdps(dps + guard):
+        a, nn = mp.mpf(abar), mp.mpf(n)
+
+        def f(s):
+            f_op = 1 + abs(s) ** nn
+            return f_op if s < 0 else 1 / f_op
+
+        def even(t):
+            v = a * mp.sin(t)
+            return mp.sqrt(f(v)) + mp.sqrt(f(-v))
+
+        def odd(t):
+            v = a * mp.sin(t)
+            return mp.sqrt(f(v)) - mp.sqrt(f(-v))
+
+        points = [mp.mpf(0)]
+        if a > 1:
+            s = 1 / a
+            while s < mp.pi / 4:
+                points.append(s)
+                s *= 10
+        points.append(mp.pi / 2)
+        j0 = mp.quad(even, points) / mp.pi
+        jc1 = 2 * mp.quad(lambda t: odd(t) * mp.sin(t), points) / mp.pi
+        j1 = 2 * mp.quad(lambda t: even(t) * mp.cos(t) ** 2, points) / mp.pi
+        return +j0, +jc1, +j1
+
+
+@pytest.mark.parametrize("abar, n", [(1e-8, 0.531), (1.5708, 0.05), (1e3, 4.0), (1e6, 1.0)])
+def test_mpmath_reference_matches_folded_mpmath_45_digits_to_1e25(abar: float, n: float) -> None:
+    """Reference of the reference: the 30-digit values agree with an independent 45-digit evaluation."""
+    ref30 = j_integrals_mp(abar, n)
+    ref45 = _j_integrals_folded_mp(abar, n, dps=45)
+    with mp.workdps(50):
+        errs = [abs((r30 - r45) / r45) for r30, r45 in zip(ref30, ref45)]
+    assert max(errs) < mp.mpf("1e-25"), f"relative differences {[mp.nstr(e, 3) for e in errs]}"
+
+
+# ----------------------------------------------------------------------------- shapes
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+def test_shapes_scalar_0d_1d_2d_agree_with_1d_call(n: float) -> None:
+    """Reference: the 1-d call. Same flat input -> bitwise equal; other batch sizes -> within 8 ulp.
+
+    Rows are reduced by a BLAS matrix product whose summation order depends on the batch size
+    (gemv for one row, gemm for several), so a scalar and the same value inside a batch may
+    differ by a few ulp (measured: up to 5). Reshaping the same batch changes nothing.
+    """
+    vec = np.array([0.0, 1e-300, 1e-3, 0.7, 3.0, 41.0, 1e5, 1e12])
+    ref = j_integrals(vec, n)
+    assert all(r.shape == vec.shape for r in ref)
+
+    two_d = j_integrals(vec.reshape(2, 4), n)
+    for k in range(3):
+        assert two_d[k].shape == (2, 4)
+        np.testing.assert_array_equal(two_d[k].ravel(), ref[k])
+
+    for i, a in enumerate(vec):
+        scalar = j_integrals(float(a), n)
+        zero_d = j_integrals(np.array(a), n)
+        one = j_integrals(np.array([a]), n)
+        for k in range(3):
+            assert np.shape(scalar[k]) == () and np.shape(zero_d[k]) == () and one[k].shape == (1,)
+            assert scalar[k] == zero_d[k] == one[k][0]  # identical computation
+            assert abs(scalar[k] - ref[k][i]) <= 8 * np.spacing(abs(ref[k][i])), (a, k, scalar[k], ref[k][i])
+
+
+def test_abar_zero_gives_exactly_one_zero_one() -> None:
+    """Closed form: at Abar = 0, f = 1 and J0 = 1/pi int_0^pi 1 = 1, Jc1 = 0, J1 = 2/pi int sin^2 = 1 (exactly).
+
+    The limits J0(0) = J1(0) = 1 are what Eqs. (71), (99), (123) rely on (no vibration, no
+    amplification: P_cr / P_cr^JKR = J0(0)^2 = 1, abar_m = 1).
+    """
+    got = {n: tuple(float(x) for x in j_integrals(0.0, n)) for n in (0.05, 0.531, 1.0, 4.0)}
+    wrong = {n: (j0 - 1, jc1, j1 - 1) for n, (j0, jc1, j1) in got.items() if (j0, jc1, j1) != (1.0, 0.0, 1.0)}
+    assert not wrong, f"J(0) - (1, 0, 1) per n: {wrong}"
+
+
+@pytest.mark.parametrize("n", [4.0])
+def test_documented_1e13_accuracy_holds_near_abar_2(n: float) -> None:
+    """Reference: 30-digit mpmath. The module docstring of ``integrals`` promises relative error
+    below 1e-13 for Abar in [0, 1e12] and n in [0.05, 4]; probe the hardest region found (n = 4,
+    Abar ~ 2, where the integrand's analyticity strip |Im y| < pi/n is narrowest)."""
+    abar = np.array([1.7, 1.9, 1.95, 2.1, 2.15])
+    values = j_integrals(abar, n)
+    errs = [max(_errors(float(values[k][i]), j_integrals_mp(float(a), n)[k]) for k in range(3))
+            for i, a in enumerate(abar)]
+    assert max(errs) < 1e-13, f"n={n}: max relative error {max(errs):.3e} at Abar={abar[int(np.argmax(errs))]}"
+
+
+# ----------------------------------------------------------------------------- general rule
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+def test_general_rule_matches_gent_schultz_fast_path_to_1e12(n: float) -> None:
+    """Reference: the cancellation-free fast path (itself checked against mpmath above), 1e-12 relative.
+
+    Jc1 of the general rule is a difference of sqrt(f) at +-v, so only |Jc1| > 1e-3 is compared.
+    """
+    abar = np.logspace(-6, 12, 145)
+    fast = j_integrals(abar, n)
+    general = j_integrals_general(abar, GentSchultz(n))
+    dispatched = j_integrals_for_law(abar, GentSchultz(n))
+    for k in range(3):
+        np.testing.assert_array_equal(dispatched[k], fast[k])
+    for k in (0, 2):
+        err = np.max(np.abs(general[k] / fast[k] - 1))
+        assert err < 1e-12, f"k={k}: {err:.3e}"
+    mask = np.abs(fast[1]) > 1e-3
+    assert mask.sum() > 20
+    err = np.max(np.abs(general[1][mask] / fast[1][mask] - 1))
+    assert err < 1e-12, f"Jc1: {err:.3e}"
+
+
+# ----------------------------------------------------------------------------- large Abar
+
+
+def _cos_power_mp(p: float) -> mp.mpf:
+    return mp.quad(lambda x: mp.cos(x) ** p, [0, mp.pi / 2])
+
+
+def _sin2_cos_power_mp(p: float) -> mp.mpf:
+    return mp.quad(lambda x: mp.sin(x) ** 2 * mp.cos(x) ** p, [0, mp.pi / 2])
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+def test_large_abar_constants_match_mpmath_quad_of_cos_powers(n: float) -> None:
+    """Reference: mpmath quad of int_0^{pi/2} cos^{n/2}, cos^{n/2+1}, sin^2 cos^{n/2} (30 digits); 1e-14 relative.
+
+    Asymptotes (only the opening half counts, sqrt(1+u) ~ u^{1/2}): J0 ~ A^{n/2}/pi int cos^{n/2},
+    Jc1 ~ -2 A^{n/2}/pi int cos^{n/2+1}, J1 ~ 2 A^{n/2}/pi int sin^2 cos^{n/2}; evaluated at A = 1.
+    """
+    with mp.workdps(30):
+        p = mp.mpf(n) / 2
+        expected = (_cos_power_mp(p) / mp.pi, -2 * _cos_power_mp(p + 1) / mp.pi, 2 * _sin2_cos_power_mp(p) / mp.pi)
+    got = j_integrals_large_abar(1.0, n)
+    for g, e in zip(got, expected):
+        assert abs(float(g) / float(e) - 1) < 1e-14, (float(g), float(e))
+
+
+def _large_abar_asymptotes_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+    """The leading large-Abar asymptotes evaluated in mpmath (constants by quad of the cos powers)."""
+    p = mp.mpf(n) / 2
+    scale = mp.mpf(abar) ** p
+    return (scale * _cos_power_mp(p) / mp.pi, -2 * scale * _cos_power_mp(p + 1) / mp.pi,
+            2 * scale * _sin2_cos_power_mp(p) / mp.pi)
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
+    """Closed-form bounds: 0 < J0 - J0~ < 1, 0 < Jc1 - Jc1~ < 1/pi, 0 < J1 - J1~ < 1 for every Abar > 0.
+
+    (The remainder integrands are 1/sqrt(1+u) on the closing half and sqrt(1+u) - sqrt(u) on the
+    opening half, both in (0, 1]; for Jc1 their weighted difference is at most 0.3 of cos x.)
+    Checked in mpmath (30-digit reference minus the asymptote evaluated in mpmath) at a few
+    points in [1, 1e12], and with the package on a dense grid, where a remainder < 1 is only
+    resolvable up to the accuracy of J ~ Abar^{n/2} (allowance on each side: 1e-13 |J|, the
+    documented relative accuracy of ``j_integrals``, verified against mpmath above).
+    """
+    bounds = (1.0, 1.0 / math.pi, 1.0)
+    with mp.workdps(30):
+        for a in (1.0, 1e3, 1e6, 1e12):
+            ref = j_integrals_mp(a, n)
+            asym = _large_abar_asymptotes_mp(a, n)
+            for k in range(3):
+                rem = ref[k] - asym[k]
+                assert 0 < rem < bounds[k], (a, k, rem)
+    abar = np.logspace(0, 12, 241)
+    exact = j_integrals(abar, n)
+    asym = j_integrals_large_abar(abar, n)
+    for k in range(3):
+        rem = exact[k] - asym[k]
+        slack = 1e-13 * np.abs(exact[k])
+        assert np.all(rem > -slack) and np.all(rem < bounds[k] + slack), (k, rem.min(), rem.max())
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+def test_large_abar_asymptote_relative_error_vanishes(n: float) -> None:
+    """Reference: 30-digit mpmath values. Relative error of the asymptote decreases with Abar
+    (it is O(Abar^{-n/2}) by the bounds above) until it reaches double rounding (1e-15), and is
+    < 1e-3 at Abar = 1e12 for n >= 1."""
+    abar = [1e2, 1e4, 1e6, 1e8, 1e10, 1e12]
+    rel = np.empty((len(abar), 3))
+    for i, a in enumerate(abar):
+        ref = j_integrals_mp(a, n)
+        asym = j_integrals_large_abar(a, n)
+        rel[i] = [abs(float(asym[k]) / float(ref[k]) - 1) for k in range(3)]
+    assert np.all((np.diff(rel, axis=0) < 0) | (rel[1:] < 1e-15)), rel
+    bound_rel = np.array([1.0 / float(j_integrals_mp(a, n)[0]) for a in abar])  # J0 - J0~ < 1
+    assert np.all(rel[:, 0] < bound_rel + 1e-15), (rel[:, 0], bound_rel)
+    if n >= 1:
+        assert np.all(rel[-1] < 1e-3), rel[-1]
+
+
+# ----------------------------------------------------------------------------- small Abar
+
+
+def _third_order_coefficients(n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+    """Coefficients of Abar^{3n}: S = 2 + u^2/4 - u^3/4 + ..., D = -u + u^2/2 - 3u^3/8 + ... (u = (A sin t)^n)."""
+    p = 3 * mp.mpf(n)
+    w = mp.quad(lambda t: mp.sin(t) ** p, [0, mp.pi / 2])
+    w1 = mp.quad(lambda t: mp.sin(t) ** (p + 1), [0, mp.pi / 2])
+    s2 = mp.quad(lambda t: mp.sin(t) ** p * mp.cos(t) ** 2, [0, mp.pi / 2])
+    return -w / (4 * mp.pi), -3 * w1 / (4 * mp.pi), -s2 / (2 * mp.pi)
+
+
+@pytest.mark.parametrize("n, decades", [(0.5, (-5, -2)), (1.0, (-4, -1)), (2.0, (-3.5, -0.5))])
+def test_small_abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[float, float]) -> None:
+    """Reference: 30-digit mpmath J. error / Abar^{3n} stays bounded as Abar decreases over 3 decades.
+
+    Bound: 2 |c3| where c3 is the exact Abar^{3n} coefficient (u^3 Taylor terms of S and D,
+    integrated by mpmath), plus the double rounding of the two-term value (4 ulp of |J|).
+    Where the rounding is negligible the ratio must also approach c3 (within 35 %).
+    """
+    c3 = _third_order_coefficients(n)
+    abar = np.logspace(decades[1], decades[0], 7)
+    for k in range(3):
+        ratios = []
+        for a in abar:
+            ref = j_integrals_mp(float(a), n)[k]
+            approx = float(j_integrals_small_abar(float(a), n)[k])
+            err = abs(ref - mp.mpf(approx))
+            scale = mp.mpf(float(a)) ** (3 * n)
+            rounding = 4 * np.spacing(abs(approx))
+            assert err <= 2 * abs(c3[k]) * scale + rounding, (k, a, err, scale, c3[k])
+            if abs(c3[k]) * scale > 1e6 * rounding:
+                ratios.append(float(err / scale))
+        assert len(ratios) >= 2, (k, ratios)
+        assert abs(ratios[-1] / abs(float(c3[k])) - 1) < 0.35, (k, ratios, float(c3[k]))
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+def test_small_abar_limits_are_one_zero_one(n: float) -> None:
+    """Closed-form limit J -> (1, 0, 1) as Abar -> 0 (Eqs. 99, 123): |J - limit| <= C Abar^n, checked vs mpmath."""
+    for a in (1e-4, 1e-8, 1e-12):
+        ref = j_integrals_mp(a, n)
+        bound = 2.0 * a**n  # |Jc1| <= (2/pi) Abar^n int sin^{n+1} < Abar^n; J0 - 1, J1 - 1 are O(Abar^{2n})
+        assert abs(ref[0] - 1) < bound and abs(ref[1]) < bound and abs(ref[2] - 1) < bound
+        got = j_integrals(a, n)
+        assert abs(float(got[0]) - 1) < bound + 1e-13
+        assert abs(float(got[1])) < bound
+        assert abs(float(got[2]) - 1) < bound + 1e-13
+
+
+# ----------------------------------------------------------------------------- monotonicity, robustness
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+def test_j0_and_minus_jc1_strictly_increasing_as_proved(n: float) -> None:
+    """Closed-form proof (dS/du, -dD/du > 0): J0 and -Jc1 strictly increase with Abar.
+
+    Dense grid Abar in logspace(-12, 12, 4001). -Jc1 ~ Abar^n is resolvable everywhere; J0 - 1 ~
+    Abar^{2n} falls below double resolution for small Abar and large n, and it must increase strictly wherever J0 - 1 > 1e-12 (elsewhere: no step down beyond 4 ulp).
+    """
+    abar = np.logspace(-12, 12, 4001)
+    j0, jc1, j1 = j_integrals(abar, n)
+    assert np.all(np.diff(-jc1) > 0), np.min(np.diff(-jc1))
+    # unresolvable region: rounding noise of J0 = 1 + O(Abar^{2n}) may step down by an ulp or two
+    assert np.all(np.diff(j0) >= -4 * np.spacing(j0[:-1])), np.min(np.diff(j0))
+    resolvable = j0[:-1] > 1 + 1e-12
+    assert resolvable.sum() > 1000
+    assert np.all(np.diff(j0)[resolvable] > 0)
+    assert float(j_integrals(0.0, n)[2]) == 1.0  # J1(0) = 2/pi int_0^pi sin^2 = 1
+
+
+@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 4.0])
+def test_no_nan_no_warning_at_extreme_abar(n: float) -> None:
+    """Abar in {0, 1e-300, 1e12}: finite results, no warning of any kind (closed-form limit at the tiny end)."""
+    abar = np.array([0.0, 1e-300, 1e12])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        values = j_integrals(abar, n)
+        singles = [j_integrals(float(a), n) for a in abar]
+        small = j_integrals_small_abar(abar, n)
+        large = j_integrals_large_abar(abar, n)
+        general = j_integrals_general(abar, GentSchultz(n))
+    for arr in (*values, *small, *large, *general, *(x for s in singles for x in s)):
+        assert np.all(np.isfinite(arr))
+    # 1e-300: u = Abar^n sin^n t underflows harmlessly, J = (1, 0, 1) to double precision (|Jc1| ~ Abar^n)
+    assert abs(values[0][1] - 1) < 1e-14 and abs(values[2][1] - 1) < 1e-14
+    assert -2.0 * 1e-300**n <= values[1][1] <= 0.0
+
+
+@pytest.mark.parametrize("bad", [-1.0, -1e-300, float("nan"), float("inf")])
+def test_negative_or_nan_abar_raises_value_error(bad: float) -> None:
+    """Eqs. (28)-(36) are defined for Abar >= 0 (Abar is an amplitude); anything else is an input error."""
+    with pytest.raises(ValueError):
+        j_integrals(bad, 0.531)
+    with pytest.raises(ValueError):
+        j_integrals(np.array([1.0, bad]), 0.531)
+    with pytest.raises(ValueError):
+        j_integrals_general(bad, GentSchultz(0.531))
+
+
+@pytest.mark.parametrize("bad_n", [0.0, -0.5, float("nan")])
+def test_nonpositive_n_raises_value_error(bad_n: float) -> None:
+    """The Gent–Schultz exponent must be positive (Eq. 73)."""
+    with pytest.raises(ValueError):
+        j_integrals(1.0, bad_n)
+    with pytest.raises(ValueError):
+        GentSchultz(bad_n)
