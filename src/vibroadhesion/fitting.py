@@ -11,9 +11,10 @@ estimate of one asymptotic level (:func:`vibroadhesion.pulloff.predict_pulloff`)
   keeps the published v0.
 
 The parameters are fitted in logarithms (positivity; ln-standard errors are relative errors)
-by Levenberg–Marquardt on unweighted residuals in mN. The covariance is s^2 (J^T J)^-1 with
-s^2 = RSS/(m - p), mapped back to natural units by the delta method. For the identifiability
-test the residual scale is floored at ``noise_floor`` times the median force, so that
+by Levenberg–Marquardt on relative residuals model/observed - 1 (pull-off forces span an
+order of magnitude; measurement error is roughly proportional). The covariance is
+s^2 (J^T J)^-1 with s^2 = RSS/(m - p), mapped back to natural units by the delta method. For the
+identifiability test the relative residual scale is floored at ``noise_floor``, so that
 noise-free (synthetic) rows do not make any parameter look identifiable.
 """
 
@@ -43,7 +44,7 @@ def _residual_function(rows: pd.DataFrame, model: Model, base: GentSchultzParame
         return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values)})
 
     def residuals(log_values: np.ndarray) -> np.ndarray:
-        return predict_pulloff(model, params_of(log_values), freq, h1, **geometry).pulloff_mN - observed
+        return predict_pulloff(model, params_of(log_values), freq, h1, **geometry).pulloff_mN / observed - 1.0
 
     return residuals, params_of
 
@@ -70,7 +71,7 @@ def _least_squares(rows, model, base, free, geometry) -> dict[str, Any]:
 
 
 def _v0_identifiability(fit: dict[str, Any], rows: pd.DataFrame, max_relative_se: float, noise_floor: float) -> tuple[bool, str, float]:
-    s2 = max(fit["s2"], (noise_floor * float(np.median(rows["pulloff_mN"]))) ** 2)
+    s2 = max(fit["s2"], noise_floor**2)
     try:
         cov = s2 * np.linalg.inv(fit["jtj"])
     except np.linalg.LinAlgError:
@@ -79,7 +80,7 @@ def _v0_identifiability(fit: dict[str, Any], rows: pd.DataFrame, max_relative_se
     if not np.isfinite(rel_se) or rel_se > max_relative_se:
         return False, (
             f"v0 not identifiable: its relative standard error would be {rel_se:.3g} "
-            f"(> {max_relative_se:g}) at a residual scale of {math.sqrt(s2):.3g} mN"
+            f"(> {max_relative_se:g}) at a relative residual scale of {math.sqrt(s2):.3g}"
         ), rel_se
     return True, f"v0 identifiable: relative standard error {rel_se:.3g}", rel_se
 
@@ -129,8 +130,9 @@ def fit_gent_schultz(
         free_parameters=list(free),
         parameters=_parameter_table(fit["params"], free, cov),
         covariance={"parameters": list(free), "matrix": cov.tolist()},
-        residuals_mN=[{"line": int(line), "residual": float(r)} for line, r in zip(rows["line"], fit["residuals"])],
-        rms_residual_mN=float(np.sqrt(np.mean(fit["residuals"] ** 2))),
+        residuals_mN=[{"line": int(line), "residual": float(r * obs)}
+                      for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"])],
+        rms_relative_residual=float(np.sqrt(np.mean(fit["residuals"] ** 2))),
         v0_identifiable="v0" in free,
         v0_note=v0_note,
         function_evaluations=fit["nfev"],
