@@ -145,9 +145,7 @@ def _parser() -> argparse.ArgumentParser:
         p.add_argument("--fit", required=True)
         p.add_argument("--panel-n", type=float, nargs="+", required=True)
         if needs_csv:
-            p.add_argument("--csv", required=True)
-            p.add_argument("--pdf", required=True)
-            p.add_argument("--png", required=True)
+            _plot_arguments(p)
         else:
             p.add_argument("--log10-abar-min", type=float, required=True)
             p.add_argument("--log10-abar-max", type=float, required=True)
@@ -156,20 +154,16 @@ def _parser() -> argparse.ArgumentParser:
         p.set_defaults(run=run)
 
     p = steps.add_parser("fig4-data")
-    p.add_argument("--setup", required=True)
-    p.add_argument("--fit", required=True)
+    _rig_arguments(p)
     p.add_argument("--h1-max-um", type=float, required=True)
     p.add_argument("--points", type=int, required=True)
     p.add_argument("--out", required=True)
     p.set_defaults(run=_fig4_data)
 
     p = steps.add_parser("fig4-plot")
-    p.add_argument("--setup", required=True)
-    p.add_argument("--fit", required=True)
+    _rig_arguments(p)
     p.add_argument("--pulloff", required=True)
-    p.add_argument("--csv", required=True)
-    p.add_argument("--pdf", required=True)
-    p.add_argument("--png", required=True)
+    _plot_arguments(p)
     p.set_defaults(run=_fig4_plot)
 
     for name, run in (("fig6-data", _fig6_data), ("fig7-data", _fig7_data)):
@@ -188,13 +182,18 @@ def _parser() -> argparse.ArgumentParser:
     for name in ("fig6-plot", "fig7-plot", "fig8-plot"):
         p = steps.add_parser(name)
         _rig_arguments(p)
-        p.add_argument("--csv", required=True)
         if name == "fig7-plot":
             p.add_argument("--fig4", required=True, help="fig4.csv: its leading-order rows are Fig. 7's asymptotes")
-        p.add_argument("--pdf", required=True)
-        p.add_argument("--png", required=True)
+        _plot_arguments(p)
         p.set_defaults(run=_rigid_fixation_plot)
     return parser
+
+
+def _plot_arguments(p: argparse.ArgumentParser) -> None:
+    """The table a plot step draws and the two files it writes."""
+    p.add_argument("--csv", required=True)
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png", required=True)
 
 
 def _rig_arguments(p: argparse.ArgumentParser) -> None:
