@@ -88,8 +88,11 @@ def test_shipped_setup_loads() -> None:
     assert setup.amplitudes_um == (20.0, 40.0, 60.0, 80.0, 100.0)
     assert (setup.w0, setup.n, setup.v0) == (0.236, 0.531, 44.5e-6)
     assert setup.sources["indenter.radius"].startswith("Sec. 3.4:")
-    assert len(setup.sources) == 11 and all(s.strip() for s in setup.sources.values())
-    assert setup.fixation == {}
+    assert len(setup.sources) == 15 and all(s.strip() for s in setup.sources.values())
+    # the compliant fixation of Fig. 5: assumed values, each with its reasoning (Sec. 3.5.3 gives none)
+    assert setup.fixation == {"natural_frequency": 70.42, "stiffness_ratio_kappa": (0.001, 0.01),
+                              "weight_ratio_mu": 0.0, "damping_ratio_zeta": (0.0, 0.01, 0.05)}
+    assert all(setup.sources[f"fixation.{k}"].startswith(("assumed", "derived")) for k in setup.fixation)
     assert setup.units["gent_schultz_published.v0"] == "m/s"
     assert setup.values["test_conditions.frequencies"] == (200.0, 300.0, 400.0)
 
@@ -309,11 +312,17 @@ def test_exponent_without_dot_is_a_number(tmp_path: Path) -> None:
     assert setup.youngs_modulus == 2e6
 
 
+def _shipped_without_fixation() -> str:
+    """The shipped setup.yaml up to (not including) its fixation group, which is optional."""
+    text = SETUP_YAML.read_text(encoding="utf-8")
+    return text[: text.index("\n# Compliant fixation")] + "\n"
+
+
 def test_optional_fixation_group(tmp_path: Path) -> None:
     extra = ("fixation:\n"
              "  stiffness_ratio_kappa: {value: 0.5, unit: '1', source: 'Sec. 2'}\n"
              "  damping_ratio_zeta: {value: [0.01, 0.1], unit: '1', source: 'Fig. 6'}\n")
-    path = _write(tmp_path, "setup.yaml", SETUP_YAML.read_text(encoding="utf-8") + extra)
+    path = _write(tmp_path, "setup.yaml", _shipped_without_fixation() + extra)
     setup = load_setup(path)
     assert setup.fixation == {"stiffness_ratio_kappa": 0.5, "damping_ratio_zeta": (0.01, 0.1)}
     assert setup.sources["fixation.damping_ratio_zeta"] == "Fig. 6"
@@ -327,8 +336,7 @@ def test_optional_fixation_group(tmp_path: Path) -> None:
      "expected a number or a list"),
 ], ids=["unknown", "no-source", "text-value"])
 def test_bad_fixation(tmp_path: Path, entry: str, row_offset: int, column: str, fragment: str) -> None:
-    base = SETUP_YAML.read_text(encoding="utf-8")
-    path = _write(tmp_path, "setup.yaml", base + "fixation:\n" + entry)
+    path = _write(tmp_path, "setup.yaml", _shipped_without_fixation() + "fixation:\n" + entry)
     with pytest.raises(DataError) as info:
         load_setup(path)
     _assert_located(info.value, path, _line_of(path, "fixation:") + row_offset, column, fragment)

@@ -15,6 +15,8 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion import data, figures, groups
+from vibroadhesion.compliant import CompliantFixation
+from vibroadhesion.continuation import ContinuationError
 from vibroadhesion.artefacts import save_figure, write_csv, write_json
 from vibroadhesion.fitting import FitError, fit_gent_schultz, parameters_from_fit
 from vibroadhesion.jkr import pulloff_force
@@ -115,6 +117,40 @@ def _fig8_data(args: argparse.Namespace) -> None:
     write_csv(figures.fig8_table(pd.read_csv(args.fig6), chi0=chi0, n=params.n), args.out)
 
 
+def _compliant_fixation(args: argparse.Namespace):
+    """Fig. 5's base parameters (Sec. 3.5.3) from the rig, the fit and the assumed fixation of data/setup.yaml."""
+    setup, params, chi0 = _rig_and_parameters(args)
+    fixation = setup.fixation
+    missing = {"natural_frequency", "stiffness_ratio_kappa", "weight_ratio_mu", "damping_ratio_zeta"} - set(fixation)
+    if missing:
+        raise ValueError(f"{args.setup}: Fig. 5 needs the fixation entries {sorted(missing)} in data/setup.yaml")
+    omega0 = float(fixation["natural_frequency"])
+    base = CompliantFixation(chi0=chi0, eta1=float(groups.eta1(args.h1_um * 1e-6, setup.radius)),
+                             nu0=groups.nu0(params.v0, omega0, setup.radius), kappa=1.0,
+                             mu=float(fixation["weight_ratio_mu"]), zeta=0.0)
+    experiments = {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
+    as_list = lambda v: [float(x) for x in np.atleast_1d(v)]  # noqa: E731
+    return base, as_list(fixation["stiffness_ratio_kappa"]), as_list(fixation["damping_ratio_zeta"]), params.n, experiments
+
+
+def _fig5_data(args: argparse.Namespace) -> None:
+    base, kappas, zetas, n, experiments = _compliant_fixation(args)
+    curves, markers, counts = figures.fig5_tables(base, kappas, zetas, n, experiments,
+                                                  (args.omega_bar_min, args.omega_bar_max), args.count_points)
+    write_csv(curves, args.out)
+    write_csv(markers, args.markers)
+    write_csv(counts, args.counts)
+    for (kappa, zeta), rows in markers[markers["kind"] == "fold"].groupby(["kappa", "zeta"]):
+        print(f"kappa = {kappa:g}, zeta = {zeta:g}: folds at omega_bar = " + ", ".join(f"{w:.6f}" for w in rows["omega_bar"]))
+    several = counts[counts["solutions"] > 1]
+    print(f"{len(curves)} points traced; {len(several)} of {len(counts)} grid frequencies with more than one solution")
+
+
+def _fig5_plot(args: argparse.Namespace) -> None:
+    fig = figures.plot_fig5(pd.read_csv(args.csv), pd.read_csv(args.markers), args.highlight_hz)
+    save_figure(fig, args.pdf, args.png)
+
+
 def _rigid_fixation_plot(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
     marks = _experiment_omega_check(setup, params)
@@ -166,6 +202,22 @@ def _parser() -> argparse.ArgumentParser:
     _plot_arguments(p)
     p.set_defaults(run=_fig4_plot)
 
+    p = steps.add_parser("fig5-data", help="compliant fixation: continuation of Eqs. (87), (90)")
+    _rig_arguments(p)
+    p.add_argument("--h1-um", type=float, required=True)
+    p.add_argument("--omega-bar-min", type=float, required=True)
+    p.add_argument("--omega-bar-max", type=float, required=True)
+    p.add_argument("--count-points", type=int, required=True)
+    p.add_argument("--out", required=True)
+    p.add_argument("--markers", required=True)
+    p.add_argument("--counts", required=True)
+    p.set_defaults(run=_fig5_data)
+    p = steps.add_parser("fig5-plot")
+    p.add_argument("--markers", required=True)
+    p.add_argument("--highlight-hz", type=float, required=True)
+    _plot_arguments(p)
+    p.set_defaults(run=_fig5_plot)
+
     for name, run in (("fig6-data", _fig6_data), ("fig7-data", _fig7_data)):
         p = steps.add_parser(name)
         _rig_arguments(p)
@@ -205,7 +257,7 @@ def main(argv: list[str] | None = None) -> int:
     args = _parser().parse_args(argv)
     try:
         args.run(args)
-    except (data.DataError, NoRootError, FitError, ValueError) as exc:
+    except (data.DataError, NoRootError, ContinuationError, FitError, ValueError) as exc:
         print(f"error: {args.step}: {exc}", file=sys.stderr)
         return 1
     return 0

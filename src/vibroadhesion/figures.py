@@ -9,11 +9,13 @@ never reruns a solve.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
+from dataclasses import replace
 
 import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
+from vibroadhesion.compliant import CompliantFixation, ResponseCurve, static_abar_m, trace_response_curve
 from vibroadhesion.integrals import j_integrals, j_integrals_large_abar
 from vibroadhesion.pulloff import GentSchultzParameters, Model, predict_pulloff
 from vibroadhesion.ratelaw import GentSchultz
@@ -157,6 +159,14 @@ def _mark_frequencies(ax: plt.Axes, experiment_omega_check: Mapping[float, float
         ax.axvline(w, color="0.5", lw=0.7, ls=(0, (1, 2)), label="test frequencies 200/300/400 Hz" if k == 0 else None)
 
 
+def shade_amplitude_regions(ax: plt.Axes) -> None:
+    """Shade A > a_m (geometrically impossible) and A <= 0.1 a_m (the model applies) on an A/a_m axis."""
+    lo, hi = ax.get_ylim()
+    ax.axhspan(1.0, max(hi, 10.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
+    ax.axhspan(min(lo, 1e-7), APPLICABILITY_LIMIT, color="C2", alpha=0.12, label=r"$A \leq 0.1\,a_m$: model applies")
+    ax.set_ylim(min(lo, 1e-7), max(hi, 10.0))
+
+
 def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
     """(a) Abar, (b) abar_m, (c) w_eff/w0, (d) A/a_m against omega_check, regions of (d) shaded."""
     fig, axes = plt.subplots(2, 2, figsize=(9.0, 6.4), constrained_layout=True, sharex=True)
@@ -168,10 +178,7 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
         ax.set(xscale="log", yscale=yscale, ylabel=label, title=f"({letter})")
         _mark_frequencies(ax, experiment_omega_check)
     ax_d = axes.flat[3]
-    lo, hi = ax_d.get_ylim()
-    ax_d.axhspan(1.0, max(hi, 10.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
-    ax_d.axhspan(min(lo, 1e-7), APPLICABILITY_LIMIT, color="C2", alpha=0.12, label=r"$A \leq 0.1\,a_m$: model applies")
-    ax_d.set_ylim(min(lo, 1e-7), max(hi, 10.0))
+    shade_amplitude_regions(ax_d)
     for ax in axes[1]:
         ax.set_xlabel(r"$\check{\omega} = \omega R / v_0$")
     axes.flat[0].legend()
@@ -208,4 +215,81 @@ def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
     axes[0].axhline(1.0, color="k", lw=0.6, ls="--")
     axes[0].axhline(1.0 / 3.0, color="k", lw=0.6, ls=":")
     axes[0].legend()
+    return fig
+
+
+# --- Fig. 5: compliant fixation, passage through resonance ---------------------------------
+
+FIG5_COLUMNS = ["chi0", "eta1", "nu0", "zeta", "kappa", "mu", "branch", "omega_bar", "Abar", "abar_m", "A_over_am"]
+FIG5_MARKER_COLUMNS = ["kind", "frequency_hz", *FIG5_COLUMNS]
+FIG5_COUNT_COLUMNS = ["zeta", "kappa", "omega_bar", "solutions"]
+
+
+def _fig5_rows(p: CompliantFixation, branch: Sequence[str], x: np.ndarray, curve: ResponseCurve) -> pd.DataFrame:
+    return pd.DataFrame({"chi0": p.chi0, "eta1": p.eta1, "nu0": p.nu0, "zeta": p.zeta, "kappa": p.kappa, "mu": p.mu,
+                         "branch": branch, "omega_bar": np.exp(x[:, 0]), "Abar": np.exp(x[:, 2]),
+                         "abar_m": np.exp(x[:, 1]), "A_over_am": curve.a_over_am(x)})[FIG5_COLUMNS]
+
+
+def fig5_tables(
+    base: CompliantFixation, kappas: Sequence[float], zetas: Sequence[float], n: float,
+    experiment_omega_bar: Mapping[float, float], omega_bar_range: tuple[float, float], count_points: int,
+) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
+    """Fig. 5 for every (kappa, zeta): the traced curves, the markers (folds, test frequencies), and
+    the number of solutions on a log grid of omega_bar.
+
+    ``branch`` names the monotone segment of the curve in trace order: "lower-k"/"upper-k" for the
+    two pieces below/above the exact anti-resonance (zeta = 0), "full-k" otherwise; k counts the
+    folds passed. The exact anti-resonance point (Abar = 0 at omega_bar = 1, zeta = 0) is a row
+    with branch "anti-resonance".
+    """
+    law = GentSchultz(n)
+    curves, markers, counts = [], [], []
+    grid = np.geomspace(*omega_bar_range, count_points)
+    for kappa in kappas:
+        for zeta in zetas:
+            p = replace(base, kappa=kappa, zeta=zeta)
+            curve = trace_response_curve(p, law, omega_bar_range)
+            names = ("lower", "upper") if len(curve.pieces) == 2 else ("full",)
+            for name, piece in zip(names, curve.pieces):
+                segment = np.concatenate([[0], np.cumsum(np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0]))])
+                curves.append(_fig5_rows(p, [f"{name}-{k}" for k in segment], piece.points, curve))
+            if p.anti_resonance_is_exact and omega_bar_range[0] < 1.0 < omega_bar_range[1]:
+                static = static_abar_m(p)
+                curves.append(pd.DataFrame([{**_fig5_rows(p, ["anti-resonance"], np.array([[0.0, np.log(static), 0.0]]), curve).iloc[0].to_dict(),
+                                             "Abar": 0.0, "A_over_am": 0.0}])[FIG5_COLUMNS])
+            markers.append(_fig5_rows(p, ["fold"] * len(curve.folds), curve.folds, curve).assign(kind="fold", frequency_hz=np.nan))
+            for f, omega_bar in sorted(experiment_omega_bar.items()):
+                solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)] for am, a in curve.solutions_at(omega_bar, law)])
+                markers.append(_fig5_rows(p, ["experiment"] * len(solutions), solutions.reshape(-1, 3), curve)
+                               .assign(kind="experiment", frequency_hz=f))
+            counts.append(pd.DataFrame({"zeta": zeta, "kappa": kappa, "omega_bar": grid,
+                                        "solutions": [curve.count_at(w) for w in grid]}))
+    return (pd.concat(curves, ignore_index=True), pd.concat(markers, ignore_index=True)[FIG5_MARKER_COLUMNS],
+            pd.concat(counts, ignore_index=True)[FIG5_COUNT_COLUMNS])
+
+
+def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> plt.Figure:
+    """A/a_m against omega_bar, one panel per kappa, one colour per zeta; folds and test frequencies marked."""
+    kappas = sorted(curves["kappa"].unique())
+    fig, axes = plt.subplots(1, len(kappas), figsize=(4.6 * len(kappas), 3.9), constrained_layout=True, squeeze=False)
+    for ax, kappa in zip(axes[0], kappas):
+        for k, (zeta, rows) in enumerate(curves[curves["kappa"] == kappa].groupby("zeta", sort=True)):
+            for j, (branch, seg) in enumerate(rows[rows["A_over_am"] > 0].groupby("branch", sort=False)):
+                middle = branch.endswith("-1")  # between two folds: the unstable middle branch of a saddle-node pair
+                ax.plot(seg["omega_bar"], seg["A_over_am"], color=f"C{k}", ls="--" if middle else "-",
+                        label=rf"$\zeta$ = {zeta:g}" if j == 0 else None)
+        here = markers[markers["kappa"] == kappa]
+        folds = here[here["kind"] == "fold"]
+        ax.plot(folds["omega_bar"], folds["A_over_am"], "kx", ms=6, label="fold" if len(folds) else None)
+        tests = here[here["kind"] == "experiment"]
+        ax.plot(tests["omega_bar"], tests["A_over_am"], "o", mfc="none", color="0.3", ms=5, label="200/300/400 Hz")
+        top = tests[tests["frequency_hz"] == highlight_hz]
+        ax.plot(top["omega_bar"], top["A_over_am"], "o", color="k", ms=7, label=f"{highlight_hz:g} Hz (paper's dot)")
+        ax.axvline(1.0, color="0.6", lw=0.6, ls=":")
+        ax.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$", ylabel=r"$A/a_m$",
+               title=rf"$\kappa$ = {kappa:g}")
+        ax.set_ylim(1e-7, 10.0)
+        shade_amplitude_regions(ax)
+    axes[0][0].legend(fontsize=8, loc="lower left")
     return fig

@@ -55,14 +55,12 @@ def nominal_point_contact_closure(j0: Array) -> Array:
 
 
 def displacement_harmonics(
-    abar: ArrayLike, abar_m: ArrayLike, jc1: ArrayLike, j1: ArrayLike, chi0: float, omega_check: float
+    abar: ArrayLike, abar_m: ArrayLike, jc1: ArrayLike, j1: ArrayLike, chi0: float, omega_check: ArrayLike
 ) -> tuple[Array, Array]:
-    """(delta_c, delta_s) / R of Eqs. (93)–(94); ``omega_check = inf`` gives delta_s = 0."""
+    """(delta_c, delta_s) / R of Eqs. (93)–(94), broadcast; ``omega_check = inf`` gives delta_s = 0."""
     abar, abar_m = np.asarray(abar, dtype=float), np.asarray(abar_m, dtype=float)
     delta_c = -(2.0 ** (2 / 3) / 3.0 ** (4 / 3)) * chi0**2 * np.sqrt(abar_m) * np.asarray(jc1)
-    if math.isinf(omega_check):
-        return delta_c, np.zeros_like(delta_c)
-    delta_s = (2.0 ** (4 / 3) / 3.0 ** (2 / 3)) * chi0 * (abar / omega_check) * abar_m * (
+    delta_s = (2.0 ** (4 / 3) / 3.0 ** (2 / 3)) * chi0 * (abar / np.asarray(omega_check, dtype=float)) * abar_m * (
         1.0 - np.asarray(j1) / (4.0 * abar_m**1.5)
     )
     return delta_c, delta_s

@@ -23,6 +23,7 @@ from vibroadhesion.jkr import pulloff_force
 PAGES: list[tuple[str, str]] = [
     ("fig3", "Fig. 3 — J-integrals of the Gent–Schultz law"),
     ("fig4", "Fig. 4 — pull-off amplification against base amplitude"),
+    ("fig5", "Fig. 5 — passage through resonance of a compliantly fixed indenter"),
     ("fig6", "Fig. 6 — nominal point contact of a rigidly fixed indenter"),
     ("fig7", "Fig. 7 — refined pull-off estimate against frequency"),
     ("fig8", "Fig. 8 — dynamic contact stiffness (storage, loss, phase)"),

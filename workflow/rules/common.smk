@@ -6,7 +6,7 @@ from pathlib import Path
 # whether or not that environment is activated in the shell.
 PYTHON = sys.executable
 
-FIGURES = ["fig3", "fig4", "fig6", "fig7", "fig8"]
+FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
 
 def code(*modules):

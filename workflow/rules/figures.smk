@@ -77,6 +77,51 @@ rule fig4_plot:
         "--csv {input.csv} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
+# Fig. 5: compliantly fixed indenter, refined model of Sec. 3.5.3, traced by continuation.
+
+
+rule fig5_data:
+    """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta); folds and solution counts."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code(*NUMERICS, "compliant", "continuation", "figures", "fitting", "data", "cli", "artefacts"),
+    output:
+        csv="results/fig5/fig5.csv",
+        markers="results/fig5/fig5_markers.csv",
+        counts="results/fig5/fig5_solution_count.csv",
+    params:
+        h1=config["fig5"]["h1_um"],
+        lo=config["fig5"]["omega_bar_min"],
+        hi=config["fig5"]["omega_bar_max"],
+        points=config["fig5"]["count_points"],
+    log:
+        "results/logs/fig5_data.log",
+    benchmark:
+        "results/benchmarks/rules/fig5_data.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig5-data --setup {input.setup} --fit {input.fit} --h1-um {params.h1} "
+        "--omega-bar-min {params.lo} --omega-bar-max {params.hi} --count-points {params.points} "
+        "--out {output.csv} --markers {output.markers} --counts {output.counts} 2>&1 | tee {log}"
+
+
+rule fig5_plot:
+    input:
+        csv="results/fig5/fig5.csv",
+        markers="results/fig5/fig5_markers.csv",
+        code=code("figures", "cli", "artefacts"),
+    output:
+        pdf="results/fig5/fig5.pdf",
+        png=report("results/fig5/fig5.png", caption="../report/fig5.rst", category="Figures"),
+    params:
+        highlight=config["fig5"]["highlight_hz"],
+    log:
+        "results/logs/fig5_plot.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli fig5-plot --csv {input.csv} --markers {input.markers} "
+        "--highlight-hz {params.highlight} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+
+
 # Figs. 6-8: rigidly fixed indenter, refined model (Secs. 3.5.4, 3.6, 3.7). Fig. 8 reuses the
 # Fig. 6 solution and Fig. 7 takes its asymptotes from Fig. 4's leading-order rows.
 

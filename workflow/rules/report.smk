@@ -6,12 +6,15 @@ PAGE_INPUTS = {
     "fig4": {"fig_csv": "results/fig4/fig4.csv", "fig_png": "results/fig4/fig4.png",
              "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json",
              "pulloff_csv": "results/data/pulloff.csv"},
+    "fig5": {"fig_csv": "results/fig5/fig5.csv", "fig_png": "results/fig5/fig5.png",
+             "markers_csv": "results/fig5/fig5_markers.csv", "counts_csv": "results/fig5/fig5_solution_count.csv",
+             "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
     **{fig: {"fig_csv": f"results/{fig}/{fig}.csv", "fig_png": f"results/{fig}/{fig}.png",
              "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"}
        for fig in ("fig6", "fig7", "fig8")},
     "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
     "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",
-                   "rule_tsvs": [f"results/benchmarks/rules/{r}.tsv" for r in ("fit_gent_schultz", "fig3_data", "fig4_data", "fig6_data", "fig7_data", "fig8_data")]},
+                   "rule_tsvs": [f"results/benchmarks/rules/{r}.tsv" for r in ("fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data")]},
 }
 
 

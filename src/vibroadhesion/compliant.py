@@ -1,0 +1,332 @@
+"""Compliantly fixed indenter, refined model of Sec. 3.5.3: passage through resonance (Fig. 5).
+
+Unknowns abar_m = a_m/a_o and the internal variable Abar = omega A/v0 (Eq. 45) at the
+excitation frequency omega_bar = omega/omega0 (Eq. 65). Two equations:
+
+Mean balance, Eq. (87) (nominal point contact h0 = hhat, Eq. 78; derived from Eq. 85 with
+a_m/R = c_o abar_m, c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, dividing by c_o^2 and using
+(sqrt(2)/3) chi0^(3/2) c_o^(-3/2) = 1; agrees with the printed equation, docs/errata.md):
+
+    (2^(7/3) chi0 / 3^(5/3)) abar_m^3 + kappa abar_m^2
+        - J0(Abar) ((2^(4/3) chi0 / 3^(2/3)) abar_m^(3/2) + kappa abar_m^(1/2)) = 3^(4/3) mu / (2^(2/3) chi0^2).
+
+Harmonic balance, Eq. (90) with Eqs. (91)–(92):
+
+    xi_c^2 + xi_s^2 = eta1^2 [(1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2],
+    xi_c = (1 - omega_bar^2) delta_c + 2 zeta omega_bar delta_s + P_c,
+    xi_s = (1 - omega_bar^2) delta_s - 2 zeta omega_bar delta_c + P_s,
+
+with the refined coefficients divided by R (delta) and by kR (P), Eqs. (93)–(96); omega_check =
+omega_bar/nu0 (Eq. 105), so nu0/omega_bar = 1/omega_check:
+
+    delta_c = -(2^(2/3)/3^(4/3)) chi0^2 abar_m^(1/2) Jc1                                   (93)
+    delta_s = (2^(4/3)/3^(2/3)) chi0 (nu0/omega_bar) Abar abar_m (1 - J1/(4 abar_m^(3/2)))  (94)
+    P_c     = -(4 chi0^3/(9 kappa)) abar_m^(3/2) Jc1                                       (95)
+    P_s     = (2^(8/3)/3^(4/3)) chi0^2 (nu0/(kappa omega_bar)) Abar abar_m^2 (1 - 3 J1/(4 abar_m^(3/2)))  (96)
+
+(re-derived from Eqs. 32–35 in docs/errata.md; Eq. 96 prints sigma_bar for abar_m). The
+contact-radius amplitude is A/a_m = 3^(2/3) nu0 Abar / (2^(1/3) chi0 abar_m omega_bar), the
+corrected Eq. (98) (errata E1).
+
+Numerical form. Both equations are solved in logarithmic variables x = (ln omega_bar,
+ln abar_m, ln Abar), which spans the decades of Fig. 5 with uniform conditioning: Eq. (87) as
+the ratio of its positive and negative parts minus one, Eq. (90) as the difference of the
+logarithms of the two amplitudes. The anti-resonance of the base-excited system (Appendix B):
+at omega_bar = 1 with zeta = 0 the right-hand side of Eq. (90) vanishes, so xi = 0 forces
+Jc1 = 0, i.e. Abar = 0 exactly and abar_m equals its static value (Eq. 82). In x that point is at
+ln Abar = -infinity: the solution curve splits into a branch below and a branch above
+omega_bar = 1, each traced towards the notch until A/a_m falls below ``NOTCH_FLOOR``, and the
+point omega_bar = 1 itself is returned exactly.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
+
+from vibroadhesion.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
+from vibroadhesion.integrals import j_integrals_for_law
+from vibroadhesion.ratelaw import RateLaw
+from vibroadhesion.refined import contact_radius_amplitude_ratio, displacement_harmonics, pulloff_closure
+from vibroadhesion.roots import NoRootError
+
+Array = NDArray[np.float64]
+
+#: A/a_m below which a branch approaching the anti-resonance notch (zeta = 0) is ended.
+NOTCH_FLOOR = 1e-12
+
+
+@dataclass(frozen=True)
+class CompliantFixation:
+    """Dimensionless parameters of Sec. 3.5.3 (Eqs. 64–66, 81, 97)."""
+
+    chi0: float  # (9 pi w0 / (E* R))^(1/3), Eq. (64)
+    eta1: float  # h1 / R, Eq. (65)
+    nu0: float  # v0 / (omega0 R), Eq. (97)
+    kappa: float  # k / (E* R), Eq. (66)
+    mu: float  # m g / (E* R^2), Eq. (81)
+    zeta: float  # c / (2 sqrt(k m)), Eq. (65)
+
+    def __post_init__(self) -> None:
+        for name in ("chi0", "eta1", "nu0", "kappa"):
+            if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0):
+                raise ValueError(f"{name} must be a positive number, got {getattr(self, name)!r}")
+        for name in ("mu", "zeta"):
+            if not (math.isfinite(getattr(self, name)) and getattr(self, name) >= 0):
+                raise ValueError(f"{name} must be a non-negative number, got {getattr(self, name)!r}")
+
+    @property
+    def anti_resonance_is_exact(self) -> bool:
+        """zeta = 0: Eq. (90) has the exact solution Abar = 0 at omega_bar = 1 (Appendix B)."""
+        return self.zeta == 0.0
+
+
+def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -> tuple[Array, Array]:
+    """Eq. (87) as (positive part, J0 part): the equation is ``positive == negative``."""
+    abar_m = np.asarray(abar_m, dtype=float)
+    positive = (2.0 ** (7 / 3) * p.chi0 / 3.0 ** (5 / 3)) * abar_m**3 + p.kappa * abar_m**2 - (
+        3.0 ** (4 / 3) * p.mu / (2.0 ** (2 / 3) * p.chi0**2)
+    )
+    negative = np.asarray(j0) * ((2.0 ** (4 / 3) * p.chi0 / 3.0 ** (2 / 3)) * abar_m**1.5 + p.kappa * np.sqrt(abar_m))
+    return positive, negative
+
+
+def static_abar_m(p: CompliantFixation) -> float:
+    """Static contact radius a_0/a_o: Eq. (87) with J0 = 1, i.e. Eq. (82) (unique root, see below).
+
+    positive/negative = (c1 abar^(3/2) + kappa abar^(1/2) - M abar^(-3/2)) / (c2 + kappa abar^(-1)) is strictly
+    increasing in abar (numerator increasing, denominator decreasing and positive) from -inf
+    (M > 0) or c1 0 + ... (M = 0: kappa abar^(1/2)/(kappa/abar) -> 0) to infinity: one root.
+    """
+
+    return float(abar_m_from_mean_balance(np.array([1.0]), p)[0])
+
+
+def harmonic_coefficients(
+    omega_bar: ArrayLike, abar_m: ArrayLike, abar: ArrayLike, p: CompliantFixation, law: RateLaw
+) -> tuple[Array, Array, Array, Array, Array]:
+    """(J0, delta_c, delta_s, P_c, P_s) of Eqs. (93)–(96), broadcast over the inputs."""
+    omega_bar, abar_m, abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, abar)))
+    j0, jc1, j1 = j_integrals_for_law(abar.ravel(), law)
+    j0, jc1, j1 = (v.reshape(abar.shape) for v in (j0, jc1, j1))
+    delta_c, delta_s = displacement_harmonics(abar, abar_m, jc1, j1, p.chi0, omega_bar / p.nu0)
+    p_c = -(4.0 * p.chi0**3 / (9.0 * p.kappa)) * abar_m**1.5 * jc1
+    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * p.chi0**2 * (p.nu0 / (p.kappa * omega_bar)) * abar * abar_m**2 * (
+        1.0 - 3.0 * j1 / (4.0 * abar_m**1.5)
+    )
+    return j0, delta_c, delta_s, p_c, p_s
+
+
+def forcing_squared(log_omega_bar: ArrayLike, zeta: float) -> Array:
+    """(1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2, the right-hand side of Eq. (90) over eta1^2.
+
+    Taken from ln omega_bar with 1 - omega_bar^2 = -expm1(2 ln omega_bar): no cancellation near
+    the anti-resonance omega_bar = 1, where the solution depends on this difference alone.
+    """
+    s = np.asarray(log_omega_bar, dtype=float)
+    return np.expm1(2.0 * s) ** 2 + 4.0 * zeta**2 * np.exp(2.0 * s)
+
+
+def residual(x: ArrayLike, p: CompliantFixation, law: RateLaw) -> Array:
+    """Eqs. (87) and (90) at x = (ln omega_bar, ln abar_m, ln Abar), rows of an (m, 3) array -> (m, 2).
+
+    Column 0: positive/negative - 1 of Eq. (87); column 1: ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
+    """
+    x = np.atleast_2d(np.asarray(x, dtype=float))
+    omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
+    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
+    positive, negative = mean_balance_parts(abar_m, j0, p)
+    xi_c, xi_s = _xi(x[:, 0], omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
+    forcing = np.hypot(np.expm1(2.0 * x[:, 0]), 2.0 * p.zeta * omega_bar)  # sqrt of forcing_squared, overflow-free
+    amplitude = np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - np.log(forcing)
+    return np.stack([positive / negative - 1.0, amplitude], axis=1)
+
+
+def _xi(log_omega_bar: Array, omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
+        zeta: float) -> tuple[Array, Array]:
+    """xi_c, xi_s of Eqs. (91)-(92)."""
+    stiffness = -np.expm1(2.0 * log_omega_bar)  # 1 - omega_bar^2
+    return (stiffness * delta_c + 2.0 * zeta * omega_bar * delta_s + p_c,
+            stiffness * delta_s - 2.0 * zeta * omega_bar * delta_c + p_s)
+
+
+def residual_linear(omega_bar: float, abar_m: float, abar: float, p: CompliantFixation, law: RateLaw) -> tuple[float, float]:
+    """Eqs. (87) and (90) in their printed (polynomial) form, relative: for checking a solution.
+
+    Returns ((positive - negative)/negative, (xi_c^2 + xi_s^2 - rhs)/rhs) of Eqs. (87) and (90).
+    """
+    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
+    positive, negative = mean_balance_parts(abar_m, j0, p)
+    xi_c, xi_s = _xi(np.log(omega_bar), omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
+    rhs = p.eta1**2 * forcing_squared(math.log(omega_bar), p.zeta)
+    return float((positive - negative) / negative), float((xi_c**2 + xi_s**2 - rhs) / rhs)
+
+
+def abar_m_from_mean_balance(j0: ArrayLike, p: CompliantFixation) -> Array:
+    """abar_m solving Eq. (87) for given J0(Abar), vectorised (unique root, see :func:`static_abar_m`).
+
+    Bisection in ln abar_m on [ln J0^(2/3) - 1, ln J0^(2/3) + 1] (widened upwards while needed): at
+    abar_m = lambda J0^(2/3) the ratio of the parts of Eq. (87) lies between (2/3) lambda^(3/2) and
+    lambda^(3/2) when mu = 0, below 1 at lambda = 1/e and above 1 at lambda = e. 80 halvings of a
+    width-2 bracket reach the spacing of doubles.
+    """
+    j0 = np.asarray(j0, dtype=float)
+
+    def excess(z: Array) -> Array:
+        positive, negative = mean_balance_parts(np.exp(z), j0, p)
+        return positive / negative - 1.0
+
+    centre = (2.0 / 3.0) * np.log(j0)
+    lo, hi = centre - 1.0, centre + 1.0
+    for _ in range(200):
+        if np.all(excess(hi) > 0):
+            break
+        hi = np.where(excess(hi) > 0, hi, hi + 2.0)
+    else:
+        raise NoRootError("Eq. (87): no mean contact radius found (load group mu too large?)")
+    while np.any(excess(lo) > 0):
+        lo = np.where(excess(lo) > 0, lo - 2.0, lo)
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        above = excess(mid) > 0
+        lo, hi = np.where(above, lo, mid), np.where(above, mid, hi)
+    return np.exp(0.5 * (lo + hi))
+
+
+def newton_at_frequency(omega_bar: float, p: CompliantFixation, law: RateLaw, guess: tuple[float, float]) -> tuple[float, float]:
+    """Newton in (ln abar_m, ln Abar) at fixed omega_bar from ``guess`` = (abar_m, Abar), to 1e-13 in the residual.
+
+    Raises NoRootError when Newton does not converge.
+    """
+    s = math.log(omega_bar)
+
+    def at_frequency(z: Array) -> Array:
+        return residual(np.column_stack([np.full(len(z), s), z]), p, law)
+
+    z = np.log(np.asarray(guess, dtype=float))
+    for _ in range(40):
+        f = at_frequency(z[None, :])[0]
+        dz = np.linalg.solve(jacobian(at_frequency, z, ContinuationSettings().fd_step), -f)
+        z = z + np.clip(dz, -2.0, 2.0)
+        if np.max(np.abs(f)) < 1e-13 and np.max(np.abs(dz)) < 1e-10:
+            return float(np.exp(z[0])), float(np.exp(z[1]))
+    raise NoRootError(f"Eqs. (87), (90): Newton did not converge at omega_bar = {omega_bar:.6g} from {guess}")
+
+
+def _roots_by_scan(
+    omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array, abar_m_of_j0: Callable[[Array], Array]
+) -> list[tuple[float, float]]:
+    """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)): sign changes on the
+    grid ``log_abar`` polished by Brent's method. Roots closer than the grid spacing can be missed."""
+    s = math.log(omega_bar)
+
+    def g(z: Array) -> Array:
+        abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(z), law)[0])
+        return residual(np.column_stack([np.full(len(z), s), np.log(abar_m), z]), p, law)[:, 1]
+
+    values = g(log_abar)
+    roots = []
+    for k in np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0):
+        z = brentq(lambda y: float(g(np.array([y]))[0]), log_abar[k], log_abar[k + 1], xtol=1e-14, rtol=1e-15)
+        roots.append((float(abar_m_of_j0(j_integrals_for_law(np.array([math.exp(z)]), law)[0])[0]), math.exp(z)))
+    return roots
+
+
+def solutions_by_scan(omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array) -> list[tuple[float, float]]:
+    """All solutions (abar_m, Abar) of Eqs. (87), (90) at one omega_bar with Abar in the scanned range.
+
+    Independent of the continuation: Eq. (87) gives abar_m(Abar) uniquely, so Eq. (90) becomes a
+    scalar equation in ln Abar.
+    """
+    return _roots_by_scan(omega_bar, p, law, log_abar, lambda j0: abar_m_from_mean_balance(j0, p))
+
+
+def pulloff_by_scan(omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array) -> list[tuple[float, float]]:
+    """Refined pull-off of the compliantly fixed indenter: Eq. (90) at a_m = a_cr (Eq. 61), all roots.
+
+    The compliant counterpart of Eq. (106) (which it becomes as kappa -> infinity) and the refined
+    counterpart of Eqs. (67)-(69); P_cr/P_cr^JKR = J0(Abar_cr)^2 (Eq. 71) for each root.
+    """
+    return _roots_by_scan(omega_bar, p, law, log_abar, pulloff_closure)
+
+
+# --- The response curve, Fig. 5 --------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ResponseCurve:
+    """The traced solution curve: pieces (split at the exact anti-resonance) and their folds."""
+
+    parameters: CompliantFixation
+    pieces: tuple[Curve, ...]  # points x = (ln omega_bar, ln abar_m, ln Abar) in trace order
+    folds: Array  # (k, 3) fold points in x
+    omega_bar_range: tuple[float, float]
+
+    def a_over_am(self, x: Array) -> Array:
+        """A/a_m along points x (corrected Eq. 98)."""
+        return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), self.parameters.chi0, np.exp(x[:, 0]) / self.parameters.nu0)
+
+    def count_at(self, omega_bar: float) -> int:
+        """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
+        return sum(len(crossings(piece, math.log(omega_bar))) for piece in self.pieces)
+
+    def solutions_at(self, omega_bar: float, law: RateLaw) -> list[tuple[float, float]]:
+        """Every solution (abar_m, Abar) on the traced curve at ``omega_bar``, polished by Newton."""
+        s = math.log(omega_bar)
+        return [newton_at_frequency(omega_bar, self.parameters, law, (math.exp(g[1]), math.exp(g[2])))
+                for piece in self.pieces for g in crossings(piece, s)]
+
+
+def _start(omega_bar: float, p: CompliantFixation, law: RateLaw) -> Array:
+    roots = solutions_by_scan(omega_bar, p, law, np.linspace(-60.0, 60.0, 2401))
+    if len(roots) != 1:
+        raise NoRootError(f"Eqs. (87), (90): expected one solution at the end omega_bar = {omega_bar:.6g} to start from, found {len(roots)}")
+    return np.array([math.log(omega_bar), math.log(roots[0][0]), math.log(roots[0][1])])
+
+
+def trace_response_curve(
+    p: CompliantFixation, law: RateLaw, omega_bar_range: tuple[float, float] = (0.1, 50.0),
+    settings: ContinuationSettings = ContinuationSettings(),
+) -> ResponseCurve:
+    """Trace Eqs. (87), (90) over ``omega_bar_range`` by pseudo-arclength continuation (Fig. 5).
+
+    One piece from the low end to the high end when zeta > 0; two pieces when zeta = 0, each from
+    one end towards omega_bar = 1, ended when A/a_m < NOTCH_FLOOR (the exact solution Abar = 0 at
+    omega_bar = 1 is added by the caller). Folds are located on every piece.
+    """
+    lo, hi = (math.log(v) for v in omega_bar_range)
+    res = lambda x: residual(x, p, law)  # noqa: E731
+
+    def a_over_am(x: Array) -> float:
+        return float(contact_radius_amplitude_ratio(math.exp(x[2]), math.exp(x[1]), p.chi0, math.exp(x[0]) / p.nu0))
+
+    ends = [(lo, 1.0)] + ([(hi, -1.0)] if p.anti_resonance_is_exact and lo < 0.0 < hi else [])
+    pieces = []
+    for s0, sign in ends:
+        start = _start(math.exp(s0), p, law)
+        in_range = (lambda x: x[0] >= hi) if sign > 0 else (lambda x: x[0] <= lo)  # noqa: E731
+        if len(ends) == 2:
+            stop = lambda x: a_over_am(x) < NOTCH_FLOOR or (x[0] - 0.0) * sign > 0  # noqa: E731
+        else:
+            stop = in_range
+        curve = trace(res, start, np.array([sign, 0.0, 0.0]), stop, settings)
+        pieces.append(_clip(curve, p, law, lo, hi))
+    folds = np.concatenate([locate_folds(res, c, settings) for c in pieces]) if pieces else np.empty((0, 3))
+    return ResponseCurve(p, tuple(pieces), folds, omega_bar_range)
+
+
+def _clip(curve: Curve, p: CompliantFixation, law: RateLaw, lo: float, hi: float) -> Curve:
+    """Replace a last point beyond the range by the solution exactly at the range's end."""
+    last = curve.points[-1]
+    if lo <= last[0] <= hi:
+        return curve
+    edge = hi if last[0] > hi else lo
+    abar_m, abar = newton_at_frequency(math.exp(edge), p, law, (math.exp(last[1]), math.exp(last[2])))
+    points = curve.points.copy()
+    points[-1] = [edge, math.log(abar_m), math.log(abar)]
+    return Curve(points, curve.tangents, curve.residuals)

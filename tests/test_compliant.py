@@ -1,0 +1,197 @@
+"""Compliant fixation, Fig. 5 (Sec. 3.5.3): Eqs. (87), (90)-(96) and their continuation.
+
+Independent references: a curve with known folds (the unit circle) for the continuation code;
+the scalar root scan of Eq. (90) along the unique abar_m(Abar) of Eq. (87) (no continuation) for
+the number of solutions; the printed polynomial forms of Eqs. (87) and (90); the rigid-fixation
+solvers of Figs. 6 and 7 (kappa -> infinity); the free-indenter Eqs. (57)-(59) solved as printed
+(kappa -> 0); the exact anti-resonance of Appendix B (zeta = 0).
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+from scipy.optimize import root
+from mpmath_reference import j_integrals_mp
+
+from vibroadhesion import figures
+from vibroadhesion.compliant import (
+    NOTCH_FLOOR,
+    CompliantFixation,
+    newton_at_frequency,
+    pulloff_by_scan,
+    residual,
+    residual_linear,
+    solutions_by_scan,
+    static_abar_m,
+    trace_response_curve,
+)
+from vibroadhesion.continuation import Curve, crossings, locate_folds, trace
+from vibroadhesion.integrals import j_integrals
+from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.refined import nominal_point_contact, pulloff_refined
+
+CHI0, ETA1, NU0 = 2.589e-2, 3.883e-4, 1.227e-5  # paper, Sec. 3.5.3 (Fig. 5 caption)
+LAW = GentSchultz(0.531)
+SCAN = np.linspace(-40.0, 40.0, 4001)  # ln Abar grid of the independent root scan
+FOLDING = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.0)  # the folded curve of Fig. 5
+
+
+# ----------------------------------------------------------------- continuation on a known curve
+
+
+def test_continuation_follows_the_unit_circle_through_both_folds_of_x() -> None:
+    """F(x, y) = x^2 + y^2 - 1 with parameter x: folds at (1, 0) and (-1, 0). Starting at (0, -1)
+    towards +x the trace passes both and comes back; folds located to 1e-12, points on the circle to 1e-12."""
+    circle = lambda p: (p[:, 0] ** 2 + p[:, 1] ** 2 - 1.0)[:, None]  # noqa: E731
+    visited_upper_half = []
+
+    def stop(x: np.ndarray) -> bool:  # back in the starting quadrant after a full turn
+        visited_upper_half.append(x[1] > 0)
+        return any(visited_upper_half) and x[0] > 0 and x[1] < 0
+
+    curve = trace(circle, np.array([0.0, -1.0]), np.array([1.0, 0.0]), stop)
+    assert np.max(np.abs(np.hypot(curve.points[:, 0], curve.points[:, 1]) - 1)) < 1e-12
+    folds = locate_folds(circle, curve)
+    assert len(folds) == 2
+    assert sorted(np.round(folds[:, 0], 12)) == [-1.0, 1.0] and np.max(np.abs(folds[:, 1])) < 1e-6
+    # x = 0.5 is crossed on both halves (y = +-sqrt(3)/2; the chord interpolation is within the step^2)
+    ys = sorted(g[1] for g in crossings(curve, 0.5))
+    assert len(ys) == 2 and abs(ys[0] + math.sqrt(3) / 2) < 0.02 and abs(ys[1] - math.sqrt(3) / 2) < 0.02
+
+
+# ----------------------------------------------------------------- the folded curve
+
+
+@pytest.fixture(scope="module")
+def folded() -> tuple:
+    return trace_response_curve(FOLDING, LAW)
+
+
+def test_continuation_passes_both_folds_and_reaches_the_end_of_the_range(folded) -> None:
+    """kappa = 1e-3, zeta = 0 folds near omega_bar = 10.6 and 11.1. The trace locates two folds
+    (the Jacobian in (ln abar_m, ln Abar) is singular there: smallest/largest singular value < 1e-6),
+    and continues to omega_bar = 50 on the upper piece."""
+    assert len(folded.folds) == 2
+    lo, hi = sorted(np.exp(folded.folds[:, 0]))
+    assert 10.0 < lo < hi < 12.0
+    upper = folded.pieces[-1]
+    assert math.isclose(math.exp(upper.points[0, 0]), 50.0, rel_tol=1e-12)  # the upper piece starts at the top
+    for fold in folded.folds:
+        from vibroadhesion.continuation import jacobian
+
+        jac = jacobian(lambda x: residual(x, FOLDING, LAW), fold, 1e-7)[:, 1:]
+        sv = np.linalg.svd(jac, compute_uv=False)
+        assert sv[-1] / sv[0] < 1e-6, sv
+
+
+def test_three_solutions_between_the_folds_each_satisfying_eqs_87_and_90_to_1e10(folded) -> None:
+    """Between the folds the curve crosses omega_bar three times. Each crossing, polished by Newton,
+    satisfies the printed polynomial Eqs. (87) and (90) to 1e-10 relative, and the three are the
+    three roots found independently by the scalar scan (no continuation) to 1e-9."""
+    lo, hi = sorted(np.exp(folded.folds[:, 0]))
+    for omega_bar in (lo + 0.05 * (hi - lo), 0.5 * (lo + hi), hi - 0.05 * (hi - lo)):
+        on_curve = sorted(folded.solutions_at(omega_bar, LAW), key=lambda s: s[1])
+        assert len(on_curve) == 3
+        for abar_m, abar in on_curve:
+            r87, r90 = residual_linear(omega_bar, abar_m, abar, FOLDING, LAW)
+            assert abs(r87) < 1e-10 and abs(r90) < 1e-10, (omega_bar, abar_m, abar, r87, r90)
+        scanned = sorted(solutions_by_scan(omega_bar, FOLDING, LAW, SCAN), key=lambda s: s[1])
+        assert len(scanned) == 3
+        assert np.allclose(np.array(on_curve), np.array(scanned), rtol=1e-9, atol=0)
+    for omega_bar in (0.5 * lo, 2.0 * hi):  # outside the fold interval: one solution, both ways
+        assert len(folded.solutions_at(omega_bar, LAW)) == 1 == len(solutions_by_scan(omega_bar, FOLDING, LAW, SCAN))
+
+
+# ----------------------------------------------------------------- zeta = 0, omega_bar = 1
+
+
+def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the_notch(folded) -> None:
+    """Appendix B: at omega_bar = 1 and zeta = 0 the forcing vanishes and Abar = 0 exactly. The two
+    pieces run from each end of the range into the notch, ending when A/a_m < NOTCH_FLOOR, from below
+    and from above omega_bar = 1; the approach is to the static contact radius (Eq. 82)."""
+    lower, upper = folded.pieces
+    for piece, side in ((lower, -1.0), (upper, 1.0)):
+        end = piece.points[-1]
+        assert folded.a_over_am(end[None, :])[0] < NOTCH_FLOOR
+        assert side * end[0] > 0 and abs(end[0]) < 1e-2
+        assert abs(math.exp(end[1]) / static_abar_m(FOLDING) - 1) < 1e-6
+
+
+def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -> None:
+    """Just off omega_bar = 1 (1 +- 1e-9) Newton from the static state converges to Abar < 1e-12 and
+    abar_m within 1e-9 of the static root of Eq. (82); the Fig. 5 table carries the exact point."""
+    static = static_abar_m(FOLDING)
+    for omega_bar in (1 - 1e-9, 1 + 1e-9):
+        abar_m, abar = newton_at_frequency(omega_bar, FOLDING, LAW, (static, 1e-14))
+        assert abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
+    curves, _, _ = figures.fig5_tables(FOLDING, [1e-3], [0.0], 0.531, {}, (0.1, 50.0), 20)
+    exact = curves[curves["branch"] == "anti-resonance"]
+    assert len(exact) == 1 and exact["omega_bar"].iloc[0] == 1.0 and exact["Abar"].iloc[0] == 0.0
+    assert exact["abar_m"].iloc[0] == static
+
+
+def test_static_contact_radius_solves_eq_82() -> None:
+    """Eq. (82) in a_0/R (not the a_o-scaled Eq. 87 the code uses), mu = 1e-4, kappa = 0.01, in mpmath: 1e-12."""
+    p = CompliantFixation(CHI0, ETA1, NU0, kappa=0.01, mu=1e-4, zeta=0.0)
+    r = mp.mpf(static_abar_m(p)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
+    lhs = r**2 * (mp.mpf(4) / 3 * r + mp.mpf(p.kappa)) - mp.sqrt(2) * mp.mpf(CHI0) ** 1.5 / 3 * mp.sqrt(r) * (2 * r + mp.mpf(p.kappa))
+    assert abs(float(lhs / mp.mpf(p.mu) - 1)) < 1e-12
+
+
+# ----------------------------------------------------------------- kappa -> infinity: Figs. 6 and 7
+
+
+@pytest.mark.parametrize("zeta", [0.0, 0.05])
+@pytest.mark.parametrize("omega_bar", [0.5, 17.85, 40.0])
+def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, zeta: float) -> None:
+    """kappa = 1e12: Eq. (87) -> abar_m^(3/2) = J0 (Eq. 123) and Eq. (90) -> Eq. (100), so the solution is
+    Fig. 6's nominal point contact at omega_check = omega_bar/nu0; with a_m = a_cr it is Fig. 7's Eq. (106).
+    The differences are O(1/kappa): tolerance 1e-6."""
+    p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e12, mu=0.0, zeta=zeta)
+    (abar_m, abar), = solutions_by_scan(omega_bar, p, LAW, SCAN)
+    rigid = nominal_point_contact(ETA1, omega_bar / NU0, CHI0, LAW)
+    assert abs(abar / float(rigid.abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
+    (_, abar_cr), = pulloff_by_scan(omega_bar, p, LAW, SCAN)
+    assert abs(abar_cr / float(pulloff_refined(ETA1, CHI0, omega_bar / NU0, LAW).abar_cr) - 1) < 1e-6
+
+
+# ----------------------------------------------------------------- kappa -> 0: free indenter, Eqs. (57)-(59)
+
+
+def free_indenter(beta: float, mu: float, n: float, start: tuple[float, float]) -> tuple[float, float]:
+    """Eqs. (57)-(59) with k = c = 0, in a_o units: with c_o = a_o/R and beta = m omega^2/(E* R),
+    Eq. (58) (erratum: the square root does not cover Jc1) gives |Xi_c|/(E* R^2) = c_o^2 abar_m^(1/2) |Jc1| |beta - 2 c_o abar_m|
+    = beta eta1 (Eq. 57), and Eq. (59), P_m = m g, reads c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] = mu / c_o^2.
+    Solved with scipy's hybrid root finder on these printed equations (J-integrals checked against
+    mpmath in test_integrals), independently of the compliant-fixation code; ``start`` (abar_m, Abar) is
+    only the initial guess."""
+    c = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0
+
+    def equations(v: np.ndarray) -> list[float]:
+        am, a = math.exp(v[0]), math.exp(v[1])
+        j0, jc1, _ = (float(x[0]) for x in j_integrals(np.array([a]), n))
+        return [math.log(c**2 * math.sqrt(am) * abs(jc1) * abs(beta - 2 * c * am)) - math.log(beta * ETA1),
+                c**3 * ((4 / 3) * am**3 - 2 * j0 * am**1.5) / mu - 1.0]
+
+    sol = root(equations, np.log(start), method="hybr", tol=1e-14)
+    assert max(abs(r) for r in equations(sol.x)) < 1e-12, sol.message
+    return math.exp(sol.x[0]), math.exp(sol.x[1])
+
+
+@pytest.mark.parametrize("beta", [1e-2, 1e-1])
+def test_soft_fixation_reproduces_the_free_indenter_eqs_57_to_59(beta: float) -> None:
+    """kappa = 1e-10 at omega_bar = sqrt(beta/kappa) (so m omega^2 = beta E* R stays fixed), zeta = 0, mu = 1e-5:
+    the refined compliant solution tends to the leading-order free indenter. Differences: O(kappa/beta) from
+    k, O(1/omega_check) from the refined terms (omega_check ~ 1e9 here): tolerance 1e-6."""
+    kappa, mu = 1e-10, 1e-5
+    p = CompliantFixation(CHI0, ETA1, NU0, kappa=kappa, mu=mu, zeta=0.0)
+    omega_bar = math.sqrt(beta / kappa)
+    found = solutions_by_scan(omega_bar, p, LAW, SCAN)
+    assert len(found) == 1
+    abar_m, abar = found[0]
+    reference_am, reference_abar = free_indenter(beta, mu, 0.531, (1.1 * abar_m, 0.9 * abar))
+    assert abs(abar_m / reference_am - 1) < 1e-6 and abs(abar / reference_abar - 1) < 1e-6, (found, reference_am, reference_abar)
