@@ -272,7 +272,7 @@ def fig5_tables(
 def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> plt.Figure:
     """A/a_m against omega_bar, one panel per kappa, one colour per zeta; folds and test frequencies marked."""
     kappas = sorted(curves["kappa"].unique())
-    fig, axes = plt.subplots(1, len(kappas), figsize=(4.6 * len(kappas), 3.9), constrained_layout=True, squeeze=False)
+    fig, axes = plt.subplots(1, len(kappas), figsize=(4.6 * len(kappas), 4.6), layout="constrained", squeeze=False)
     for ax, kappa in zip(axes[0], kappas):
         for k, (zeta, rows) in enumerate(curves[curves["kappa"] == kappa].groupby("zeta", sort=True)):
             for j, (branch, seg) in enumerate(rows[rows["A_over_am"] > 0].groupby("branch", sort=False)):
@@ -289,7 +289,8 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
         ax.axvline(1.0, color="0.6", lw=0.6, ls=":")
         ax.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$", ylabel=r"$A/a_m$",
                title=rf"$\kappa$ = {kappa:g}")
-        ax.set_ylim(1e-7, 10.0)
+        ax.set_ylim(1e-10, 10.0)
         shade_amplitude_regions(ax)
-    axes[0][0].legend(fontsize=8, loc="lower left")
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside lower center", ncol=4, fontsize=8)
     return fig
