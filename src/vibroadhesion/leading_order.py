@@ -1,7 +1,9 @@
-"""Leading-order asymptotic model (Sec. 3.1–3.2): quasi-static pull-off estimate.
+"""Leading-order asymptotic model (Sec. 3.1–3.2): the steady state for any fixation of the indenter
+and the quasi-static pull-off estimate.
 
-Detachment is assumed when the mean contact radius reaches the JKR critical value for the
-effective work of adhesion, a_m = a_cr (Eqs. 60–61). For rigid fixation Eq. (55) then reads
+Pull-off estimate (Sec. 3.2). Detachment is assumed when the mean contact radius reaches the JKR
+critical value for the effective work of adhesion, a_m = a_cr (Eqs. 60–61). For rigid fixation
+Eq. (55) then reads
 
     J0(Abar)^(1/3) |Jc1(Abar)| = 3 eta1 / chi0^2,                                  Eq. (72)
 
@@ -15,18 +17,59 @@ u-derivatives u/(2(1+u)^{3/2}) and (2+u)/(2(1+u)^{3/2}) are positive; u increase
 so J0 and |Jc1| are strictly increasing, the left-hand side of Eq. (72) rises strictly from 0
 (Abar = 0) to infinity, and Eq. (72) has exactly one root for every eta1 > 0. The tests check
 the monotonicity on a dense grid for n in [0.05, 4].
+
+Steady state for any fixation (Sec. 3.1). The paper prints the system (Eqs. 43, 50–54) but not its
+closed form; derivation:
+
+Harmonics. At leading order the indentation and force oscillate in phase with cos(omega t')
+(Eqs. 47–48): delta_c = -sqrt(2 pi w0 a_m/E*) Jc1, P_c = -sqrt(8 pi E* w0 a_m^3) Jc1, and
+delta_s = P_s = 0. Since sqrt(8 pi E* w0 a_m^3) = 2 E* a_m sqrt(2 pi w0 a_m/E*), P_c = K delta_c
+with the contact stiffness K = 2 E* a_m (Eq. C.5). Eqs. (41)–(42) then give (Eqs. 50–51)
+
+    Xi_c = (k - m omega^2 + K) delta_c,    Xi_s = -c omega delta_c,
+
+and Eq. (43), Xi_c^2 + Xi_s^2 = [(k - m omega^2)^2 + c^2 omega^2] h1^2 (printed "Xi_c^2 + Xi_c^2", a
+misprint: docs/errata.md), reads, with the complex dynamic stiffness of the fixation
+D = k - m omega^2 + i c omega,
+
+    |delta_c| |D + K| = |D| h1,                                                      (I)
+
+the base-excited two-spring system of Appendix B (Eq. B.3, there with c = 0): the indenter is held
+by the fixation D to the frame and by the contact spring K to the moving base.
+
+Dimensionless form. With a_o = c_o R, c_o = 2^(1/3) 3^(-2/3) chi0 (Eq. 86), abar_m = a_m/a_o
+and 2 pi w0/E* = a_o^3/R^2: |delta_c|/R = c_o^2 abar_m^(1/2) |Jc1| and K/(E* R) = 2 c_o abar_m.
+With d = D/(E* R) (= kappa (1 - omega_bar^2 + 2 i zeta omega_bar) for a spring-mass-dashpot,
+Eqs. 65–66), (I) divided by E* R^2 is
+
+    c_o^2 abar_m^(1/2) |Jc1(Abar)| = eta1 |d| / |d + 2 c_o abar_m|.                   (II)
+
+Mean balance. Eq. (15) times k, k (hhat - h0) + m g = P_m + k delta_m, with P_m, delta_m of
+Eqs. (52)–(53). Divided by E* R^2 c_o^2, using P_m/(E* R^2) = c_o^3 [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)]
+and R delta_m/a_o^2 = abar_m^2 - J0 abar_m^(1/2) =: deltabar_m (Eq. 86):
+
+    c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] + kappa deltabar_m = mu/c_o^2 + kappa deltabar_base,   (III)
+
+with deltabar_base = (hhat - h0) R/a_o^2; the load group of the right-hand side, times c_o^2,
+is lambda = mu + kappa (hhat - h0)/R. With h0 = hhat, (III) is Eq. (87) term by term; with J0 = 1
+and a_m/R = c_o abar_m it is Eq. (82). Limits: kappa -> inf (d -> inf) gives Eq. (55) from (II)
+and deltabar_m = deltabar_base, Eq. (56); kappa = 0 with d = -m omega^2/(E* R) gives Eq. (57)–(58)
+from (II) and P_m = m g, Eq. (59).
 """
 
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import minimize_scalar
 
 from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.ratelaw import RateLaw
-from vibroadhesion.roots import solve_log_increasing
+from vibroadhesion.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.roots import NoRootError, solve_log_increasing
 
 
 class PulloffEstimate(NamedTuple):
@@ -66,3 +109,340 @@ def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw) -> PulloffEstima
     eta1 = np.asarray(eta1, dtype=float)
     abar = np.vectorize(lambda e: critical_abar_leading(e, chi0, law), otypes=[float])(eta1)
     return PulloffEstimate.from_abar(abar, law)
+
+
+# --- Steady state for any fixation of the indenter, Sec. 3.1 (Eqs. 43, 47–59) -------------------
+
+
+def nominal_radius_ratio(chi0: float) -> float:
+    """c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, the JKR radius of the nominal point contact over R (Eqs. 64, 86)."""
+    return 2.0 ** (1 / 3) * 3.0 ** (-2 / 3) * chi0
+
+
+@dataclass(frozen=True)
+class Fixation:
+    """Fixation element of the indenter in the units of Eq. (66) (stiffnesses over E* R).
+
+    ``kappa`` = k/(E* R) is the static stiffness that enters the mean balance (Eq. 54);
+    ``dynamic_stiffness`` = d = (k - m omega^2 + i c omega)/(E* R) is the complex dynamic stiffness
+    at the excitation frequency that enters the amplitude equation (Eq. 43). A rigid fixation has
+    kappa = inf and d = inf. Build it with :meth:`rigid`, :meth:`free` or :meth:`spring_mass_dashpot`.
+    """
+
+    kappa: float
+    dynamic_stiffness: complex
+
+    def __post_init__(self) -> None:
+        d = complex(self.dynamic_stiffness)
+        if math.isnan(self.kappa) or self.kappa < 0:
+            raise ValueError(f"kappa must be a non-negative number or inf, got {self.kappa!r}")
+        if math.isinf(self.kappa) != (math.isinf(d.real) or math.isinf(d.imag)):
+            raise ValueError("the dynamic stiffness is infinite exactly when the fixation is rigid (kappa = inf)")
+        if not self.is_rigid and (math.isnan(d.real) or math.isnan(d.imag) or d.imag < 0 or d.real > self.kappa):
+            raise ValueError(
+                "d = (k - m omega^2 + i c omega)/(E* R) needs Re d <= kappa (m >= 0) and Im d >= 0 (c >= 0), "
+                f"got d = {d!r}"
+            )
+
+    @classmethod
+    def rigid(cls) -> "Fixation":
+        """Rigid fixation, k/(E* R) -> infinity (Sec. 3.1.2)."""
+        return cls(math.inf, complex(math.inf, 0.0))
+
+    @classmethod
+    def free(cls, beta: float) -> "Fixation":
+        """Free indenter under its dead weight, k = c = 0 (Sec. 3.1.3): d = -beta, beta = m omega^2/(E* R) > 0."""
+        if not (math.isfinite(beta) and beta > 0):
+            raise ValueError(f"beta = m omega^2/(E* R) must be a positive number, got {beta!r}")
+        return cls(0.0, complex(-beta, 0.0))
+
+    @classmethod
+    def spring_mass_dashpot(cls, kappa: float, omega_bar: float, zeta: float) -> "Fixation":
+        """Spring k, mass m, dashpot c: d = kappa (1 - omega_bar^2 + 2 i zeta omega_bar) (Eqs. 65–66).
+
+        omega_bar = 1, zeta = 0 gives d = 0 exactly: the anti-resonance of Appendix B.
+        """
+        if not (math.isfinite(kappa) and kappa > 0):
+            raise ValueError(f"kappa must be a positive number, got {kappa!r}")
+        if not (math.isfinite(omega_bar) and omega_bar > 0 and math.isfinite(zeta) and zeta >= 0):
+            raise ValueError(f"need omega_bar > 0 and zeta >= 0, got omega_bar = {omega_bar!r}, zeta = {zeta!r}")
+        return cls(kappa, kappa * complex(1.0 - omega_bar**2, 2.0 * zeta * omega_bar))
+
+    @property
+    def is_rigid(self) -> bool:
+        return math.isinf(self.kappa)
+
+    def contact_resonance(self, chi0: float) -> float | None:
+        """abar_m at which d + 2 c_o abar_m = 0 (pole of Eq. II: the mass resonates on fixation plus contact).
+
+        Exists only for a real negative d (no damping, above the fixation's own resonance, or a
+        free indenter); there |delta_c| = infinity, no steady state. ``None`` otherwise.
+        """
+        d = complex(self.dynamic_stiffness)
+        if self.is_rigid or d.imag != 0 or d.real >= 0:
+            return None
+        return -d.real / (2.0 * nominal_radius_ratio(chi0))
+
+
+def fixation_transmissibility(abar_m: float, fixation: Fixation, chi0: float) -> float:
+    """|delta_c| / h1 = |d| / |d + 2 c_o abar_m|: Eq. (I) of the module docstring (Eq. B.3 with damping).
+
+    1 for rigid fixation, infinite at the contact resonance (:meth:`Fixation.contact_resonance`), zero at d = 0.
+    """
+    if fixation.is_rigid:
+        return 1.0
+    d = complex(fixation.dynamic_stiffness)
+    denominator = abs(d + 2.0 * nominal_radius_ratio(chi0) * abar_m)
+    return math.inf if denominator == 0 else abs(d) / denominator
+
+
+def indentation_amplitude(abar_m: ArrayLike, jc1: ArrayLike, chi0: float) -> NDArray[np.float64]:
+    """|delta_c| / R = c_o^2 abar_m^(1/2) |Jc1| (Eq. 47 with 2 pi w0/E* = a_o^3/R^2; = Eq. 93)."""
+    return nominal_radius_ratio(chi0) ** 2 * np.sqrt(np.asarray(abar_m, dtype=float)) * np.abs(jc1)
+
+
+def mean_force_over_pulloff(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
+    """P_m / |P_JKR| = (4/3) [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)], tensile negative (Eqs. 52, 71).
+
+    From Eq. (52) with sqrt(8 pi w0 E* a_m^3) = 2 E* a_o^(3/2) a_m^(3/2)/R and
+    |P_JKR| = (3/2) pi w0 R = (3/4) E* a_o^3/R. It is -1 at the JKR pull-off, J0 = 1 and
+    abar_m^(3/2) = 3/4.
+    """
+    abar_m = np.asarray(abar_m, dtype=float)
+    return (4.0 / 3.0) * ((4.0 / 3.0) * abar_m**3 - 2.0 * np.asarray(j0) * abar_m**1.5)
+
+
+def mean_indentation(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
+    """deltabar_m = R delta_m / a_o^2 = abar_m^2 - J0 abar_m^(1/2) (Eqs. 53, 86)."""
+    abar_m = np.asarray(abar_m, dtype=float)
+    return abar_m**2 - np.asarray(j0) * np.sqrt(abar_m)
+
+
+def internal_variable(abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz) -> float:
+    """Abar on the amplitude equation (II) at a given abar_m: the root of |Jc1(Abar)| = target,
+
+        target = eta1 |d| / (c_o^2 abar_m^(1/2) |d + 2 c_o abar_m|)
+
+    unique because |Jc1| rises strictly from 0 to infinity (module docstring). eta1 = 0 or d = 0
+    (anti-resonance, Appendix B) give Abar = 0 exactly; at the contact resonance the amplitude is
+    unbounded and :class:`NoRootError` is raised.
+    """
+    if not (abar_m > 0 and math.isfinite(abar_m)):
+        raise ValueError(f"abar_m must be a positive number, got {abar_m!r}")
+    if eta1 < 0 or not math.isfinite(eta1):
+        raise ValueError(f"eta1 must be finite and non-negative, got {eta1!r}")
+    transmissibility = fixation_transmissibility(abar_m, fixation, chi0)
+    if math.isinf(transmissibility):
+        raise NoRootError(
+            f"Eq. (43) at abar_m = {abar_m:.6g}: contact resonance (d + 2 c_o abar_m = 0), amplitude unbounded"
+        )
+    if eta1 == 0 or transmissibility == 0:
+        return 0.0
+    log_target = math.log(eta1 * transmissibility) - math.log(float(indentation_amplitude(abar_m, 1.0, chi0)))
+    return solve_log_increasing(
+        lambda z: float(np.log(np.abs(j_integrals_for_law(math.exp(z), law)[1]))) - log_target,
+        what=f"Eq. (43) at abar_m = {abar_m:.6g}, eta1 = {eta1:.6g}",
+    )
+
+
+def mean_balance_residual(
+    abar_m: float, j0: float, fixation: Fixation, chi0: float, mu: float, base_offset: float
+) -> float:
+    """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - deltabar_base (Eq. 56).
+
+    ``base_offset`` = (hhat - h0) R / a_o^2 (positive: base pushed towards the indenter); for a
+    rigid fixation it is the imposed mean indentation, and ``mu`` (carried by the fixation) drops out.
+    """
+    deltabar_m = float(mean_indentation(abar_m, j0))
+    if fixation.is_rigid:
+        return deltabar_m - base_offset
+    c_o = nominal_radius_ratio(chi0)
+    force = 0.75 * float(mean_force_over_pulloff(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
+    return c_o * force + fixation.kappa * deltabar_m - load_group(mu, base_offset, fixation.kappa, chi0) / c_o**2
+
+
+def load_group(mu: float, base_offset: float, kappa: float, chi0: float) -> float:
+    """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 deltabar_base: right-hand side of (III) times c_o^2."""
+    return mu + kappa * nominal_radius_ratio(chi0) ** 2 * base_offset
+
+
+class SteadyState(NamedTuple):
+    """One leading-order steady state (Sec. 3.1)."""
+
+    abar_m: float  # a_m / a_o, Eq. (86)
+    abar: float  # internal variable Abar = omega A / v0, Eq. (45)
+    j0: float  # J0(Abar), Eq. (28)
+    w_eff_ratio: float  # w_eff / w0 = J0^2, Eq. (49)
+    a_over_am: float  # A / a_m (docs/errata.md E1); 0 for omega_check = inf
+    pm_over_pjkr: float  # P_m / |P_JKR|, tensile negative (Eqs. 52, 71)
+    deltabar_m: float  # R delta_m / a_o^2 (Eqs. 53, 86)
+    stable: bool  # mean balance residual increases through the root (see steady_states)
+
+
+#: Step of the scan in ln abar_m, and the bound on the refinement towards a contact resonance.
+SCAN_STEP = 0.05
+_RESONANCE_REFINEMENTS = 60
+
+
+def steady_states(
+    eta1: float,
+    fixation: Fixation,
+    chi0: float,
+    law: GentSchultz,
+    *,
+    mu: float = 0.0,
+    base_offset: float = 0.0,
+    omega_check: float = math.inf,
+    abar_min: float = 1e-4,
+) -> tuple[SteadyState, ...]:
+    """All leading-order steady states with abar_m >= ``abar_min``, sorted by abar_m (Sec. 3.1).
+
+    Solves the amplitude equation (II) and the mean balance (III) (derivation in the module
+    docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation, chi0 (Eq. 64), the
+    Gent–Schultz law, the weight mu = m g/(E* R^2) (Eq. 81), the base offset
+    (hhat - h0) R/a_o^2 (load group ``load_group``) and omega_check = omega R/v0 (Eq. 105; only
+    for A/a_m). Raises :class:`NoRootError` if there is none (e.g. a tensile load beyond pull-off).
+
+    Method. For given abar_m, (II) fixes Abar uniquely (:func:`internal_variable`), so the
+    solutions are the roots of the one-variable residual F(abar_m) of (III) along that curve. F is
+    scanned on a grid of step ``SCAN_STEP`` in ln abar_m; each sign change is polished by Brent's
+    method, and each interior extremum of |F| without a sign change is maximised to catch two
+    roots inside one cell. Where d is real and negative, (II) has a pole at the contact resonance
+    (:meth:`Fixation.contact_resonance`) where Abar and J0 -> infinity, so F -> -infinity: the
+    scan is split there and refined geometrically towards it until F < 0 and decreasing.
+
+    End of the scan (a proof, not a cut-off). Beyond abar_turn = max(0, -Re d/(2 c_o)) (0 for rigid
+    fixation) the target of (II) decreases strictly with abar_m, since
+    d ln|d + 2 c_o x|^2/dx = 4 c_o (Re d + 2 c_o x)/|d + 2 c_o x|^2 >= 0 there, so Abar and J0 do not
+    increase. Then d/dx [(4/3) x^3 - 2 J0 x^(3/2)] >= x^(1/2) (4 x^(3/2) - 3 J0) and
+    d/dx [x^2 - J0 x^(1/2)] >= x^(-1/2) (2 x^(3/2) - J0/2), both positive once x^(3/2) >= (3/4) J0,
+    a condition that, x^(3/2)/J0 rising, persists. So F increases strictly beyond the first grid
+    point past abar_turn where x^(3/2) >= (3/4) J0, and from there at most one root remains; it
+    exists iff F < 0 there and is bracketed by doubling the step. Below ``abar_min`` (a_m far
+    below the JKR scale a_o, where with vibration Abar -> infinity) roots are not sought.
+
+    Multiplicity and stability. In the static limit (J0 = 1) (III) is, in s = abar_m^(1/2),
+    (4/3) c_o s^6 + kappa s^4 - 2 c_o s^3 - kappa s - Lambda = 0 with one sign change in the
+    coefficients of its derivative: one minimum, so one root for Lambda >= 0 and two or none for
+    Lambda < 0 (JKR's stable branch and, at the smaller abar_m, its unstable one). With
+    vibration, and near a contact resonance, there can be more, so all are returned. ``stable`` is
+    True when F increases through the root: the mean force-plus-spring balance then restores a
+    perturbed a_m (with the amplitude equation kept satisfied). For J0 = 1 this is the JKR
+    criterion under a compliant machine, dP_m/da_m + k d delta_m/da_m > 0, which is dP_m/da_m > 0 under
+    load control (kappa = 0) and d delta_m/da_m > 0 under displacement control (rigid).
+    """
+    if not isinstance(law, GentSchultz):
+        raise TypeError("steady_states needs the Gent–Schultz law: the scan's end rests on its monotone J0 and |Jc1|")
+    if not (math.isfinite(chi0) and chi0 > 0):
+        raise ValueError(f"chi0 must be a positive number, got {chi0!r}")
+    if not (math.isfinite(mu) and mu >= 0 and math.isfinite(base_offset)):
+        raise ValueError(f"need mu >= 0 and a finite base offset, got mu = {mu!r}, base_offset = {base_offset!r}")
+    if not (math.isfinite(abar_min) and abar_min > 0):
+        raise ValueError(f"abar_min must be a positive number, got {abar_min!r}")
+    if not omega_check > 0:
+        raise ValueError(f"omega_check must be positive, got {omega_check!r}")
+    c_o = nominal_radius_ratio(chi0)
+    vibrating = eta1 > 0 and complex(fixation.dynamic_stiffness) != 0  # else Abar = 0, J0 = 1 throughout
+    resonance = fixation.contact_resonance(chi0) if vibrating else None
+    d = complex(fixation.dynamic_stiffness)
+    abar_turn = max(0.0, -d.real / (2.0 * c_o)) if vibrating and not fixation.is_rigid else 0.0
+
+    def state(z: float) -> tuple[float, float, float]:
+        """(F, Abar, J0) at abar_m = e^z."""
+        abar_m = math.exp(z)
+        abar = internal_variable(abar_m, eta1, fixation, chi0, law)
+        j0 = float(j_integrals_for_law(abar, law)[0])
+        return mean_balance_residual(abar_m, j0, fixation, chi0, mu, base_offset), abar, j0
+
+    def residual(z: float) -> float:
+        return state(z)[0]
+
+    def tail_is_monotone(z: float, j0: float) -> bool:
+        return math.exp(z) > abar_turn and math.exp(1.5 * z) >= 0.75 * j0
+
+    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
+    z_min = math.log(abar_min)
+    z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
+
+    def approach_resonance(side: float) -> list[tuple[float, float]]:
+        """Nodes z_res + side h 2^-j, j = 1, 2, ..., until F < 0 and decreasing towards the pole."""
+        assert z_res is not None
+        nodes: list[tuple[float, float]] = []
+        previous = residual(z_res + side * SCAN_STEP)
+        for j in range(1, _RESONANCE_REFINEMENTS + 1):
+            z = z_res + side * SCAN_STEP * 2.0**-j
+            nodes.append((z, residual(z)))
+            if nodes[-1][1] < min(previous, 0.0):
+                return nodes
+            previous = nodes[-1][1]
+        raise NoRootError(f"{what}: residual does not fall towards the contact resonance abar_m = {resonance:.6g}")
+
+    segments: list[list[tuple[float, float]]] = []  # nodes (z, F), ascending, of each pole-free segment
+    z = z_min
+    if z_res is not None:
+        grid = z_min + SCAN_STEP * np.arange(max(0, math.ceil((z_res - z_min) / SCAN_STEP) - 1))
+        below = [(float(node), residual(float(node))) for node in grid]
+        segments.append([node for node in below + approach_resonance(-1.0) if node[0] >= z_min])
+        z = z_res + SCAN_STEP
+    above = approach_resonance(+1.0)[::-1] if z_res is not None else []
+    while True:
+        f, _, j0 = state(z)
+        above.append((z, f))
+        if tail_is_monotone(z, j0):
+            break
+        z += SCAN_STEP
+    segments.append(above)
+    tail_root_bracket: tuple[float, float] | None = None
+    if above[-1][1] < 0:  # F increases strictly from here on: exactly one more root; bracket it
+        lo, step = above[-1][0], SCAN_STEP
+        while residual(lo + step) < 0:
+            lo, step = lo + step, 2.0 * step
+            if lo > math.log(np.finfo(float).max) / 3:
+                raise NoRootError(f"{what}: mean balance not reached for any representable abar_m")
+        tail_root_bracket = (lo, lo + step)
+
+    def polish(lo: float, hi: float, increasing: bool) -> tuple[float, bool]:
+        """(abar_m, stable) of the root of F in ln abar_m in (lo, hi], F changing sign there."""
+        sign = 1.0 if increasing else -1.0
+        return solve_log_increasing(lambda t: sign * residual(t), what=what, z_start=lo, z_min=lo, z_max=hi), increasing
+
+    roots: list[tuple[float, bool]] = []
+    for nodes in segments:
+        zs = [node[0] for node in nodes]
+        fs = [node[1] for node in nodes]
+        for i in range(len(nodes) - 1):
+            if (fs[i] >= 0) != (fs[i + 1] >= 0):
+                roots.append(polish(zs[i], zs[i + 1], fs[i] < 0))
+            elif 0 < i and (fs[i - 1] >= 0) == (fs[i] >= 0) and abs(fs[i]) < min(abs(fs[i - 1]), abs(fs[i + 1])):
+                # |F| has a discrete minimum without a sign change: two roots may hide in the two cells
+                sign = 1.0 if fs[i] >= 0 else -1.0
+                extremum = minimize_scalar(lambda t: sign * residual(t), bounds=(zs[i - 1], zs[i + 1]),
+                                           method="bounded", options={"xatol": 1e-10})
+                if extremum.fun < 0:
+                    roots.append(polish(zs[i - 1], extremum.x, fs[i] < 0))
+                    roots.append(polish(extremum.x, zs[i + 1], fs[i] >= 0))
+    if tail_root_bracket is not None:
+        roots.append(polish(*tail_root_bracket, True))
+    if not roots:
+        raise NoRootError(
+            f"{what}: no steady state with abar_m >= {abar_min:.3g} (mu = {mu:.6g}, base offset = {base_offset:.6g}); "
+            "a tensile load beyond the vibroadhesive pull-off has none"
+        )
+    from vibroadhesion.refined import contact_radius_amplitude_ratio  # refined imports this module
+
+    states = []
+    for abar_m, stable in sorted(roots):
+        _, abar, j0 = state(math.log(abar_m))
+        states.append(
+            SteadyState(
+                abar_m=abar_m,
+                abar=abar,
+                j0=j0,
+                w_eff_ratio=j0**2,
+                a_over_am=float(contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check)),
+                pm_over_pjkr=float(mean_force_over_pulloff(abar_m, j0)),
+                deltabar_m=float(mean_indentation(abar_m, j0)),
+                stable=stable,
+            )
+        )
+    return tuple(states)

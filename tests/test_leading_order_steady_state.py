@@ -1,0 +1,408 @@
+"""Leading-order steady state for any fixation (Sec. 3.1): Eqs. (43), (50)–(54) and their limits.
+
+Independent references, all written here from the printed equations (in dimensional form with
+E* = R = 1, w0 = chi0^3/(9 pi) from Eq. 64, a_o = (2 pi w0)^(1/3) from its definition, Eq. 86):
+
+* rigid limit: Eqs. (55)–(56), solved in Abar (Eq. 55 gives a_m explicitly) with 30-digit
+  mpmath J-integrals (``mpmath_reference``);
+* free indenter: Eqs. (57), (58) (corrected, docs/errata.md) and (59) (a quadratic in a_m^(3/2)),
+  solved in Abar with mpmath J-integrals;
+* static limit: Eq. (82) with the load group on the right, a polynomial in (a/R)^(1/2), by
+  ``mpmath.polyroots``; its stability from the sign of the polynomial's slope;
+* compliant fixation: the residuals of Eq. (87) and of Eq. (43) with Eqs. (50)–(51) at the roots
+  (30-digit J's), and the number of roots counted along Abar (Eq. 87 solved for abar_m at each
+  Abar by bisection, sign changes of Eq. 43 counted; J's from the quadrature, which
+  test_integrals checks against mpmath to 1e-12);
+* Eqs. (67)–(69) and (72) for a_m = a_cr; Appendix B's anti-resonance (Abar = 0 exactly);
+* the nominal point contact of :mod:`vibroadhesion.refined` at omega_check = inf (Eqs. 99/123).
+"""
+
+from __future__ import annotations
+
+import math
+
+import mpmath as mp
+import numpy as np
+import pytest
+from mpmath_reference import j_integrals_mp
+
+from vibroadhesion.integrals import j_integrals
+from vibroadhesion.leading_order import (
+    Fixation,
+    fixation_transmissibility,
+    indentation_amplitude,
+    internal_variable,
+    mean_balance_residual,
+    steady_states,
+)
+from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.refined import nominal_point_contact
+from vibroadhesion.roots import NoRootError
+
+CHI0 = 2.589e-2  # Sec. 3.5.3
+ETA1 = 3.883e-4  # h1 = 20 um, R = 51.5 mm
+MU_SMALL = 1e-6  # m g/(E* R^2): about a third of the JKR pull-off force, (3/4) c_o^3 = 2.9e-6
+EXPONENTS = [0.05, 0.531, 4.0]
+
+with mp.workdps(30):
+    W0 = mp.mpf(CHI0) ** 3 / (9 * mp.pi)  # Eq. (64) with E* = R = 1
+    A_O = mp.cbrt(2 * mp.pi * W0)  # Eq. (86), a_o / R
+
+
+@pytest.fixture(autouse=True)
+def thirty_digits():
+    """mpmath arithmetic of the references at 30 digits, whatever other modules set."""
+    with mp.workdps(30):
+        yield
+
+
+def assert_reference_root_within(residual, mean_radius, sol, rel: float = 1e-9) -> None:
+    """The reference equation, reduced to one equation in Abar, changes sign between Abar (1 -+ rel):
+    its root is within ``rel`` of the returned Abar. The reference a_m/a_o at those two points (a
+    smooth function of Abar) brackets the returned abar_m, with the same slack."""
+    ends = [sol.abar * (1 - rel), sol.abar * (1 + rel)]
+    lo, hi = (residual(a) for a in ends)
+    assert lo * hi < 0, (sol, float(lo), float(hi))
+    radii = sorted(float(mean_radius(a) / A_O) for a in ends)
+    assert radii[0] * (1 - rel) <= sol.abar_m <= radii[1] * (1 + rel), (sol, radii)
+
+
+# ----------------------------------------------------------------- rigid fixation, Eqs. (55)-(56)
+
+
+@pytest.mark.parametrize(("n", "base_offset"), [(0.531, 0.3), (4.0, -0.2)])
+def test_rigid_limit_equals_eqs_55_56_to_1e9(n: float, base_offset: float) -> None:
+    """Reference: Eqs. (55)-(56) with 30-digit J's. Eq. (55) gives a_m = h1^2 E*/(2 pi w0 Jc1^2) explicitly,
+    and Eq. (56), a_m^2/R - sqrt(2 pi w0 a_m/E*) J0 = hhat - h0 = base_offset a_o^2/R, is then one equation
+    in Abar. The rigid fixation must agree with it to 1e-9, and kappa = 1e12 (omega_bar = 5, zeta = 0.05)
+    with the rigid one to 1e-10: the O(1/kappa) terms are ~1e-12 (mu/kappa, 2 c_o abar_m/|d|). For base_offset >= 0 the root is
+    unique (proof in steady_states' docstring); the tensile offset -0.2 also has one (no unstable branch
+    above abar_min, unlike the static case: vibration lifts deltabar_m near abar_m = 0). n = 0.05 (Abar ~ 1e35,
+    slow in mpmath) and base_offset = 0 are covered by the nominal-point-contact test below."""
+    law = GentSchultz(n)
+
+    def mean_radius(abar: float) -> mp.mpf:
+        return mp.mpf(ETA1) ** 2 / (2 * mp.pi * W0 * j_integrals_mp(abar, n)[1] ** 2)
+
+    def residual(abar: float) -> mp.mpf:
+        am = mean_radius(abar)
+        return am**2 - mp.sqrt(2 * mp.pi * W0 * am) * j_integrals_mp(abar, n)[0] - base_offset * A_O**2
+
+    rigid = steady_states(ETA1, Fixation.rigid(), CHI0, law, mu=MU_SMALL, base_offset=base_offset)
+    stiff = steady_states(ETA1, Fixation.spring_mass_dashpot(1e12, 5.0, 0.05), CHI0, law, mu=MU_SMALL,
+                          base_offset=base_offset)
+    assert len(rigid) == len(stiff) == 1 and rigid[0].stable and stiff[0].stable
+    assert_reference_root_within(residual, mean_radius, rigid[0])
+    assert abs(stiff[0].abar / rigid[0].abar - 1) < 1e-10 and abs(stiff[0].abar_m / rigid[0].abar_m - 1) < 1e-10
+    assert abs(rigid[0].deltabar_m - base_offset) < 1e-12  # Eq. (56) itself
+
+
+# ----------------------------------------------------------------- free indenter, Eqs. (57)-(59)
+
+
+@pytest.mark.parametrize(("n", "beta"), [(0.05, 0.03), (0.531, 0.01), (4.0, 0.3)])
+def test_free_indenter_equals_eqs_57_59_to_1e9(n: float, beta: float) -> None:
+    """Reference: Eqs. (57)-(59) with 30-digit J's and beta = m omega^2/(E* R). Eq. (59),
+    m g = 4 E* a_m^3/(3R) - sqrt(8 pi w0 E* a_m^3) J0, is a quadratic in a_m^(3/2) with one positive root
+    (m g >= 0), and |Xi_c| = m omega^2 h1 (Eq. 57, Eq. 58 corrected: Jc1 outside the root, as Eq. 50 at
+    k = 0) is then one equation in Abar. Tolerance 1e-9. beta = 0.3 puts the contact resonance at
+    abar_m = 9.56, with two more roots next to it (counted independently in the next test). P_m = m g:
+    P_m/|P_JKR| = mu/((3/4)(a_o/R)^3) to 1e-10 (cancellation in Eq. 52)."""
+
+    def mean_radius(abar: float) -> mp.mpf:
+        b = mp.sqrt(8 * mp.pi * W0) * j_integrals_mp(abar, n)[0]
+        return ((b + mp.sqrt(b**2 + mp.mpf(16) / 3 * MU_SMALL)) / (mp.mpf(8) / 3)) ** (mp.mpf(2) / 3)
+
+    def residual(abar: float) -> mp.mpf:
+        am, jc1 = mean_radius(abar), j_integrals_mp(abar, n)[1]
+        xi_c = mp.sqrt(2 * mp.pi * W0 * am) * beta * jc1 - mp.sqrt(8 * mp.pi * W0 * am**3) * jc1
+        return abs(xi_c) - beta * mp.mpf(ETA1)
+
+    for sol in steady_states(ETA1, Fixation.free(beta), CHI0, GentSchultz(n), mu=MU_SMALL):
+        assert_reference_root_within(residual, mean_radius, sol)
+        assert abs(sol.pm_over_pjkr / float(MU_SMALL / (mp.mpf(3) / 4 * A_O**3)) - 1) < 1e-10
+
+
+# ----------------------------------------------------------------- number of roots, counted along Abar
+
+
+def count_roots_along_abar(fixation_case: tuple[float, float, float], mu: float, n: float) -> tuple[int, np.ndarray]:
+    """Independent count: for each Abar on a grid of step 0.002 in ln Abar, Eq. (87) (h0 = hhat) gives
+    one abar_m (one sign change in its coefficients for mu >= 0, Descartes; bisection in abar_m^(1/2)),
+    and the sign changes of Eq. (43) with Eqs. (50)-(51) along that curve are the solutions. The grid
+    runs from Abar = e^-25 (Jc1 ~ 0: Eq. 43 negative) to where abar_m is far above any contact
+    resonance (Eq. 43 positive). ``fixation_case`` = (k, m omega^2, c omega) / (E* R)."""
+    k, m_omega2, c_omega = fixation_case
+    chi = CHI0
+    abar = np.exp(np.arange(-25.0, 50.0 if n < 1 else 12.0, 0.002))
+    j0, jc1, _ = j_integrals(abar, n)
+    rhs = 3 ** (4 / 3) * mu / (2 ** (2 / 3) * chi**2)
+
+    def eq87(s: np.ndarray) -> np.ndarray:
+        x = s * s
+        return (2 ** (7 / 3) * chi / 3 ** (5 / 3)) * x**3 + k * x**2 - j0 * (
+            (2 ** (4 / 3) * chi / 3 ** (2 / 3)) * x**1.5 + k * np.sqrt(x)) - rhs
+
+    lo, hi = np.full_like(abar, 1e-6), 2.0 * (1.0 + np.cbrt(j0))
+    assert np.all(eq87(lo) < 0) and np.all(eq87(hi) > 0)
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        up = eq87(mid) > 0
+        hi, lo = np.where(up, mid, hi), np.where(up, lo, mid)
+    a_m = (0.5 * (lo + hi)) ** 2 * float(A_O)
+    w0 = float(W0)
+    xi_c = -np.sqrt(2 * math.pi * w0 * a_m) * (k - m_omega2) * jc1 - np.sqrt(8 * math.pi * w0 * a_m**3) * jc1
+    xi_s = np.sqrt(2 * math.pi * w0 * a_m) * c_omega * jc1
+    eq43 = xi_c**2 + xi_s**2 - ((k - m_omega2) ** 2 + c_omega**2) * ETA1**2
+    assert eq43[0] < 0 < eq43[-1]
+    changes = np.flatnonzero(np.sign(eq43[:-1]) != np.sign(eq43[1:]))
+    return len(changes), abar[changes]
+
+
+COUNT_CASES = [  # (n, fixation, (k, m omega^2, c omega)/(E* R), mu, expected number of roots)
+    (0.531, Fixation.spring_mass_dashpot(0.1, 2.0, 0.0), (0.1, 0.4, 0.0), 0.0, 3),
+    (0.531, Fixation.spring_mass_dashpot(0.1, 2.0, 0.05), (0.1, 0.4, 0.02), 0.0, 1),
+    (0.531, Fixation.free(1.0), (0.0, 1.0, 0.0), MU_SMALL, 3),
+    (4.0, Fixation.free(0.3), (0.0, 0.3, 0.0), MU_SMALL, 3),
+    (0.531, Fixation.spring_mass_dashpot(0.01, 0.1, 0.05), (0.01, 1e-4, 1e-4), MU_SMALL, 1),
+]
+
+
+@pytest.mark.parametrize(("n", "fixation", "case", "mu", "expected"), COUNT_CASES)
+def test_number_of_roots_equals_independent_count_along_abar(n, fixation, case, mu, expected) -> None:
+    """All roots are returned: the count along Abar (see count_roots_along_abar) equals the solver's,
+    each returned Abar lies in a grid cell where the count found a sign change (cell width 0.2 %),
+    and stability alternates from the largest root (stable) down. Cases: undamped above the fixation
+    resonance (contact resonance at abar_m = 9.56, two extra roots), the same damped (no pole), free
+    indenters with beta = 1 and 0.3 (poles at abar_m = 31.9 and 9.56), and a damped case below resonance."""
+    assert complex(fixation.dynamic_stiffness) == pytest.approx(complex(case[0] - case[1], case[2]), rel=1e-14)
+    sols = steady_states(ETA1, fixation, CHI0, GentSchultz(n), mu=mu)
+    count, cells = count_roots_along_abar(case, mu, n)
+    assert len(sols) == count == expected
+    for sol, cell in zip(sorted(sols, key=lambda s: s.abar), cells):
+        assert cell <= sol.abar <= cell * math.exp(0.002) * (1 + 1e-12)
+    assert [s.stable for s in sols][::-1] == [i % 2 == 0 for i in range(len(sols))]
+
+
+# ----------------------------------------------------------------- compliant fixation: printed residuals
+
+
+@pytest.mark.parametrize(
+    ("kappa", "omega_bar", "zeta", "mu"),
+    [(0.1, 0.1, 0.05, MU_SMALL), (0.01, 3.0, 0.0, 0.0), (0.1, 50.0, 0.05, MU_SMALL), (0.1, 2.0, 0.0, MU_SMALL)],
+)
+def test_compliant_roots_satisfy_printed_eq_87_and_eq_43_with_eqs_50_51(kappa, omega_bar, zeta, mu) -> None:
+    """Reference: Eq. (87) as printed (h0 = hhat) and Eq. (43) with Eqs. (50)-(51) (E* = R = 1), with
+    30-digit J's at each returned Abar. Tolerance 1e-13 C on Eq. (87) relative to its largest term and on
+    Eq. (43) relative, with C = 1 + K/|d + K|, K = 2 E* a_m: a relative error e of abar_m (~1e-15 from
+    the root polish) moves |d + K|, hence the target of Eq. (43), Abar and J0, by ~C e. C = 58 and 64 at
+    the two roots next to the contact resonance (kappa = 0.1, omega_bar = 2, zeta = 0)."""
+    n = 0.531
+    fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
+    chi, d = mp.mpf(CHI0), mp.mpc(complex(fixation.dynamic_stiffness))
+    for sol in steady_states(ETA1, fixation, CHI0, GentSchultz(n), mu=mu):
+        j0, jc1, _ = j_integrals_mp(sol.abar, n)
+        x = mp.mpf(sol.abar_m)
+        terms = [(2 ** (mp.mpf(7) / 3) * chi / 3 ** (mp.mpf(5) / 3)) * x**3, kappa * x**2,
+                 -j0 * (2 ** (mp.mpf(4) / 3) * chi / 3 ** (mp.mpf(2) / 3)) * x**1.5, -j0 * kappa * mp.sqrt(x),
+                 -(3 ** (mp.mpf(4) / 3)) * mu / (2 ** (mp.mpf(2) / 3) * chi**2)]
+        a_m = x * A_O
+        condition = 1 + 2 * a_m / abs(d + 2 * a_m)
+        assert abs(sum(terms)) < 1e-13 * condition * max(abs(t) for t in terms), sol
+        k, m_omega2, c_omega = mp.mpf(kappa), mp.mpf(kappa) * omega_bar**2, 2 * zeta * mp.mpf(kappa) * omega_bar
+        xi_c = -mp.sqrt(2 * mp.pi * W0 * a_m) * (k - m_omega2) * jc1 - mp.sqrt(8 * mp.pi * W0 * a_m**3) * jc1
+        xi_s = mp.sqrt(2 * mp.pi * W0 * a_m) * c_omega * jc1
+        rhs = ((k - m_omega2) ** 2 + c_omega**2) * mp.mpf(ETA1) ** 2
+        assert abs((xi_c**2 + xi_s**2) / rhs - 1) < 1e-13 * condition, sol
+
+
+# ----------------------------------------------------------------- static limit and anti-resonance, Eq. (82)
+
+
+def eq82_roots(kappa: float, load_group: mp.mpf) -> list[tuple[float, bool]]:
+    """Positive roots a_0/a_o of Eq. (82) with mu replaced by the load group lambda = mu + kappa (hhat - h0)/R,
+    in s = (a_0/R)^(1/2):
+    (4/3) s^6 + kappa s^4 - (2 sqrt2/3) chi0^(3/2) s^3 - (sqrt2/3) chi0^(3/2) kappa s - lambda = 0,
+    each with the JKR stability under the spring (the polynomial increasing through the root)."""
+    c = mp.sqrt(2) / 3 * mp.mpf(CHI0) ** 1.5
+    coefficients = [mp.mpf(4) / 3, 0, kappa, -2 * c, 0, -c * kappa, -load_group]
+    slope = [6 * coefficients[0], 0, 4 * kappa, -6 * c, 0, -c * kappa]  # d/ds, descending powers
+    roots = []
+    for s in mp.polyroots(coefficients[::-1], maxsteps=200, extraprec=60, asc=True):
+        if abs(mp.im(s)) < 1e-20 and mp.re(s) > 0:
+            s = mp.re(s)
+            roots.append((float(s**2 / A_O), bool(mp.polyval(slope[::-1], s, asc=True) > 0)))
+    return sorted(roots)
+
+
+STATIC_CASES = [(0.01, 0.0, 0.0), (0.1, MU_SMALL, 0.0), (0.01, MU_SMALL, -0.3), (0.1, 0.0, -0.45)]
+
+
+@pytest.mark.parametrize(("kappa", "mu", "base_offset"), STATIC_CASES)
+def test_static_limit_eta1_to_zero_equals_eq_82(kappa: float, mu: float, base_offset: float) -> None:
+    """Reference: Eq. (82) (mu -> lambda) by polyroots. eta1 = 0 gives J0 = 1 exactly; eta1 = 1e-12 moves
+    J0 by ~(eta1/c_o^2)^2 ~ 1e-17. Tolerance 1e-12 on every root, same count, same stability (tensile
+    cases: JKR's unstable small root and stable large one)."""
+    load = mu + kappa * base_offset * A_O**2
+    reference = eq82_roots(kappa, load)
+    for eta1 in (0.0, 1e-12):
+        sols = steady_states(eta1, Fixation.spring_mass_dashpot(kappa, 2.0, 0.05), CHI0, GentSchultz(0.531), mu=mu,
+                             base_offset=base_offset)
+        assert len(sols) == len(reference), (sols, reference)
+        for sol, (abar_m, stable) in zip(sols, reference):
+            assert abs(sol.abar_m / abar_m - 1) < 1e-12 and sol.stable == stable
+    assert sols[-1].abar > 0  # eta1 = 1e-12 did take the vibrating path
+
+
+@pytest.mark.parametrize(("kappa", "mu", "base_offset"), STATIC_CASES)
+def test_anti_resonance_of_appendix_b_gives_abar_zero_and_the_static_state(kappa, mu, base_offset) -> None:
+    """Appendix B: at omega_bar = 1, zeta = 0 the fixation's dynamic stiffness vanishes (d = 0), the
+    right-hand side of Eq. (43) is zero, so Jc1 = 0: Abar = 0 and J0 = 1 exactly, at any eta1, and the
+    mean state is the static one of Eq. (82) (reference as above, 1e-12)."""
+    fixation = Fixation.spring_mass_dashpot(kappa, 1.0, 0.0)
+    assert complex(fixation.dynamic_stiffness) == 0 and fixation_transmissibility(1.0, fixation, CHI0) == 0.0
+    sols = steady_states(ETA1, fixation, CHI0, GentSchultz(0.531), mu=mu, base_offset=base_offset)
+    reference = eq82_roots(kappa, mu + kappa * base_offset * A_O**2)
+    assert len(sols) == len(reference)
+    for sol, (abar_m, stable) in zip(sols, reference):
+        assert (sol.abar, sol.j0, sol.w_eff_ratio, sol.a_over_am) == (0.0, 1.0, 1.0, 0.0)
+        assert abs(sol.abar_m / abar_m - 1) < 1e-12 and sol.stable == stable
+
+
+@pytest.mark.parametrize("kappa", [0.01, 0.1])
+def test_two_roots_inside_one_scan_cell_next_to_the_fold_are_both_found(kappa: float) -> None:
+    """Static state (eta1 = 0) under a tensile load just above the fold (the pull-off of the spring-loaded
+    JKR contact): the two roots of Eq. (82) (mu -> lambda) lie within 2 % of each other, inside one
+    5 % cell of the scan, with no sign change at the nodes. Reference: the fold s* from the polynomial's
+    derivative (findroot), lambda = lambda_fold + p''(s*)/2 (0.004 s*)^2, roots by polyroots. Both roots
+    must be returned, to 1e-10 (they are conditioned like 1/sqrt(lambda - lambda_fold))."""
+    c = mp.sqrt(2) / 3 * mp.mpf(CHI0) ** 1.5
+
+    def p(s, load=0):
+        return mp.mpf(4) / 3 * s**6 + kappa * s**4 - 2 * c * s**3 - c * kappa * s - load
+
+    s_fold = mp.findroot(lambda s: mp.diff(p, s), mp.sqrt(A_O))
+    load = p(s_fold) + mp.diff(p, s_fold, 2) / 2 * (mp.mpf("0.004") * s_fold) ** 2
+    reference = eq82_roots(kappa, load)
+    assert len(reference) == 2 and math.log(reference[1][0] / reference[0][0]) < 0.02
+    sols = steady_states(0.0, Fixation.spring_mass_dashpot(kappa, 2.0, 0.0), CHI0, GentSchultz(0.531),
+                         base_offset=float(load / (kappa * A_O**2)))
+    assert len(sols) == 2
+    for sol, (abar_m, stable) in zip(sols, reference):
+        assert abs(sol.abar_m / abar_m - 1) < 1e-10 and sol.stable == stable
+
+
+# ----------------------------------------------------------------- nominal point contact, Eqs. (99)/(123)
+
+
+@pytest.mark.parametrize("n", EXPONENTS)
+def test_rigid_nominal_point_contact_is_abar_m_cubed_half_equal_j0_and_matches_refined(n: float) -> None:
+    """h0 = hhat, mu = 0, rigid: Eq. (56) with hhat - h0 = 0 is abar_m^(3/2) = J0 (Eqs. 99, 123), checked
+    with the 30-digit J0 to 1e-12; and the refined model's nominal point contact at omega_check = inf
+    (which then reduces to Eqs. 55, 99) gives the same Abar and abar_m to 1e-10. A/a_m follows Eq. (45)
+    with Eq. (86), A/a_m = Abar / (omega_check abar_m a_o/R) (docs/errata.md E1), to 1e-13."""
+    law = GentSchultz(n)
+    (sol,) = steady_states(ETA1, Fixation.rigid(), CHI0, law, omega_check=1e6)
+    assert abs(sol.abar_m**1.5 / float(j_integrals_mp(sol.abar, n)[0]) - 1) < 1e-12
+    refined = nominal_point_contact(ETA1, math.inf, CHI0, law)
+    assert abs(sol.abar / float(refined.abar) - 1) < 1e-10 and abs(sol.abar_m / float(refined.abar_m) - 1) < 1e-10
+    assert abs(sol.a_over_am / float(sol.abar / (1e6 * sol.abar_m * A_O)) - 1) < 1e-13
+    assert steady_states(ETA1, Fixation.rigid(), CHI0, law)[0].a_over_am == 0.0  # omega_check = inf
+
+
+# ----------------------------------------------------------------- a_m = a_cr: Eqs. (67)-(69) and (72)
+
+
+@pytest.mark.parametrize(("kappa", "omega_bar", "zeta"), [(0.01, 0.1, 0.0), (0.1, 2.0, 0.05), (0.1, 50.0, 0.0)])
+def test_amplitude_equation_at_a_cr_reproduces_eqs_67_69_and_72(kappa: float, omega_bar: float, zeta: float) -> None:
+    """With abar_m = a_cr/a_o = (9/16)^(1/3) J0^(2/3) (Eqs. 61, 86), (|delta_c|/R / transmissibility)^2 of the
+    amplitude equation must equal the printed (xi_c^2 + xi_s^2)/((1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2)
+    of Eqs. (67)-(69), and |delta_c|/R the printed (chi0^2/3) J0^(1/3) |Jc1| of Eq. (72) (rigid). Same
+    30-digit J's on both sides: an identity, tolerance 1e-13."""
+    n = 0.531
+    fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
+    chi = mp.mpf(CHI0)
+    for abar in (0.01, 3.0, 1e4):
+        j0, jc1, _ = j_integrals_mp(abar, n)
+        abar_cr = float(mp.cbrt(mp.mpf(9) / 16) * mp.cbrt(j0) ** 2)
+        amplitude = float(indentation_amplitude(abar_cr, float(jc1), CHI0))
+        xi_c = chi**2 / 3 * mp.cbrt(j0) * (1 - omega_bar**2) * jc1 + chi**3 / (3 * kappa) * j0 * jc1
+        xi_s = -2 * chi**2 / 3 * zeta * omega_bar * mp.cbrt(j0) * jc1
+        printed = (xi_c**2 + xi_s**2) / ((1 - omega_bar**2) ** 2 + 4 * zeta**2 * omega_bar**2)
+        ours = (amplitude / fixation_transmissibility(abar_cr, fixation, CHI0)) ** 2
+        assert abs(ours / float(printed) - 1) < 1e-13
+        assert abs(amplitude / float(chi**2 / 3 * mp.cbrt(j0) * abs(jc1)) - 1) < 1e-13
+
+
+def test_mean_balance_residual_is_eq_87_and_eq_82_term_by_term() -> None:
+    """h0 = hhat: the residual equals Eq. (87) (printed coefficients) exactly, and c_o^2 times it at
+    J0 = 1 is Eq. (82) at a/R = c_o abar_m; relative 1e-13 of the largest term, at random points."""
+    rng = np.random.default_rng(1)
+    chi = CHI0
+    for abar_m, j0, kappa, mu in zip(rng.uniform(0.2, 3, 20), rng.uniform(1, 5, 20), rng.uniform(0, 1, 20),
+                                     rng.uniform(0, 1e-5, 20)):
+        fixation = Fixation(kappa, complex(kappa, 0.0))
+        eq87 = [(2 ** (7 / 3) * chi / 3 ** (5 / 3)) * abar_m**3, kappa * abar_m**2,
+                -j0 * (2 ** (4 / 3) * chi / 3 ** (2 / 3)) * abar_m**1.5, -j0 * kappa * abar_m**0.5,
+                -(3 ** (4 / 3)) * mu / (2 ** (2 / 3) * chi**2)]
+        got = mean_balance_residual(abar_m, j0, fixation, chi, mu, 0.0)
+        assert abs(got - sum(eq87)) < 1e-13 * max(map(abs, eq87))
+        x = abar_m * float(A_O)
+        eq82 = [x**2 * (4 / 3 * x + kappa), -math.sqrt(2) * chi**1.5 / 3 * math.sqrt(x) * (2 * x + kappa), -mu]
+        assert abs(float(A_O) ** 2 * mean_balance_residual(abar_m, 1.0, fixation, chi, mu, 0.0) - sum(eq82)) < (
+            1e-13 * max(map(abs, eq82)))
+
+
+# ----------------------------------------------------------------- the monotone tail that ends the scan
+
+
+@pytest.mark.parametrize("n", EXPONENTS)
+def test_residual_increases_beyond_the_tail_criterion(n: float) -> None:
+    """The proof in steady_states' docstring: once abar_m > max(0, -Re d/(2 c_o)) and
+    abar_m^(3/2) >= (3/4) J0, the mean-balance residual along the amplitude equation increases strictly
+    (here with mu and a base offset). Sampled on 150 points in steps of 5 % from the first such point."""
+    law = GentSchultz(n)
+    c_o = float(A_O)
+
+    def residual_and_j0(x: float, fixation: Fixation) -> tuple[float, float]:
+        j0 = float(j_integrals(internal_variable(x, ETA1, fixation, CHI0, law), n)[0])
+        return mean_balance_residual(x, j0, fixation, CHI0, MU_SMALL, 0.2), j0
+
+    for fixation in (Fixation.rigid(), Fixation.free(0.3), Fixation.spring_mass_dashpot(0.1, 2.0, 0.0),
+                     Fixation.spring_mass_dashpot(0.01, 50.0, 0.05)):
+        x = 1.0001 * max(0.0 if fixation.is_rigid else -complex(fixation.dynamic_stiffness).real / (2 * c_o), 1e-3)
+        while x**1.5 < 0.75 * residual_and_j0(x, fixation)[1]:
+            x *= 1.05
+        residual = [residual_and_j0(x * 1.05**i, fixation)[0] for i in range(150)]
+        assert np.all(np.diff(residual) > 0), fixation
+
+
+# ----------------------------------------------------------------- failures are raised, not numbers
+
+
+def test_tensile_load_beyond_pulloff_raises() -> None:
+    """No steady state for a base pulled far from the indenter (rigid: deltabar_base = -10 is below
+    min deltabar_m; compliant: the same offset): NoRootError, not a number."""
+    law = GentSchultz(0.531)
+    with pytest.raises(NoRootError, match="pull-off"):
+        steady_states(ETA1, Fixation.rigid(), CHI0, law, base_offset=-10.0)
+    with pytest.raises(NoRootError, match="pull-off"):
+        steady_states(ETA1, Fixation.spring_mass_dashpot(0.1, 0.5, 0.05), CHI0, law, base_offset=-10.0)
+
+
+def test_contact_resonance_raises_in_the_amplitude_equation() -> None:
+    """d + 2 c_o abar_m = 0 exactly (free indenter with beta = 2 c_o): |delta_c| unbounded, NoRootError."""
+    c_o = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0
+    fixation = Fixation(0.0, complex(-(2.0 * c_o), 0.0))
+    assert fixation.contact_resonance(CHI0) == pytest.approx(1.0, rel=1e-15)
+    with pytest.raises(NoRootError, match="resonance"):
+        internal_variable(1.0, ETA1, fixation, CHI0, GentSchultz(0.531))
+
+
+@pytest.mark.parametrize(
+    ("kappa", "d"), [(-1.0, 0j), (math.inf, 1 + 0j), (1.0, complex(math.inf, 0)), (1.0, 2 + 0j), (1.0, -1j)]
+)
+def test_inconsistent_fixation_is_rejected(kappa: float, d: complex) -> None:
+    """kappa >= 0; d infinite iff kappa infinite; Re d <= kappa (m >= 0); Im d >= 0 (c >= 0)."""
+    with pytest.raises(ValueError):
+        Fixation(kappa, d)
