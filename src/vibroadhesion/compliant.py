@@ -52,7 +52,8 @@ from scipy.optimize import brentq
 from vibroadhesion.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
 from vibroadhesion.integrals import j_integrals_for_law
 from vibroadhesion.ratelaw import RateLaw
-from vibroadhesion.refined import contact_radius_amplitude_ratio, displacement_harmonics, pulloff_closure
+from vibroadhesion.groups import contact_radius_amplitude_ratio
+from vibroadhesion.refined import displacement_harmonics, pulloff_closure
 from vibroadhesion.roots import NoRootError
 
 Array = NDArray[np.float64]
@@ -141,15 +142,15 @@ def residual(x: ArrayLike, p: CompliantFixation, law: RateLaw) -> Array:
     omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
     j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
     positive, negative = mean_balance_parts(abar_m, j0, p)
-    xi_c, xi_s = _xi(x[:, 0], omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
+    xi_c, xi_s = xi_coefficients(x[:, 0], omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
     forcing = np.hypot(np.expm1(2.0 * x[:, 0]), 2.0 * p.zeta * omega_bar)  # sqrt of forcing_squared, overflow-free
     amplitude = np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - np.log(forcing)
     return np.stack([positive / negative - 1.0, amplitude], axis=1)
 
 
-def _xi(log_omega_bar: Array, omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
+def xi_coefficients(log_omega_bar: Array, omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
         zeta: float) -> tuple[Array, Array]:
-    """xi_c, xi_s of Eqs. (91)-(92)."""
+    """xi_c, xi_s of Eqs. (91)-(92) from the harmonic coefficients (any model level that provides them)."""
     stiffness = -np.expm1(2.0 * log_omega_bar)  # 1 - omega_bar^2
     return (stiffness * delta_c + 2.0 * zeta * omega_bar * delta_s + p_c,
             stiffness * delta_s - 2.0 * zeta * omega_bar * delta_c + p_s)
@@ -162,7 +163,7 @@ def residual_linear(omega_bar: float, abar_m: float, abar: float, p: CompliantFi
     """
     j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
     positive, negative = mean_balance_parts(abar_m, j0, p)
-    xi_c, xi_s = _xi(np.log(omega_bar), omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
+    xi_c, xi_s = xi_coefficients(np.log(omega_bar), omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
     rhs = p.eta1**2 * forcing_squared(math.log(omega_bar), p.zeta)
     return float((positive - negative) / negative), float((xi_c**2 + xi_s**2 - rhs) / rhs)
 

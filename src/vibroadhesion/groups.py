@@ -26,6 +26,28 @@ def contact_radius_scale(w0: float, reduced_modulus: float, radius: float) -> fl
     return (2.0 * math.pi * w0 * radius**2 / reduced_modulus) ** (1.0 / 3.0)
 
 
+def contact_radius_ratio(chi0: float) -> float:
+    """c_o = a_o / R = 2^(1/3) 3^(-2/3) chi0 (text below Eq. 86)."""
+    return 2.0 ** (1 / 3) * 3.0 ** (-2 / 3) * chi0
+
+
+def amplitude_in_contact_units(eta1: ArrayLike, chi0: float) -> NDArray[np.float64]:
+    """etahat = h1 R / a_o^2 = eta1 / c_o^2: the base amplitude on the indentation scale a_o^2/R (Eq. 86)."""
+    eta1 = np.asarray(eta1, dtype=float)
+    if np.any(~np.isfinite(eta1)) or np.any(eta1 < 0):
+        raise ValueError("eta1 must be finite and non-negative")
+    return eta1 / contact_radius_ratio(chi0) ** 2
+
+
+def contact_radius_amplitude_ratio(abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike) -> NDArray[np.float64]:
+    """A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check) = Abar / (c_o abar_m omega_check).
+
+    From Eqs. (45), (86), (105): A = Abar v0/omega, so A/a_m = Abar (v0/(omega R)) / (c_o abar_m). The
+    printed Eq. (98) drops the factor 1/omega_bar (docs/errata.md, E1).
+    """
+    return 3.0 ** (2 / 3) * np.asarray(abar) / (2.0 ** (1 / 3) * chi0 * np.asarray(abar_m) * np.asarray(omega_check))
+
+
 def eta1(h1: ArrayLike, radius: float) -> NDArray[np.float64]:
     """eta1 = h1 / R, Eq. (65)."""
     return np.asarray(h1, dtype=float) / radius

@@ -54,7 +54,7 @@ def _nodes_on_panel(y_mid: float) -> int:
 
 
 @cache
-def _rule() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def folded_rule() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     """Nodes t_k in (0, pi/2), ln(sin t_k), and the (nodes x 3) weight matrix of (J0, Jc1, J1).
 
     Columns: weights of S for J0, of D for Jc1, of S for J1 (the last two folded with sin t and
@@ -76,7 +76,7 @@ def _rule() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float6
 @cache
 def _gent_schultz_weights() -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     """Weights of r and u*r, r = 1/sqrt(1+u): S = 2r + ur and D = -ur (module docstring)."""
-    _, _, weights = _rule()
+    _, _, weights = folded_rule()
     w_r = np.stack([2 * weights[:, 0], np.zeros(len(weights)), 2 * weights[:, 2]], axis=1)
     w_ur = np.stack([weights[:, 0], -weights[:, 1], weights[:, 2]], axis=1)
     return w_r, w_ur
@@ -102,7 +102,7 @@ def j_integrals(abar: ArrayLike, n: float) -> tuple[NDArray[np.float64], NDArray
         n_log_a = n * np.log(a.ravel())
     if np.any(n_log_a > _MAX_N_LOG_A):
         raise ValueError(f"Abar^n overflows: Abar must satisfy n*ln(Abar) <= {_MAX_N_LOG_A}")
-    n_log_sin_t = n * _rule()[1]
+    n_log_sin_t = n * folded_rule()[1]
     w_r, w_ur = _gent_schultz_weights()
     out = np.empty((n_log_a.size, 3))
     for start in range(0, n_log_a.size, _BLOCK):
@@ -127,7 +127,7 @@ def j_integrals_general(abar: ArrayLike, law: RateLaw) -> tuple[NDArray[np.float
     |x| ~ 1 and is smooth elsewhere, as the Gent–Schultz law does.
     """
     a = _as_abar(abar)
-    t, _, weights = _rule()
+    t, _, weights = folded_rule()
     out = np.empty((a.size, 3))
     flat = a.ravel()
     for start in range(0, flat.size, _BLOCK):

@@ -67,6 +67,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import minimize_scalar
 
+from vibroadhesion.groups import contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.integrals import j_integrals_for_law
 from vibroadhesion.ratelaw import GentSchultz, RateLaw
 from vibroadhesion.roots import NoRootError, solve_log_increasing
@@ -112,11 +113,6 @@ def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw) -> PulloffEstima
 
 
 # --- Steady state for any fixation of the indenter, Sec. 3.1 (Eqs. 43, 47–59) -------------------
-
-
-def nominal_radius_ratio(chi0: float) -> float:
-    """c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, the JKR radius of the nominal point contact over R (Eqs. 64, 86)."""
-    return 2.0 ** (1 / 3) * 3.0 ** (-2 / 3) * chi0
 
 
 @dataclass(frozen=True)
@@ -181,7 +177,7 @@ class Fixation:
         d = complex(self.dynamic_stiffness)
         if self.is_rigid or d.imag != 0 or d.real >= 0:
             return None
-        return -d.real / (2.0 * nominal_radius_ratio(chi0))
+        return -d.real / (2.0 * contact_radius_ratio(chi0))
 
 
 def fixation_transmissibility(abar_m: float, fixation: Fixation, chi0: float) -> float:
@@ -192,13 +188,13 @@ def fixation_transmissibility(abar_m: float, fixation: Fixation, chi0: float) ->
     if fixation.is_rigid:
         return 1.0
     d = complex(fixation.dynamic_stiffness)
-    denominator = abs(d + 2.0 * nominal_radius_ratio(chi0) * abar_m)
+    denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
     return math.inf if denominator == 0 else abs(d) / denominator
 
 
 def indentation_amplitude(abar_m: ArrayLike, jc1: ArrayLike, chi0: float) -> NDArray[np.float64]:
     """|delta_c| / R = c_o^2 abar_m^(1/2) |Jc1| (Eq. 47 with 2 pi w0/E* = a_o^3/R^2; = Eq. 93)."""
-    return nominal_radius_ratio(chi0) ** 2 * np.sqrt(np.asarray(abar_m, dtype=float)) * np.abs(jc1)
+    return contact_radius_ratio(chi0) ** 2 * np.sqrt(np.asarray(abar_m, dtype=float)) * np.abs(jc1)
 
 
 def mean_force_over_pulloff(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
@@ -256,14 +252,14 @@ def mean_balance_residual(
     deltabar_m = float(mean_indentation(abar_m, j0))
     if fixation.is_rigid:
         return deltabar_m - base_offset
-    c_o = nominal_radius_ratio(chi0)
+    c_o = contact_radius_ratio(chi0)
     force = 0.75 * float(mean_force_over_pulloff(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
     return c_o * force + fixation.kappa * deltabar_m - load_group(mu, base_offset, fixation.kappa, chi0) / c_o**2
 
 
 def load_group(mu: float, base_offset: float, kappa: float, chi0: float) -> float:
     """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 deltabar_base: right-hand side of (III) times c_o^2."""
-    return mu + kappa * nominal_radius_ratio(chi0) ** 2 * base_offset
+    return mu + kappa * contact_radius_ratio(chi0) ** 2 * base_offset
 
 
 class SteadyState(NamedTuple):
@@ -341,7 +337,7 @@ def steady_states(
         raise ValueError(f"abar_min must be a positive number, got {abar_min!r}")
     if not omega_check > 0:
         raise ValueError(f"omega_check must be positive, got {omega_check!r}")
-    c_o = nominal_radius_ratio(chi0)
+    c_o = contact_radius_ratio(chi0)
     vibrating = eta1 > 0 and complex(fixation.dynamic_stiffness) != 0  # else Abar = 0, J0 = 1 throughout
     resonance = fixation.contact_resonance(chi0) if vibrating else None
     d = complex(fixation.dynamic_stiffness)
@@ -428,7 +424,6 @@ def steady_states(
             f"{what}: no steady state with abar_m >= {abar_min:.3g} (mu = {mu:.6g}, base offset = {base_offset:.6g}); "
             "a tensile load beyond the vibroadhesive pull-off has none"
         )
-    from vibroadhesion.refined import contact_radius_amplitude_ratio  # refined imports this module
 
     states = []
     for abar_m, stable in sorted(roots):

@@ -36,6 +36,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from vibroadhesion.groups import contact_radius_amplitude_ratio
 from vibroadhesion.integrals import j_integrals_for_law
 from vibroadhesion.leading_order import PulloffEstimate
 from vibroadhesion.ratelaw import RateLaw
@@ -123,11 +124,6 @@ class NominalPointContact(NamedTuple):
     abar_m: Array  # a_m / a_o = J0^(2/3), Eq. (123)
     w_eff_ratio: Array  # w_eff / w0 = J0^2, Eq. (49)
     a_over_am: Array  # A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check), Eq. (98) corrected
-
-
-def contact_radius_amplitude_ratio(abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike) -> Array:
-    """A / a_m from Eqs. (45), (86), (105): the printed Eq. (98) drops 1/omega_bar (errata E1)."""
-    return 3.0 ** (2 / 3) * np.asarray(abar) / (2.0 ** (1 / 3) * chi0 * np.asarray(abar_m) * np.asarray(omega_check))
 
 
 def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: RateLaw) -> NominalPointContact:

@@ -1,0 +1,390 @@
+"""Exact harmonic balance of the single-harmonic ansatz: the Discussion's recommendation (Eqs. 125–126).
+
+Notation as in :mod:`vibroadhesion.exact_averaging`: abar = a/a_o, deltabar = delta R/a_o^2,
+Phat = P R/(E* a_o^3) (JKR pull-off -3/4), c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, s = sqrt(w/w0),
+etahat = eta1/c_o^2, and tau' = omega t' the phase-shifted time of Eq. (25).
+
+Ansatz and exact coefficients. With a = a_m + A sin tau' (Eq. 25) the contact-front speed is
+adot/v0 = Abar cos tau' (Abar = omega A/v0, Eq. 45) and, in units of a_o,
+
+    abar(tau') = abar_m + epsilon sin tau',   epsilon = A/a_o = Abar/(omega_check c_o)   (Eqs. 45, 86, 105),
+    s(tau') = sqrt(f(Abar cos tau'))   exactly (Eq. 26 is exact for this ansatz).
+
+Eqs. (4)–(5) -- equivalently (125)–(126), which only subtract the means -- are kept exact, with no
+linearisation in A:
+
+    deltabar(tau') = abar^2 - s sqrt(abar),    Phat(tau') = (4/3) abar^3 - 2 s abar^(3/2).
+
+Their means and first harmonics (Eqs. 30–31: X_c = (1/pi) int X cos tau', X_s = (1/pi) int X sin tau')
+follow from the powers of abar, which contain only sin tau' (abar^2: mean abar_m^2 + epsilon^2/2,
+sine coefficient 2 abar_m epsilon; abar^3: mean abar_m^3 + (3/2) abar_m epsilon^2, sine coefficient
+3 abar_m^2 epsilon + (3/4) epsilon^3, from sin^3 = (3 sin - sin 3)/4), and from three integrals of s
+against g(abar) for g = sqrt and g = (.)^(3/2):
+
+    K0[g] = (1/2pi) int s g(abar),   Kc[g] = (1/pi) int s g(abar) cos tau',   Ks[g] = (1/pi) int s g(abar) sin tau',
+
+    mean deltabar = abar_m^2 + epsilon^2/2 - K0[sqrt],       deltabar_c = -Kc[sqrt],
+    deltabar_s = 2 abar_m epsilon - Ks[sqrt],
+    mean Phat = (4/3) abar_m^3 + 2 abar_m epsilon^2 - 2 K0[3/2],   Phat_c = -2 Kc[3/2],
+    Phat_s = 4 abar_m^2 epsilon + epsilon^3 - 2 Ks[3/2].
+
+Folding tau' -> -tau' (s even, sin odd) and tau' -> pi - tau', and writing t = pi/2 - tau' (the distance
+from the reversal of the contact front) as in :mod:`vibroadhesion.integrals`, with
+S(v) = s(v) + s(-v), D(v) = s(v) - s(-v), v = Abar sin t and g+- = g(abar_m +- epsilon cos t):
+
+    K0 = (1/2pi) int_0^(pi/2) S (g+ + g-) dt,   Kc = (1/pi) int D sin t (g+ + g-) dt,
+    Ks = (1/pi) int S cos t (g+ - g-) dt,
+
+where g+ - g- is formed without cancellation: sqrt: 2 e/(sqrt(a+) + sqrt(a-)); 3/2:
+(6 a^2 e + 2 e^3)/(a+^(3/2) + a-^(3/2)), e = epsilon cos t. The quadrature is the fixed rule of the
+J-integrals (:mod:`vibroadhesion.integrals`), which resolves the |sin t|^n behaviour of S and D at the
+turning point and their boundary layer t ~ 1/Abar; the g factors are smooth for epsilon < abar_m
+(A < a_m, required for abar(tau') > 0). Measured against 25-digit mpmath: relative error below 2e-13
+for epsilon/abar_m up to 0.99, Abar up to 1e8 and n in [0.05, 4] (tests/test_exact_harmonic_balance.py;
+the mean indentation, which nearly cancels at the nominal point, to 1e-13 abar_m^2 absolute). The effective
+work of adhesion is w_eff/w0 = (mean s)^2 = J0^2 exactly (Eq. 18).
+
+Linearisation (the paper's refined model). Expanding g+- in epsilon: g+ + g- = 2 sqrt(a) -
+(epsilon c)^2/(4 a^(3/2)) + O(epsilon^4) and g+ - g- = epsilon c/sqrt(a) + O(epsilon^3) for sqrt;
+2 a^(3/2) + O(epsilon^2) and 3 sqrt(a) epsilon c + O(epsilon^3) for 3/2. With J0 = (1/pi) int S,
+Jc1 = (2/pi) int D sin t, J1 = (2/pi) int S cos^2 t and (2/pi) int D sin t cos^2 t = (Jc1 - Jc3)/4
+(from cos x sin^2 x = (cos x - cos 3x)/4 in Eq. 29):
+
+    mean deltabar = abar_m^2 - J0 sqrt(abar_m) + epsilon^2 (1/2 + J1/(16 abar_m^(3/2))) + O(epsilon^4)
+    deltabar_c = -sqrt(abar_m) Jc1 + epsilon^2 (Jc1 - Jc3)/(32 abar_m^(3/2)) + O(epsilon^4)       [Eq. 93: first term]
+    deltabar_s = 2 abar_m epsilon (1 - J1/(4 abar_m^(3/2))) + O(epsilon^3)                          [Eq. 94]
+    mean Phat = (4/3) abar_m^3 - 2 J0 abar_m^(3/2) + O(epsilon^2)                                    [Eq. 52]
+    Phat_c = -2 abar_m^(3/2) Jc1 + O(epsilon^2)                                                     [Eq. 95]
+    Phat_s = 4 abar_m^2 epsilon (1 - 3 J1/(4 abar_m^(3/2))) + O(epsilon^3)                          [Eq. 96]
+
+Multiplying by c_o^2 (deltabar -> delta/R) and c_o^3/kappa (Phat -> P/(kR)) with 2 c_o = 2^(4/3)
+3^(-2/3) chi0, c_o^2 = 2^(2/3) 3^(-4/3) chi0^2, c_o^3 = (2/9) chi0^3 and epsilon c_o = Abar/omega_check
+= nu0 Abar/omega_bar gives exactly the refined coefficients (93)–(96) (tested).
+
+Mean balance (Eq. 15). delta_m + P_m/k = hhat - h0 + mg/k; with delta_m = deltabar_m a_o^2/R,
+P_m = Phat_m E* a_o^3/R, k = kappa E* R and mu = mg/(E* R^2) (Eq. 81), dividing by a_o^2/R,
+
+    mean deltabar + (c_o/kappa) mean Phat = deltabar0 + mu/(kappa c_o^2),   deltabar0 = (hhat - h0) R/a_o^2.
+
+For h0 = hhat (Eq. 78) and the linearised means this is Eq. (87) divided by kappa (checked:
+(4/3) c_o = 2^(7/3) 3^(-5/3) chi0, mu/c_o^2 = 3^(4/3) mu/(2^(2/3) chi0^2)); kappa -> infinity gives
+the rigid condition mean deltabar = deltabar0 (Eq. 56 generalised), and for rigid fixation the
+amplitude condition of Eqs. (90)–(92), (100) is deltabar_c^2 + deltabar_s^2 = etahat^2.
+
+High-frequency limit (rigid fixation). As omega_check -> infinity at fixed eta1, epsilon =
+Abar/(omega_check c_o) -> 0 with Abar bounded, so the exact balance tends to the leading order
+(Eq. 55 with abar_m^(3/2) = J0, Eq. 123); the first corrections are the O(epsilon^2) terms above (the
+truncated system is solved in the tests and agrees with the exact balance to O(epsilon^4)). It
+does *not* tend to the exact high-frequency limit of :mod:`vibroadhesion.exact_averaging`: the ansatz
+keeps a sinusoidal contact-front speed however fast the excitation (see that module's docstring).
+As eta1 -> 0 at fixed omega_check the exact balance and the refined model (Eqs. 122–123) differ by
+O(epsilon^2), with limits that follow from the expansions above at J -> (1, 0, 1), int S cos^4/pi -> 3/8:
+
+* abar_m(exact) - abar_m(refined) -> -(3/8) epsilon^2: the mean equation's epsilon^2 term (1/2 + 1/16)
+  divided by d(abar^2 - sqrt(abar))/d abar = 3/2 at abar = 1;
+* Abar(exact)/Abar(refined) - 1 -> c epsilon^2. For n > 1 the amplitude is deltabar_s at small Abar
+  (Jc1 ~ Abar^n is smaller than epsilon ~ Abar): deltabar_s/epsilon = 2 abar_m - J1/(2 sqrt(abar_m))
+  - epsilon^2 Js4/(8 abar_m^(5/2)) loses ((9/4)(3/8) + 3/64) epsilon^2 of its 3/2, so c = 19/32. For
+  n < 1 it is deltabar_c: sqrt(abar_m) |Jc1| loses (3/16 + (1 - rho3)/32) epsilon^2 relatively, with
+  rho3 = lim Jc3/Jc1 = (n - 1)/(n + 3) (from s = 1 - sign(v)|v|^n/2 + ...), and d ln|Jc1|/d ln Abar -> n,
+  so c = (3/16 + 1/(8(n + 3)))/n.
+
+Domain. The ansatz needs A < a_m, and the mean equation must keep a stable root (mean deltabar rises
+with abar_m). For the nominal point contact the amplitude sqrt(deltabar_c^2 + deltabar_s^2) reached
+along that branch is bounded: at low omega_check it peaks (near A/a_m = 0.75 for h1 = 20 um,
+omega_check = 1e3, n = 0.531) and the branch ends (no stable mean radius) near A/a_m = 0.94. Larger base
+amplitudes have no single-harmonic steady state (:class:`NoSteadyStateError`; e.g. h1 = 20 um at
+omega_check = 1e3 and h1 = 100 um up to omega_check = 1e5, where the refined model returns A/a_m =
+0.61 and 0.57 .. 2.8); between the end value and the peak there are two roots, and the solver returns
+the smaller one, which continues the refined solution.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
+
+from vibroadhesion.compliant import CompliantFixation, forcing_squared, xi_coefficients
+from vibroadhesion.exact_averaging import PHAT_JKR, NoSteadyStateError
+from vibroadhesion.groups import amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.integrals import folded_rule
+from vibroadhesion.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.refined import nominal_point_contact as refined_nominal_point_contact
+from vibroadhesion.roots import NoRootError
+
+Array = NDArray[np.float64]
+
+
+class ExactHarmonics(NamedTuple):
+    """Means and first harmonics (Eqs. 30–31) of deltabar and Phat for the ansatz of Eq. (25), exact."""
+
+    mean_indentation: Array  # mean deltabar
+    indentation_cos: Array  # deltabar_c
+    indentation_sin: Array  # deltabar_s
+    mean_force: Array  # mean Phat
+    force_cos: Array  # Phat_c
+    force_sin: Array  # Phat_s
+    mean_sqrt_w: Array  # J0 = mean sqrt(w/w0); w_eff/w0 = J0^2 (Eq. 18)
+
+
+def _even_odd_parts(abar: Array, law: RateLaw) -> tuple[Array, Array]:
+    """S = s(v) + s(-v) and D = s(v) - s(-v) at the rule's nodes, v = Abar sin t (rows: Abar values)."""
+    t, log_sin_t, _ = folded_rule()
+    if isinstance(law, GentSchultz):  # S = (2 + u)/sqrt(1 + u), D = -u/sqrt(1 + u), u = v^n: no cancellation
+        with np.errstate(divide="ignore"):
+            u = np.exp(law.n * (np.log(abar)[:, None] + log_sin_t[None, :]))
+        r = 1.0 / np.sqrt(1.0 + u)
+        return (2.0 + u) * r, -u * r
+    v = np.multiply.outer(abar, np.sin(t))
+    closing, opening = np.sqrt(law.f(v)), np.sqrt(law.f(-v))
+    return closing + opening, closing - opening
+
+
+def _coefficients(a: Array, e: Array, s_even: Array, s_odd: Array) -> ExactHarmonics:
+    """The seven coefficients for rows (abar_m, epsilon) and the matching rows of S, D (module docstring)."""
+    t, _, weights = folded_rule()
+    w = np.pi * weights[:, 0]  # the rule's weights for int_0^(pi/2) dt
+    cos_t, sin_t = np.cos(t), np.sin(t)
+    e_c = e[:, None] * cos_t[None, :]
+    a_col = a[:, None]
+    plus, minus = a_col + e_c, a_col - e_c
+    root_p, root_m = np.sqrt(plus), np.sqrt(minus)
+    cube_p, cube_m = plus * root_p, minus * root_m
+
+    def k_integrals(g_sum: Array, g_diff: Array) -> tuple[Array, Array, Array]:
+        """(K0, Kc, Ks) of g from g+ + g- and g+ - g-."""
+        return (
+            (s_even * g_sum) @ w / (2.0 * np.pi),
+            (s_odd * g_sum) @ (w * sin_t) / np.pi,
+            (s_even * g_diff) @ (w * cos_t) / np.pi,
+        )
+
+    k0_half, kc_half, ks_half = k_integrals(root_p + root_m, 2.0 * e_c / (root_p + root_m))
+    k0_32, kc_32, ks_32 = k_integrals(cube_p + cube_m, (6.0 * a_col**2 * e_c + 2.0 * e_c**3) / (cube_p + cube_m))
+    return ExactHarmonics(
+        a**2 + 0.5 * e**2 - k0_half,
+        -kc_half,
+        2.0 * a * e - ks_half,
+        (4.0 / 3.0) * a**3 + 2.0 * a * e**2 - 2.0 * k0_32,
+        -2.0 * kc_32,
+        4.0 * a**2 * e + e**3 - 2.0 * ks_32,
+        s_even @ w / np.pi,
+    )
+
+
+def exact_harmonics(abar_m: ArrayLike, abar: ArrayLike, epsilon: ArrayLike, law: RateLaw) -> ExactHarmonics:
+    """Exact means and first harmonics of deltabar and Phat (module docstring), broadcast over the inputs.
+
+    ``epsilon`` = A/a_o = Abar/(omega_check c_o) must satisfy 0 <= epsilon < abar_m.
+    """
+    abar_m, abar, epsilon = np.broadcast_arrays(*(np.asarray(x, dtype=float) for x in (abar_m, abar, epsilon)))
+    a, big_a, e = abar_m.ravel(), abar.ravel(), epsilon.ravel()
+    if np.any(~np.isfinite(a)) or np.any(~np.isfinite(big_a)) or np.any(~np.isfinite(e)):
+        raise ValueError("abar_m, Abar and epsilon must be finite")
+    if np.any(big_a < 0) or np.any(e < 0) or np.any(e >= a):
+        raise ValueError("the ansatz needs Abar >= 0 and 0 <= epsilon < abar_m (A < a_m)")
+    values = _coefficients(a, e, *_even_odd_parts(big_a, law))
+    return ExactHarmonics(*(v.reshape(abar_m.shape) for v in values))
+
+
+# --- Rigid fixation -----------------------------------------------------------------------
+
+
+class RigidSteadyState(NamedTuple):
+    """Exact-harmonic-balance steady state of a rigidly fixed indenter."""
+
+    abar: float  # internal variable omega A/v0, Eq. (45)
+    abar_m: float  # a_m/a_o
+    w_eff_ratio: float  # w_eff/w0 = J0(Abar)^2, Eq. (18) exact for the ansatz
+    a_over_am: float  # A/a_m = epsilon/abar_m (Eq. 98 corrected, errata E1)
+    mean_force_ratio: float  # P_m/|P_JKR| = mean Phat/(3/4) (negative: tensile)
+
+
+class _AtAmplitude:
+    """Exact coefficients at one Abar and epsilon, as functions of abar_m (S and D computed once)."""
+
+    def __init__(self, abar: float, epsilon: float, law: RateLaw) -> None:
+        self.epsilon = epsilon
+        self._e = np.array([epsilon])
+        self._parts = _even_odd_parts(np.array([abar]), law)
+
+    def at(self, abar_m: float) -> ExactHarmonics:
+        return ExactHarmonics(*(float(v[0]) for v in _coefficients(np.array([abar_m]), self._e, *self._parts)))
+
+    def mean_indentation_slope(self, abar_m: float) -> float:
+        """d(mean deltabar)/d abar_m = 2 abar_m - (1/2pi) int S (1/(2 sqrt(a+)) + 1/(2 sqrt(a-))) dt."""
+        t, _, weights = folded_rule()
+        e_c = self.epsilon * np.cos(t)
+        dk0 = (self._parts[0][0] * (0.5 / np.sqrt(abar_m + e_c) + 0.5 / np.sqrt(abar_m - e_c))) @ weights[:, 0] / 2.0
+        return 2.0 * abar_m - float(dk0)
+
+    def stable_mean_radius(self, deltabar0: float) -> float | None:
+        """abar_m > epsilon with mean deltabar = deltabar0 on the stable branch, or None if there is none.
+
+        F(a) = a^2 + epsilon^2/2 - K0[sqrt](a) - deltabar0 is strictly convex in a (K0[sqrt] is a positive
+        combination of concave square roots), so it has at most two roots; the larger one, where
+        dF/da > 0 (indentation rising with the radius), is the state a displacement-controlled
+        contact holds. It is bracketed between the minimum of F (the root of the analytic dF/da,
+        by Brent's method) and a radius where F > 0.
+        """
+
+        def excess(a: float) -> float:
+            return self.at(a).mean_indentation - deltabar0
+
+        lo = self.epsilon + 1e-9 * max(self.epsilon, 1.0)
+        hi = 2.0 * lo + 1.0 + math.sqrt(abs(deltabar0))
+        while excess(hi) <= 0 or self.mean_indentation_slope(hi) <= 0:
+            hi *= 2.0
+        turn = lo
+        if self.mean_indentation_slope(lo) < 0:
+            turn = brentq(self.mean_indentation_slope, lo, hi, xtol=1e-13 * hi)
+        if excess(turn) > 0:
+            return None
+        return brentq(excess, turn, hi, xtol=4e-16 * hi, rtol=1e-15)
+
+
+#: Relative residual of both equations a returned rigid steady state must meet.
+RESIDUAL_TOLERANCE = 1e-11
+_LOG_STEP = 0.25  # bracketing step in ln Abar
+_MAX_STEPS = 400
+_HALVINGS = 30  # refinements of the step towards the edge A = a_m of the ansatz's domain
+
+
+class _RigidBranch:
+    """The stable mean radius and the amplitude excess ln(|deltabar_(c,s)|/etahat) as functions of ln Abar."""
+
+    def __init__(self, etahat: float, omega_check: float, c_o: float, deltabar0: float, law: RateLaw) -> None:
+        self.etahat, self.scale, self.deltabar0, self.law = etahat, omega_check * c_o, deltabar0, law
+
+    def state(self, z: float) -> tuple[float, ExactHarmonics] | None:
+        """(abar_m, coefficients) at Abar = e^z, or None where the ansatz has no stable state (A >= a_m)."""
+        amplitude = _AtAmplitude(math.exp(z), math.exp(z) / self.scale, self.law)
+        abar_m = amplitude.stable_mean_radius(self.deltabar0)
+        return None if abar_m is None else (abar_m, amplitude.at(abar_m))
+
+    def log_excess(self, z: float) -> float | None:
+        state = self.state(z)
+        if state is None:
+            return None
+        return math.log(math.hypot(state[1].indentation_cos, state[1].indentation_sin) / self.etahat)
+
+
+def _bracket_lowest_root(branch: _RigidBranch, z: float, what: str) -> tuple[float, float]:
+    """(lo, hi) in ln Abar around the smallest root: log_excess(lo) < 0 < log_excess(hi), both admissible.
+
+    From ``z`` (two units below the refined model's ln Abar) it first moves down while the point
+    is inadmissible or already above the target (log_excess -> -infinity as Abar -> 0), then scans
+    upwards in steps of 0.25 to the first sign change. The amplitude along the branch is not
+    monotone near the edge of the ansatz's domain at low frequency (it peaks near A/a_m = 0.75 for
+    h1 = 20 um, omega_check = 1e3), so a second, larger root can exist; the scan returns the smaller
+    one, which continues the refined solution. A step that leaves the domain is halved up to 30
+    times before the amplitude is declared unreachable.
+    """
+    value = branch.log_excess(z)
+    for _ in range(_MAX_STEPS):
+        if value is not None and value < 0:
+            break
+        z -= _LOG_STEP
+        value = branch.log_excess(z)
+    else:
+        raise NoRootError(f"{what}: no admissible state below the target amplitude down to Abar = {math.exp(z):.6g}")
+    step = _LOG_STEP
+    for _ in range(_MAX_STEPS + _HALVINGS):
+        trial = branch.log_excess(z + step)
+        if trial is None:
+            if step < _LOG_STEP * 2.0**-_HALVINGS:
+                raise NoSteadyStateError(
+                    f"{what}: the base amplitude is not reached by the single-harmonic ansatz; beyond Abar = "
+                    f"{math.exp(z):.6g} the mean equation has no stable root with A < a_m"
+                )
+            step *= 0.5
+            continue
+        if trial > 0:
+            return z, z + step
+        z = z + step
+    raise NoRootError(f"{what}: amplitude equation not bracketed")
+
+
+def rigid_fixation(
+    eta1: float, omega_check: float, chi0: float, law: RateLaw, deltabar0: float = 0.0
+) -> RigidSteadyState:
+    """Exact harmonic balance of a rigidly fixed indenter: mean deltabar = deltabar0 and
+    deltabar_c^2 + deltabar_s^2 = etahat^2 (Eqs. 56, 100/103 with exact coefficients).
+
+    Nested bracketed solution: for each z = ln Abar the mean radius is the stable root of the mean
+    equation (:meth:`_AtAmplitude.stable_mean_radius`), and ln(|deltabar_(c,s)|/etahat) along that
+    branch is bracketed by an upward scan that starts below the refined model's Abar (Eqs. 122–123,
+    the linearisation of this system) and stops at the first sign change
+    (:func:`_bracket_lowest_root`: the smallest root, continuing the refined solution), then solved
+    by Brent's method. A state needs A < a_m; when the amplitude cannot be reached inside that
+    domain :class:`NoSteadyStateError` is raised. The result is checked against both equations
+    (relative residuals below ``RESIDUAL_TOLERANCE``), otherwise :class:`NoRootError`.
+    """
+    if not (omega_check > 0 and math.isfinite(omega_check)):
+        raise ValueError(f"omega_check must be positive and finite, got {omega_check}")
+    what = f"exact harmonic balance (eta1 = {eta1:.6g}, omega_check = {omega_check:.6g}, deltabar0 = {deltabar0:.6g})"
+    etahat = float(amplitude_in_contact_units(eta1, chi0))
+    c_o = contact_radius_ratio(chi0)
+    if etahat == 0:
+        static = _AtAmplitude(0.0, 0.0, law)
+        abar_m = static.stable_mean_radius(deltabar0)
+        if abar_m is None:
+            raise NoSteadyStateError(f"{what}: no static contact holds deltabar0")
+        return RigidSteadyState(0.0, abar_m, 1.0, 0.0, static.at(abar_m).mean_force / -PHAT_JKR)
+
+    branch = _RigidBranch(etahat, omega_check, c_o, deltabar0, law)
+    start = float(refined_nominal_point_contact(eta1, omega_check, chi0, law).abar)
+    lo, hi = _bracket_lowest_root(branch, math.log(start) - 2.0, what)
+    z = brentq(lambda y: branch.log_excess(y), lo, hi, xtol=1e-14, rtol=1e-15)
+    abar = math.exp(z)
+    abar_m, h = branch.state(z)
+    residuals = ((h.mean_indentation - deltabar0) / max(abs(deltabar0), abar_m**2),
+                 math.hypot(h.indentation_cos, h.indentation_sin) / etahat - 1.0)
+    if max(abs(r) for r in residuals) > RESIDUAL_TOLERANCE:
+        raise NoRootError(f"{what}: not converged, relative residuals {residuals} at Abar = {abar:.6g}")
+    return RigidSteadyState(
+        abar,
+        abar_m,
+        h.mean_sqrt_w**2,
+        float(contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check)),
+        h.mean_force / -PHAT_JKR,
+    )
+
+
+# --- Compliant fixation (Sec. 3.5.3): residuals for continuation ----------------------------
+
+
+def compliant_residual(x: ArrayLike, p: CompliantFixation, law: RateLaw, deltabar0: float = 0.0) -> Array:
+    """Exact counterpart of :func:`vibroadhesion.compliant.residual`.
+
+    Rows x = (ln omega_bar, ln abar_m, ln Abar) of an (m, 3) array -> (m, 2) residuals.
+
+    Column 0, mean balance (Eq. 87 generalised, module docstring) as positive/negative - 1 with
+    positive = kappa (abar_m^2 + epsilon^2/2) + c_o ((4/3) abar_m^3 + 2 abar_m epsilon^2) - mu/c_o^2 - kappa deltabar0
+    and negative = kappa K0[sqrt] + 2 c_o K0[3/2] (the printed Eq. 87's two sides when epsilon -> 0).
+    Column 1, Eq. (90): ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|), with Eqs. (91)–(92)
+    and delta_check = c_o^2 deltabar_(c,s), P_check = (c_o^3/kappa) Phat_(c,s), epsilon = nu0 Abar/(omega_bar c_o).
+    Rows with epsilon >= abar_m (A >= a_m) have no meaning and raise ValueError.
+    """
+    x = np.atleast_2d(np.asarray(x, dtype=float))
+    omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
+    c_o = contact_radius_ratio(p.chi0)
+    epsilon = p.nu0 * abar / (omega_bar * c_o)
+    h = exact_harmonics(abar_m, abar, epsilon, law)
+    positive = (
+        p.kappa * (abar_m**2 + 0.5 * epsilon**2 - deltabar0)
+        + c_o * ((4.0 / 3.0) * abar_m**3 + 2.0 * abar_m * epsilon**2)
+        - p.mu / c_o**2
+    )
+    k0_half = abar_m**2 + 0.5 * epsilon**2 - h.mean_indentation
+    k0_three_halves = 0.5 * ((4.0 / 3.0) * abar_m**3 + 2.0 * abar_m * epsilon**2 - h.mean_force)
+    negative = p.kappa * k0_half + 2.0 * c_o * k0_three_halves
+    delta_scale, force_scale = c_o**2, c_o**3 / p.kappa
+    xi_c, xi_s = xi_coefficients(x[:, 0], omega_bar, delta_scale * h.indentation_cos, delta_scale * h.indentation_sin,
+                     force_scale * h.force_cos, force_scale * h.force_sin, p.zeta)
+    amplitude = np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - 0.5 * np.log(forcing_squared(x[:, 0], p.zeta))
+    return np.stack([positive / negative - 1.0, amplitude], axis=1)
