@@ -16,6 +16,7 @@ include: "workflow/rules/ingest.smk"
 include: "workflow/rules/fit.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/benchmarks.smk"
+include: "workflow/rules/validation.smk"
 include: "workflow/rules/report.smk"
 
 
@@ -24,4 +25,5 @@ rule all:
     input:
         "results/fit/gent_schultz.json",
         expand("results/{fig}/{fig}.{ext}", fig=FIGURES, ext=["csv", "pdf", "png"]),
+        "results/validation/rigid_error_maps.png",
         "results/report/index.html",

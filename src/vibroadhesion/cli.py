@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import data, figures, groups
+from vibroadhesion import data, figures, groups, validation
 from vibroadhesion.compliant import CompliantFixation
 from vibroadhesion.continuation import ContinuationError
 from vibroadhesion.artefacts import save_figure, write_csv, write_json
@@ -151,6 +151,35 @@ def _fig5_plot(args: argparse.Namespace) -> None:
     save_figure(fig, args.pdf, args.png)
 
 
+def _validate_rigid(args: argparse.Namespace) -> None:
+    setup, params, chi0 = _rig_and_parameters(args)
+    omega = validation.validation_frequencies((args.log10_omega_min, args.log10_omega_max),
+                                              list(_experiment_omega_check(setup, params).values()))
+    rows = []
+    for k, w in enumerate(omega, start=1):
+        rows.extend(validation.rigid_point(args.h1_um, float(w), chi0=chi0, radius=setup.radius, n=params.n))
+        print(f"[{k}/{len(omega)}] h1 = {args.h1_um:g} um, omega_check = {w:.6g}: simulation {rows[-5]['status']}", flush=True)
+    write_csv(pd.DataFrame(rows)[validation.RIGID_GRID_COLUMNS], args.out)
+
+
+def _validate_gather(args: argparse.Namespace) -> None:
+    setup, params, _ = _rig_and_parameters(args)
+    grid = pd.concat([pd.read_csv(p) for p in args.parts], ignore_index=True)
+    grid = grid.sort_values(["h1_um", "omega_check"], kind="stable").reset_index(drop=True)
+    errors = validation.relative_errors(grid)
+    summary = validation.error_summary(errors, list(_experiment_omega_check(setup, params).values()))
+    write_csv(grid, args.grid)
+    write_csv(errors, args.errors)
+    write_csv(summary, args.summary)
+    print(summary.to_string(index=False))
+
+
+def _validate_plot(args: argparse.Namespace) -> None:
+    setup, params, _ = _rig_and_parameters(args)
+    fig = figures.plot_validation_maps(pd.read_csv(args.grid), pd.read_csv(args.errors), _experiment_omega_check(setup, params))
+    save_figure(fig, args.pdf, args.png)
+
+
 def _rigid_fixation_plot(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
     marks = _experiment_omega_check(setup, params)
@@ -217,6 +246,28 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--highlight-hz", type=float, required=True)
     _plot_arguments(p)
     p.set_defaults(run=_fig5_plot)
+
+    p = steps.add_parser("validate-rigid", help="all model levels against the simulation, one amplitude")
+    _rig_arguments(p)
+    p.add_argument("--h1-um", type=float, required=True)
+    p.add_argument("--log10-omega-min", type=int, required=True)
+    p.add_argument("--log10-omega-max", type=int, required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_validate_rigid)
+    p = steps.add_parser("validate-gather")
+    _rig_arguments(p)
+    p.add_argument("--parts", nargs="+", required=True)
+    p.add_argument("--grid", required=True)
+    p.add_argument("--errors", required=True)
+    p.add_argument("--summary", required=True)
+    p.set_defaults(run=_validate_gather)
+    p = steps.add_parser("validate-plot")
+    _rig_arguments(p)
+    p.add_argument("--grid", required=True)
+    p.add_argument("--errors", required=True)
+    p.add_argument("--pdf", required=True)
+    p.add_argument("--png", required=True)
+    p.set_defaults(run=_validate_plot)
 
     for name, run in (("fig6-data", _fig6_data), ("fig7-data", _fig7_data)):
         p = steps.add_parser(name)

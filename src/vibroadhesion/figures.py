@@ -294,3 +294,38 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
     handles, labels = axes[0][0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside lower center", ncol=4, fontsize=8)
     return fig
+
+
+# --- Validation: every model level against the simulation ------------------------------------
+
+
+def plot_validation_maps(grid: pd.DataFrame, errors: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
+    """One error map per model level: the largest relative error over Abar, abar_m, w_eff/w0, A/a_m and
+    P_m/|P_JKR| against the simulation, per (h1, omega_check); cells outside the paper's applicability
+    rule (refined A/a_m > 0.1) hatched, cells where the simulation loses contact left blank."""
+    worst = errors.groupby(["model", "h1_um", "omega_check"], sort=True).agg(
+        error=("relative_error", "max"), applicable=("applicable", "first")).reset_index()
+    models = [m for m in dict.fromkeys(grid["model"]) if m != "simulation"]
+    amplitudes = sorted(grid["h1_um"].unique())
+    omegas = sorted(grid["omega_check"].unique())
+    fig, axes = plt.subplots(1, len(models), figsize=(3.3 * len(models), 3.6), layout="constrained", sharey=True)
+    for ax, model in zip(np.atleast_1d(axes), models):
+        rows = worst[worst["model"] == model]
+        cells = np.full((len(amplitudes), len(omegas)), np.nan)
+        for r in rows.itertuples():
+            cells[amplitudes.index(r.h1_um), omegas.index(r.omega_check)] = r.error
+        image = ax.imshow(np.log10(cells), origin="lower", aspect="auto", cmap="viridis", vmin=-6, vmax=0)
+        for r in rows.itertuples():
+            i, j = amplitudes.index(r.h1_um), omegas.index(r.omega_check)
+            ax.text(j, i, f"{100 * r.error:.2g}%", ha="center", va="center", fontsize=6,
+                    color="w" if r.error < 1e-2 else "k")
+            if not r.applicable:
+                ax.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
+        ax.set_xticks(range(len(omegas)), [f"{w:.2g}" for w in omegas], rotation=90, fontsize=7)
+        ax.set_yticks(range(len(amplitudes)), [f"{h:g}" for h in amplitudes])
+        ax.set(title=model, xlabel=r"$\check{\omega}$")
+    np.atleast_1d(axes)[0].set_ylabel(r"$h_1$ (µm)")
+    fig.colorbar(image, ax=axes, label="log10 max relative error vs simulation", shrink=0.9)
+    fig.suptitle("Error against the direct simulation (hatched: refined A/a_m > 0.1; blank: no steady state); "
+                 "test frequencies: " + ", ".join(f"{f:g} Hz" for f in sorted(experiment_omega_check)), fontsize=8)
+    return fig

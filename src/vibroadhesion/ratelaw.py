@@ -52,3 +52,19 @@ class GentSchultz:
         x = np.asarray(x, dtype=float)
         f_op = self.f_open(x)
         return np.where(x < 0, f_op, 1.0 / f_op)
+
+    def speed(self, ratio: ArrayLike) -> NDArray[np.float64]:
+        """Inverse of Eq. (75): the signed speed x with f(x) = ``ratio`` = w/w0 > 0.
+
+        Opening (ratio > 1): x = -(ratio - 1)^(1/n); closing (ratio < 1): x = (1/ratio - 1)^(1/n);
+        x = 0 at ratio = 1. Speeds beyond the double range come back as -inf or +inf (the
+        overflow is not warned about: it is the exact answer rounded to the nearest double).
+        """
+        ratio = np.asarray(ratio, dtype=float)
+        if np.any(~(ratio > 0)):
+            raise ValueError("w/w0 must be positive for the Gent–Schultz law to be inverted")
+        opening = ratio > 1
+        excess = np.where(opening, ratio - 1.0, (1.0 - ratio) / ratio)
+        with np.errstate(over="ignore"):
+            magnitude = excess ** (1.0 / self.n)
+        return np.where(opening, -magnitude, magnitude)

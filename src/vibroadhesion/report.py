@@ -27,6 +27,7 @@ PAGES: list[tuple[str, str]] = [
     ("fig6", "Fig. 6 — nominal point contact of a rigidly fixed indenter"),
     ("fig7", "Fig. 7 — refined pull-off estimate against frequency"),
     ("fig8", "Fig. 8 — dynamic contact stiffness (storage, loss, phase)"),
+    ("validation", "Validation — every model level against the direct simulation"),
     ("fit", "Gent–Schultz fit and parameter provenance"),
     ("benchmarks", "Speed against error: J-integrals and rule timings"),
 ]

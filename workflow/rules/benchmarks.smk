@@ -11,3 +11,16 @@ rule benchmark_j_integrals:
         "results/logs/benchmark_j_integrals.log",
     shell:
         "{PYTHON} {input.script} {output.csv} {output.txt} 2>&1 | tee {log}"
+
+
+rule benchmark_simulate:
+    """Speed against error of the direct simulation: shooting vs brute-force transients, rtol self-consistency."""
+    input:
+        script="benchmarks/simulate.py",
+        code=code("ratelaw", "groups", "simulate", "benchmarking"),
+    output:
+        "results/benchmarks/simulate.txt",
+    log:
+        "results/logs/benchmark_simulate.log",
+    shell:
+        "{PYTHON} {input.script} {output} > {log} 2>&1"

@@ -12,8 +12,13 @@ PAGE_INPUTS = {
     **{fig: {"fig_csv": f"results/{fig}/{fig}.csv", "fig_png": f"results/{fig}/{fig}.png",
              "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"}
        for fig in ("fig6", "fig7", "fig8")},
+    "validation": {"grid_csv": "results/validation/rigid_grid.csv", "errors_csv": "results/validation/rigid_errors.csv",
+                   "summary_csv": "results/validation/rigid_error_summary.csv",
+                   "maps_png": "results/validation/rigid_error_maps.png",
+                   "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
     "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
     "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",
+                   "simulate_txt": "results/benchmarks/simulate.txt",
                    "rule_tsvs": [f"results/benchmarks/rules/{r}.tsv" for r in ("fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data")]},
 }
 

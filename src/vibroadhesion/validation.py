@@ -1,0 +1,135 @@
+"""Every model level against the direct simulation of the full model (rigid nominal point contact).
+
+For each base amplitude h1 and frequency omega_check the steady state of the rigidly fixed
+nominal point contact (h0 = hhat, Eq. 78) is computed five ways:
+
+* ``simulation``: periodic orbit of Eqs. (4), (5) with w = w0 f(adot/v0), shooting on the
+  one-period map (:mod:`vibroadhesion.simulate`), the ground truth;
+* ``leading``: Eq. (55) with abar_m^(3/2) = J0 (Eqs. 99, 123), frequency independent (the
+  omega_check -> infinity limit of the refined model); A/a_m from its Abar at the given omega_check;
+* ``refined``: Eqs. (122)–(123);
+* ``exact_hb``: harmonic balance with the exact JKR relations, Eqs. (125)–(126)
+  (:mod:`vibroadhesion.exact_harmonic_balance`);
+* ``exact_averaging``: the exact high-frequency limit (:mod:`vibroadhesion.exact_averaging`).
+
+Every row carries a ``status``: ``ok`` for a solution, the simulation's own status
+(``contact_loss``, ``not_converged``, ...) or ``no_solution`` when a model level has no steady
+state there. Numbers of rows without a solution are NaN, never a fill-in value.
+
+Mean force of the J-integral levels: Eq. (52) in a_o units, Phat_m = (4/3) abar_m^3 - 2 J0 abar_m^(3/2),
+and P_m/|P_JKR| = Phat_m/(3/4) (Phat = P R/(E* a_o^3), |P_JKR| R/(E* a_o^3) = 3/4).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+
+import numpy as np
+import pandas as pd
+
+from vibroadhesion import exact_averaging, exact_harmonic_balance, simulate
+from vibroadhesion.groups import contact_radius_amplitude_ratio
+from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.refined import nominal_point_contact
+from vibroadhesion.roots import NoRootError
+
+MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
+QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")
+RIGID_GRID_COLUMNS = ["h1_um", "omega_check", "model", "status", *QUANTITIES]
+ERROR_COLUMNS = ["h1_um", "omega_check", "model", "quantity", "relative_error", "refined_A_over_am", "applicable"]
+
+#: The paper's applicability rule (Sec. 3.5.3), applied as a user would: to the refined model's A/a_m.
+APPLICABILITY_LIMIT = 0.1
+#: The error a level must stay below to be "trusted" (issue: where each level's error is below 5 %).
+TRUSTED_ERROR = 0.05
+
+
+def _row(h1_um: float, omega_check: float, model: str, status: str, values: Sequence[float] | None = None) -> dict:
+    numbers = dict(zip(QUANTITIES, values)) if values is not None else dict.fromkeys(QUANTITIES, math.nan)
+    return {"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": status, **numbers}
+
+
+def _j_model_row(h1_um: float, omega_check: float, model: str, sol) -> dict:
+    abar, abar_m, w_eff = float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio)
+    j0 = math.sqrt(w_eff)
+    pm = ((4.0 / 3.0) * abar_m**3 - 2.0 * j0 * abar_m**1.5) / 0.75  # Eq. (52)
+    return _row(h1_um, omega_check, model, "ok", (abar, abar_m, w_eff, float(sol.a_over_am), pm))
+
+
+def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict]:
+    """The five model levels at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
+    law = GentSchultz(n)
+    eta1 = h1_um * 1e-6 / radius
+    rows = []
+    sim = simulate.steady_state(simulate.BaseExcitation(law, chi0, eta1, omega_check))
+    if sim.status == "converged":
+        rows.append(_row(h1_um, omega_check, "simulation", "ok",
+                         (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)))
+    else:
+        rows.append(_row(h1_um, omega_check, "simulation", sim.status))
+    leading = nominal_point_contact(eta1, math.inf, chi0, law)
+    leading = leading._replace(a_over_am=contact_radius_amplitude_ratio(leading.abar, leading.abar_m, chi0, omega_check))
+    rows.append(_j_model_row(h1_um, omega_check, "leading", leading))
+    rows.append(_j_model_row(h1_um, omega_check, "refined", nominal_point_contact(eta1, omega_check, chi0, law)))
+    for model, solve in (("exact_hb", exact_harmonic_balance.rigid_fixation),
+                         ("exact_averaging", exact_averaging.nominal_point_contact)):
+        try:
+            sol = solve(eta1, omega_check, chi0, law)
+        except NoRootError:  # includes NoSteadyStateError
+            rows.append(_row(h1_um, omega_check, model, "no_solution"))
+            continue
+        rows.append(_row(h1_um, omega_check, model, "ok", (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio),
+                                                            float(sol.a_over_am), float(sol.mean_force_ratio))))
+    return rows
+
+
+def rigid_grid(h1_um: float, omega_checks: Sequence[float], *, chi0: float, radius: float, n: float) -> pd.DataFrame:
+    """All model levels along one amplitude's frequency grid (one Snakemake job per amplitude)."""
+    rows = [row for w in omega_checks for row in rigid_point(h1_um, float(w), chi0=chi0, radius=radius, n=n)]
+    return pd.DataFrame(rows)[RIGID_GRID_COLUMNS]
+
+
+def validation_frequencies(decades: tuple[int, int], experiment_omega_check: Sequence[float]) -> np.ndarray:
+    """Every whole decade of omega_check in ``decades`` plus the experiments' omega_check, sorted."""
+    return np.unique(np.concatenate([10.0 ** np.arange(decades[0], decades[1] + 1), np.asarray(experiment_omega_check)]))
+
+
+def relative_errors(grid: pd.DataFrame) -> pd.DataFrame:
+    """|model/simulation - 1| for every quantity, where both have a solution.
+
+    ``applicable`` marks the points the paper's rule admits (refined A/a_m <= 0.1); points where
+    the simulation has no steady state (contact loss) or the model has none are left out.
+    """
+    sim = grid[grid["model"] == "simulation"].set_index(["h1_um", "omega_check"])
+    refined = grid[grid["model"] == "refined"].set_index(["h1_um", "omega_check"])["A_over_am"]
+    frames = []
+    for model in MODELS[1:]:
+        rows = grid[grid["model"] == model].set_index(["h1_um", "omega_check"])
+        both = (rows["status"] == "ok") & (sim["status"] == "ok")
+        for quantity in QUANTITIES:
+            err = (rows.loc[both, quantity] / sim.loc[both, quantity] - 1.0).abs()
+            frames.append(pd.DataFrame({"model": model, "quantity": quantity, "relative_error": err,
+                                        "refined_A_over_am": refined.loc[err.index]}).reset_index())
+    errors = pd.concat(frames, ignore_index=True)
+    errors["applicable"] = errors["refined_A_over_am"] <= APPLICABILITY_LIMIT
+    return errors.sort_values(["model", "quantity", "h1_um", "omega_check"], kind="stable")[ERROR_COLUMNS].reset_index(drop=True)
+
+
+def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float]) -> pd.DataFrame:
+    """Largest relative error of each level, inside and outside the applicability region, over the
+    whole grid and at the experiments' frequencies, and the share of points below TRUSTED_ERROR."""
+    rows = []
+    for model, e in errors.groupby("model", sort=False):
+        worst = e.groupby(["h1_um", "omega_check", "applicable"])["relative_error"].max().reset_index()
+        at_exp = worst["omega_check"].isin(np.asarray(experiment_omega_check))
+        rows.append({
+            "model": model,
+            "max_error_applicable": worst.loc[worst["applicable"], "relative_error"].max(),
+            "max_error_outside": worst.loc[~worst["applicable"], "relative_error"].max(),
+            "max_error_experiments_applicable": worst.loc[at_exp & worst["applicable"], "relative_error"].max(),
+            "max_error_experiments_outside": worst.loc[at_exp & ~worst["applicable"], "relative_error"].max(),
+            "points": len(worst),
+            "points_below_5pct": int((worst["relative_error"] < TRUSTED_ERROR).sum()),
+        })
+    return pd.DataFrame(rows)

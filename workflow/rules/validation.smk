@@ -1,0 +1,60 @@
+# Ground truth: every model level against the direct simulation (rigid nominal point contact).
+# One job per base amplitude (independent, so a cluster runs them in parallel), then a gather.
+
+VALIDATION_AMPLITUDES = config["validation"]["h1_um"]
+
+
+rule validation_rigid:
+    """Simulation, leading, refined, exact harmonic balance and exact averaging at one h1."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code(*NUMERICS, "simulate", "exact_averaging", "exact_harmonic_balance", "compliant", "continuation",
+                  "validation", "figures", "fitting", "data", "cli", "artefacts"),
+    output:
+        "results/validation/rigid/h1_{h1}.csv",
+    params:
+        lo=config["validation"]["log10_omega_check_min"],
+        hi=config["validation"]["log10_omega_check_max"],
+    log:
+        "results/logs/validation_rigid_h1_{h1}.log",
+    benchmark:
+        "results/benchmarks/rules/validation_rigid_h1_{h1}.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli validate-rigid --setup {input.setup} --fit {input.fit} --h1-um {wildcards.h1} "
+        "--log10-omega-min {params.lo} --log10-omega-max {params.hi} --out {output} 2>&1 | tee {log}"
+
+
+rule validation_gather:
+    """rigid_grid.csv (all levels), relative errors against the simulation and their summary."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        parts=expand("results/validation/rigid/h1_{h1}.csv", h1=VALIDATION_AMPLITUDES),
+        code=code("validation", "data", "fitting", "cli", "artefacts"),
+    output:
+        grid="results/validation/rigid_grid.csv",
+        errors="results/validation/rigid_errors.csv",
+        summary="results/validation/rigid_error_summary.csv",
+    log:
+        "results/logs/validation_gather.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli validate-gather --setup {input.setup} --fit {input.fit} --parts {input.parts} "
+        "--grid {output.grid} --errors {output.errors} --summary {output.summary} 2>&1 | tee {log}"
+
+
+rule validation_plot:
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        grid="results/validation/rigid_grid.csv",
+        errors="results/validation/rigid_errors.csv",
+        code=code("figures", "data", "fitting", "cli", "artefacts"),
+    output:
+        pdf="results/validation/rigid_error_maps.pdf",
+        png=report("results/validation/rigid_error_maps.png", caption="../report/validation.rst", category="Validation"),
+    log:
+        "results/logs/validation_plot.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli validate-plot --setup {input.setup} --fit {input.fit} --grid {input.grid} "
+        "--errors {input.errors} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
