@@ -185,10 +185,10 @@ def _rigid_fixation_plot(args: argparse.Namespace) -> None:
     marks = _experiment_omega_check(setup, params)
     table = pd.read_csv(args.csv)
     if args.step == "fig6-plot":
-        fig = figures.plot_fig6(table, marks)
+        fig = figures.plot_fig6(table, marks, pd.read_csv(args.validation))
     elif args.step == "fig7-plot":
         fig4 = pd.read_csv(args.fig4)
-        fig = figures.plot_fig7(table, fig4[fig4["model"] == "leading"], marks)
+        fig = figures.plot_fig7(table, fig4[fig4["model"] == "leading"], marks, fig4[fig4["model"] == "exact_averaging"])
     else:
         fig = figures.plot_fig8(table, marks)
     save_figure(fig, args.pdf, args.png)
@@ -287,6 +287,8 @@ def _parser() -> argparse.ArgumentParser:
         _rig_arguments(p)
         if name == "fig7-plot":
             p.add_argument("--fig4", required=True, help="fig4.csv: its leading-order rows are Fig. 7's asymptotes")
+        if name == "fig6-plot":
+            p.add_argument("--validation", required=True, help="rigid_grid.csv: simulated points and exact averaging")
         _plot_arguments(p)
         p.set_defaults(run=_rigid_fixation_plot)
     return parser

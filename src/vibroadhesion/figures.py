@@ -17,7 +17,9 @@ import pandas as pd
 
 from vibroadhesion.compliant import CompliantFixation, ResponseCurve, static_abar_m, trace_response_curve
 from vibroadhesion.integrals import j_integrals, j_integrals_large_abar
-from vibroadhesion.pulloff import GentSchultzParameters, Model, predict_pulloff
+from vibroadhesion import exact_averaging, groups
+from vibroadhesion.jkr import pulloff_force
+from vibroadhesion.pulloff import GentSchultzParameters, Model, PulloffPrediction, predict_pulloff
 from vibroadhesion.ratelaw import GentSchultz
 from vibroadhesion.refined import nominal_point_contact, pulloff_refined
 from vibroadhesion.stiffness import dynamic_stiffness
@@ -75,11 +77,18 @@ def fig4_table(
     radius: float,
     reduced_modulus: float,
 ) -> pd.DataFrame:
-    """Leading-order curve (Eqs. 71–72, no frequency) and refined curves (Eq. 106) per frequency."""
+    """Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
+    exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
+    :func:`vibroadhesion.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0))."""
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frames = []
     lead = predict_pulloff("leading", params["leading"], np.nan, h1_um, **geometry)
     frames.append(_fig4_frame("leading", np.nan, h1_um, lead))
+    p = params["leading"]
+    exact = exact_averaging.pulloff_at_critical_radius(np.asarray(h1_um) * 1e-6 / radius,
+                                                       groups.chi0(p.w0, reduced_modulus, radius), GentSchultz(p.n))
+    frames.append(_fig4_frame("exact_averaging", np.nan, h1_um, PulloffPrediction(
+        exact.abar, exact.alpha, exact.ratio, -pulloff_force(p.w0, radius) * exact.ratio * 1e3)))
     for f in frequencies_hz:
         frames.append(_fig4_frame("refined", f, h1_um, predict_pulloff("refined", params["refined"], f, h1_um, **geometry)))
     return pd.concat(frames, ignore_index=True)[FIG4_COLUMNS]
@@ -100,6 +109,8 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     refined = table[table["model"] == "refined"]
     for k, (f, rows) in enumerate(refined.groupby("frequency_hz", sort=True)):
         ax.plot(rows["h1_um"], rows["ratio"], "--", color=f"C{k}", lw=1.0, label=f"refined, Eq. (106), {f:g} Hz")
+    exact = table[table["model"] == "exact_averaging"]
+    ax.plot(exact["h1_um"], exact["ratio"], "k:", lw=1.4, label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
     markers = "osD^v<>p"
     for k, (source, rows) in enumerate(measurements.groupby("source", sort=True)):
         ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
@@ -167,14 +178,25 @@ def shade_amplitude_regions(ax: plt.Axes) -> None:
     ax.set_ylim(min(lo, 1e-7), max(hi, 10.0))
 
 
-def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
-    """(a) Abar, (b) abar_m, (c) w_eff/w0, (d) A/a_m against omega_check, regions of (d) shaded."""
+def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float],
+              validation: pd.DataFrame | None = None) -> plt.Figure:
+    """(a) Abar, (b) abar_m, (c) w_eff/w0, (d) A/a_m against omega_check, regions of (d) shaded.
+
+    With the validation grid: the simulated steady states of the full model (filled markers) and the
+    exact high-frequency averaging (dotted) over the paper's refined model (solid)."""
     fig, axes = plt.subplots(2, 2, figsize=(9.0, 6.4), constrained_layout=True, sharex=True)
     panels = [("Abar", r"$\bar A$", "log"), ("abar_m", r"$\bar a_m = a_m/a_o$", "linear"),
               ("w_eff_ratio", r"$w_{eff}/w_0$", "linear"), ("A_over_am", r"$A/a_m$", "log")]
     for ax, (column, label, yscale), letter in zip(axes.flat, panels, "abcd"):
         for k, (h1, rows) in enumerate(_by_amplitude(table)):
             ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
+            if validation is not None:
+                here = validation[np.isclose(validation["h1_um"], h1) & (validation["status"] == "ok")]
+                sim, exact = here[here["model"] == "simulation"], here[here["model"] == "exact_averaging"]
+                ax.plot(exact["omega_check"], exact[column], ":", color=f"C{k}", lw=1.2,
+                        label="exact averaging" if k == 0 else None)
+                ax.plot(sim["omega_check"], sim[column], "o", color=f"C{k}", ms=3.5,
+                        label="simulation of the full model" if k == 0 else None)
         ax.set(xscale="log", yscale=yscale, ylabel=label, title=f"({letter})")
         _mark_frequencies(ax, experiment_omega_check)
     ax_d = axes.flat[3]
@@ -186,18 +208,24 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
     return fig
 
 
-def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
-    """(a) Abar_cr and (b) P_cr/P_JKR against omega_check; dashed: the leading-order values (Eq. 72)."""
+def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float],
+              exact: pd.DataFrame | None = None) -> plt.Figure:
+    """(a) Abar_cr and (b) P_cr/P_JKR against omega_check; dashed: the leading-order values (Eq. 72);
+    dotted: the exact high-frequency averaging with the same criterion a_m = a_cr (Fig. 4's rows)."""
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     for k, (h1, rows) in enumerate(_by_amplitude(table)):
         lead = leading[np.isclose(leading["h1_um"], h1)].iloc[0]
         for ax, column, asymptote in ((ax_a, "Abar_cr", lead["Abar_cr"]), (ax_b, "ratio", lead["ratio"])):
             ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
             ax.axhline(asymptote, color=f"C{k}", ls="--", lw=0.8)
+        if exact is not None:
+            row = exact[np.isclose(exact["h1_um"], h1)].iloc[0]
+            for ax, column in ((ax_a, "Abar_cr"), (ax_b, "ratio")):
+                ax.axhline(row[column], color=f"C{k}", ls=":", lw=1.0)
     for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):
         _mark_frequencies(ax, experiment_omega_check)
         ax.set(xscale="log", xlabel=r"$\check{\omega} = \omega R / v_0$", ylabel=label,
-               title=f"({letter}) dashed: leading order, Eq. (72)")
+               title=f"({letter}) dashed: Eq. (72); dotted: exact averaging")
     ax_a.set_yscale("log")
     ax_b.legend()
     return fig

@@ -45,7 +45,7 @@ rule fig4_data:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "figures", "fitting", "data", "cli", "artefacts"),
+        code=code(*NUMERICS, "exact_averaging", "figures", "fitting", "data", "cli", "artefacts"),
     output:
         "results/fig4/fig4.csv",
     params:
@@ -189,6 +189,7 @@ rule fig8_data:
 rule fig6_plot:
     input:
         csv="results/fig6/fig6.csv",
+        validation="results/validation/rigid_grid.csv",
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         code=code("figures", "groups", "fitting", "data", "cli", "artefacts"),
@@ -198,7 +199,7 @@ rule fig6_plot:
     log:
         "results/logs/fig6_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig6-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
+        "{PYTHON} -m vibroadhesion.cli fig6-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} --validation {input.validation} "
         "--pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
