@@ -26,4 +26,5 @@ rule all:
         "results/fit/gent_schultz.json",
         expand("results/{fig}/{fig}.{ext}", fig=FIGURES, ext=["csv", "pdf", "png"]),
         "results/validation/rigid_error_maps.png",
+        "results/validation/compliant_sweep.png",
         "results/report/index.html",

@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -162,6 +163,24 @@ def _validate_rigid(args: argparse.Namespace) -> None:
     write_csv(pd.DataFrame(rows)[validation.RIGID_GRID_COLUMNS], args.out)
 
 
+def _validate_compliant(args: argparse.Namespace) -> None:
+    base, _, _, n, _ = _compliant_fixation(args)
+    p = replace(base, kappa=args.kappa, zeta=args.zeta)
+    table = validation.compliant_sweep(p, n, np.geomspace(args.omega_bar_min, args.omega_bar_max, args.points))
+    write_csv(table, args.out)
+    sim = table[table["model"] == "simulation"]
+    print(f"{len(sim)} simulated steady states ({int((sim['status'] != 'ok').sum())} not first time), "
+          f"{int((~sim['stable'].astype(bool)).sum())} unstable or failed")
+
+
+def _validate_compliant_plot(args: argparse.Namespace) -> None:
+    sweep, fig5 = pd.read_csv(args.csv), pd.read_csv(args.fig5)
+    omega = sweep["omega_bar"]
+    curve = fig5[np.isclose(fig5["kappa"], args.kappa) & np.isclose(fig5["zeta"], args.zeta)
+                 & fig5["omega_bar"].between(omega.min(), omega.max())]
+    save_figure(figures.plot_compliant_sweep(sweep, curve), args.pdf, args.png)
+
+
 def _validate_gather(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
     grid = pd.concat([pd.read_csv(p) for p in args.parts], ignore_index=True)
@@ -254,6 +273,22 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--log10-omega-max", type=int, required=True)
     p.add_argument("--out", required=True)
     p.set_defaults(run=_validate_rigid)
+    p = steps.add_parser("validate-compliant", help="Fig. 5 sweep up and down: simulation against the refined model")
+    _rig_arguments(p)
+    p.add_argument("--h1-um", type=float, required=True)
+    p.add_argument("--kappa", type=float, required=True)
+    p.add_argument("--zeta", type=float, required=True)
+    p.add_argument("--omega-bar-min", type=float, required=True)
+    p.add_argument("--omega-bar-max", type=float, required=True)
+    p.add_argument("--points", type=int, required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_validate_compliant)
+    p = steps.add_parser("validate-compliant-plot")
+    p.add_argument("--fig5", required=True, help="fig5.csv: the refined curve of the same (kappa, zeta)")
+    p.add_argument("--kappa", type=float, required=True)
+    p.add_argument("--zeta", type=float, required=True)
+    _plot_arguments(p)
+    p.set_defaults(run=_validate_compliant_plot)
     p = steps.add_parser("validate-gather")
     _rig_arguments(p)
     p.add_argument("--parts", nargs="+", required=True)

@@ -357,3 +357,24 @@ def plot_validation_maps(grid: pd.DataFrame, errors: pd.DataFrame, experiment_om
     fig.suptitle("Error against the direct simulation (hatched: refined A/a_m > 0.1; blank: no steady state); "
                  "test frequencies: " + ", ".join(f"{f:g} Hz" for f in sorted(experiment_omega_check)), fontsize=8)
     return fig
+
+
+def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> plt.Figure:
+    """A/a_m against omega_bar through the folded resonance: the refined model's traced curve and the
+    simulated orbits swept up and down (open markers: unstable orbit, |Floquet multiplier| > 1)."""
+    fig, ax = plt.subplots(figsize=(6.0, 4.2), layout="constrained")
+    for j, (_, seg) in enumerate(curve.groupby("branch", sort=False)):
+        ax.plot(seg["omega_bar"], seg["A_over_am"], "k-", lw=1.0, label="refined model, Eqs. (87), (90)" if j == 0 else None)
+    sim = sweep[(sweep["model"] == "simulation") & sweep["A_over_am"].notna()]
+    for direction, marker, color in (("up", "^", "C0"), ("down", "v", "C3")):
+        rows = sim[sim["direction"] == direction]
+        stable = rows["stable"].astype(bool)
+        ax.plot(rows.loc[stable, "omega_bar"], rows.loc[stable, "A_over_am"], marker, color=color, ms=5, ls="none",
+                label=f"simulation, sweep {direction}")
+        ax.plot(rows.loc[~stable, "omega_bar"], rows.loc[~stable, "A_over_am"], marker, color=color, mfc="none", ms=5,
+                ls="none", label=f"simulation, sweep {direction}, unstable orbit")
+    ax.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$", ylabel=r"$A/a_m$",
+           xlim=(sweep["omega_bar"].min(), sweep["omega_bar"].max()))
+    shade_amplitude_regions(ax)
+    ax.legend(fontsize=7, loc="lower left")
+    return fig

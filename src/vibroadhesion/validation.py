@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion import exact_averaging, exact_harmonic_balance, simulate
+from vibroadhesion.compliant import CompliantFixation, trace_response_curve
 from vibroadhesion.groups import contact_radius_amplitude_ratio
 from vibroadhesion.ratelaw import GentSchultz
 from vibroadhesion.refined import nominal_point_contact
@@ -133,3 +134,51 @@ def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float])
             "points_below_5pct": int((worst["relative_error"] < TRUSTED_ERROR).sum()),
         })
     return pd.DataFrame(rows)
+
+
+# --- Compliant fixation: the Fig. 5 sweep, up and down in frequency ----------------------------
+
+SWEEP_COLUMNS = ["direction", "omega_bar", "model", "branch", "status", "Abar", "abar_m", "A_over_am", "stable",
+                 "max_floquet_multiplier"]
+
+
+def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float]) -> pd.DataFrame:
+    """Simulated steady states along ``omega_bar`` swept up, then down, each started from the previous
+    orbit (a slow sweep, so a fold of the response shows as a jump and a hysteresis loop), next to
+    every solution of the refined model (Eqs. 87, 90) on its traced curve at the same frequency.
+
+    A start from the previous orbit that does not converge is retried from the static state
+    (Eq. 82); the row says which (``status``). ``stable`` and the largest |Floquet multiplier| come
+    from the monodromy matrix of the simulated orbit; the refined rows carry the index of their
+    solution in order of increasing Abar as ``branch`` and no stability (the averaged model does
+    not provide one).
+    """
+    law = GentSchultz(n)
+    fixation = simulate.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
+    curve = trace_response_curve(p, law, (min(omega_bar), max(omega_bar)))
+    rows = []
+    for direction, grid in (("up", list(omega_bar)), ("down", list(omega_bar)[::-1])):
+        state = None
+        for w in grid:
+            excitation = simulate.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
+            sim = simulate.steady_state(excitation, fixation, initial_state=state)
+            status = "ok"
+            if sim.status != "converged" and state is not None:
+                sim = simulate.steady_state(excitation, fixation)
+                status = "ok, restarted from the static state"
+            if sim.status == "converged":
+                state = sim.start_state
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0, "status": status,
+                             "Abar": sim.abar, "abar_m": sim.abar_m, "A_over_am": sim.a_over_am, "stable": sim.stable,
+                             "max_floquet_multiplier": float(np.max(np.abs(sim.floquet_multipliers)))})
+            else:
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
+                             "status": sim.status, "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
+                             "stable": False, "max_floquet_multiplier": math.nan})
+            if direction == "up":
+                for k, (abar_m, abar) in enumerate(sorted(curve.solutions_at(w, law), key=lambda s: s[1])):
+                    rows.append({"direction": "-", "omega_bar": w, "model": "refined", "branch": k, "status": "ok",
+                                 "Abar": abar, "abar_m": abar_m,
+                                 "A_over_am": float(contact_radius_amplitude_ratio(abar, abar_m, p.chi0, w / p.nu0)),
+                                 "stable": math.nan, "max_floquet_multiplier": math.nan})
+    return pd.DataFrame(rows)[SWEEP_COLUMNS]

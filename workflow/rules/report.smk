@@ -15,6 +15,8 @@ PAGE_INPUTS = {
     "validation": {"grid_csv": "results/validation/rigid_grid.csv", "errors_csv": "results/validation/rigid_errors.csv",
                    "summary_csv": "results/validation/rigid_error_summary.csv",
                    "maps_png": "results/validation/rigid_error_maps.png",
+                   "sweep_csv": "results/validation/compliant_sweep.csv",
+                   "sweep_png": "results/validation/compliant_sweep.png",
                    "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
     "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
     "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",

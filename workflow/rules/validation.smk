@@ -58,3 +58,42 @@ rule validation_plot:
     shell:
         "{PYTHON} -m vibroadhesion.cli validate-plot --setup {input.setup} --fit {input.fit} --grid {input.grid} "
         "--errors {input.errors} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+
+
+rule validation_compliant:
+    """Fig. 5's folded resonance swept up and down with the simulation (hysteresis, Floquet stability)."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code(*NUMERICS, "simulate", "compliant", "continuation", "validation", "figures", "fitting", "data", "cli",
+                  "artefacts"),
+    output:
+        "results/validation/compliant_sweep.csv",
+    params:
+        sweep=config["validation"]["compliant_sweep"],
+        h1=config["fig5"]["h1_um"],
+    log:
+        "results/logs/validation_compliant.log",
+    benchmark:
+        "results/benchmarks/rules/validation_compliant.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli validate-compliant --setup {input.setup} --fit {input.fit} --h1-um {params.h1} "
+        "--kappa {params.sweep[kappa]} --zeta {params.sweep[zeta]} --omega-bar-min {params.sweep[omega_bar_min]} "
+        "--omega-bar-max {params.sweep[omega_bar_max]} --points {params.sweep[points]} --out {output} 2>&1 | tee {log}"
+
+
+rule validation_compliant_plot:
+    input:
+        csv="results/validation/compliant_sweep.csv",
+        fig5="results/fig5/fig5.csv",
+        code=code("figures", "cli", "artefacts"),
+    output:
+        pdf="results/validation/compliant_sweep.pdf",
+        png=report("results/validation/compliant_sweep.png", caption="../report/validation.rst", category="Validation"),
+    params:
+        sweep=config["validation"]["compliant_sweep"],
+    log:
+        "results/logs/validation_compliant_plot.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli validate-compliant-plot --csv {input.csv} --fig5 {input.fig5} "
+        "--kappa {params.sweep[kappa]} --zeta {params.sweep[zeta]} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
