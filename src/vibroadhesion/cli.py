@@ -251,10 +251,7 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_fig4_plot)
 
     p = steps.add_parser("fig5-data", help="compliant fixation: continuation of Eqs. (87), (90)")
-    _rig_arguments(p)
-    p.add_argument("--h1-um", type=float, required=True)
-    p.add_argument("--omega-bar-min", type=float, required=True)
-    p.add_argument("--omega-bar-max", type=float, required=True)
+    _compliant_sweep_arguments(p)
     p.add_argument("--count-points", type=int, required=True)
     p.add_argument("--out", required=True)
     p.add_argument("--markers", required=True)
@@ -274,12 +271,9 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--out", required=True)
     p.set_defaults(run=_validate_rigid)
     p = steps.add_parser("validate-compliant", help="Fig. 5 sweep up and down: simulation against the refined model")
-    _rig_arguments(p)
-    p.add_argument("--h1-um", type=float, required=True)
+    _compliant_sweep_arguments(p)
     p.add_argument("--kappa", type=float, required=True)
     p.add_argument("--zeta", type=float, required=True)
-    p.add_argument("--omega-bar-min", type=float, required=True)
-    p.add_argument("--omega-bar-max", type=float, required=True)
     p.add_argument("--points", type=int, required=True)
     p.add_argument("--out", required=True)
     p.set_defaults(run=_validate_compliant)
@@ -334,6 +328,14 @@ def _plot_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--csv", required=True)
     p.add_argument("--pdf", required=True)
     p.add_argument("--png", required=True)
+
+
+def _compliant_sweep_arguments(p: argparse.ArgumentParser) -> None:
+    """Rig, base amplitude and omega_bar range of a compliant-fixation step."""
+    _rig_arguments(p)
+    p.add_argument("--h1-um", type=float, required=True)
+    p.add_argument("--omega-bar-min", type=float, required=True)
+    p.add_argument("--omega-bar-max", type=float, required=True)
 
 
 def _rig_arguments(p: argparse.ArgumentParser) -> None:
