@@ -29,7 +29,8 @@ SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
 DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot", "fig5_data", "fig5_plot",
               "fig6_data", "fig6_plot", "fig7_data", "fig7_plot", "fig8_data", "fig8_plot",
-              "validation_rigid", "validation_gather", "validation_plot",
+              "validation_rigid", "validation_gather", "validation_plot", "validation_compliant",
+              "validation_compliant_plot", "virtual_pulloff", "virtual_pulloff_gather",
               "execute_notebook", "render_page", "report_index", "all"}
 
 

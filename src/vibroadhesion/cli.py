@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import data, figures, groups, validation
+from vibroadhesion import data, figures, groups, validation, virtual_pulloff
 from vibroadhesion.compliant import CompliantFixation
 from vibroadhesion.continuation import ContinuationError
 from vibroadhesion.artefacts import save_figure, write_csv, write_json
@@ -78,7 +78,8 @@ def _fig4_plot(args: argparse.Namespace) -> None:
     fit = _load_fit(args.fit)
     w0 = parameters_from_fit(fit["fits"]["leading"]).w0
     jkr_mN = float(-pulloff_force(w0, setup.radius)) * 1e3
-    fig = figures.plot_fig4(pd.read_csv(args.csv), data.read_canonical_pulloff(args.pulloff), jkr_mN)
+    fig = figures.plot_fig4(pd.read_csv(args.csv), data.read_canonical_pulloff(args.pulloff), jkr_mN,
+                            pd.read_csv(args.virtual))
     save_figure(fig, args.pdf, args.png)
 
 
@@ -181,6 +182,17 @@ def _validate_compliant_plot(args: argparse.Namespace) -> None:
     save_figure(figures.plot_compliant_sweep(sweep, curve), args.pdf, args.png)
 
 
+def _virtual_pulloff(args: argparse.Namespace) -> None:
+    setup, params, _ = _rig_and_parameters(args)
+    table = virtual_pulloff.pulloff_table(params, args.frequency_hz, np.asarray(setup.amplitudes_um), radius=setup.radius,
+                                          reduced_modulus=setup.reduced_modulus)
+    write_csv(table, args.out)
+
+
+def _virtual_pulloff_gather(args: argparse.Namespace) -> None:
+    write_csv(pd.concat([pd.read_csv(p) for p in args.parts], ignore_index=True), args.out)
+
+
 def _validate_gather(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
     grid = pd.concat([pd.read_csv(p) for p in args.parts], ignore_index=True)
@@ -207,7 +219,8 @@ def _rigid_fixation_plot(args: argparse.Namespace) -> None:
         fig = figures.plot_fig6(table, marks, pd.read_csv(args.validation))
     elif args.step == "fig7-plot":
         fig4 = pd.read_csv(args.fig4)
-        fig = figures.plot_fig7(table, fig4[fig4["model"] == "leading"], marks, fig4[fig4["model"] == "exact_averaging"])
+        fig = figures.plot_fig7(table, fig4[fig4["model"] == "leading"], marks, fig4[fig4["model"] == "exact_averaging"],
+                                pd.read_csv(args.virtual))
     else:
         fig = figures.plot_fig8(table, marks)
     save_figure(fig, args.pdf, args.png)
@@ -247,6 +260,7 @@ def _parser() -> argparse.ArgumentParser:
     p = steps.add_parser("fig4-plot")
     _rig_arguments(p)
     p.add_argument("--pulloff", required=True)
+    p.add_argument("--virtual", required=True, help="virtual_pulloff.csv: the simulated pull-off (not measurements)")
     _plot_arguments(p)
     p.set_defaults(run=_fig4_plot)
 
@@ -283,6 +297,15 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--zeta", type=float, required=True)
     _plot_arguments(p)
     p.set_defaults(run=_validate_compliant_plot)
+    p = steps.add_parser("virtual-pulloff", help="simulated pull-off experiment at one frequency, and the predictions")
+    _rig_arguments(p)
+    p.add_argument("--frequency-hz", type=float, required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_virtual_pulloff)
+    p = steps.add_parser("virtual-pulloff-gather")
+    p.add_argument("--parts", nargs="+", required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_virtual_pulloff_gather)
     p = steps.add_parser("validate-gather")
     _rig_arguments(p)
     p.add_argument("--parts", nargs="+", required=True)
@@ -316,6 +339,7 @@ def _parser() -> argparse.ArgumentParser:
         _rig_arguments(p)
         if name == "fig7-plot":
             p.add_argument("--fig4", required=True, help="fig4.csv: its leading-order rows are Fig. 7's asymptotes")
+            p.add_argument("--virtual", required=True, help="virtual_pulloff.csv: the simulated pull-off")
         if name == "fig6-plot":
             p.add_argument("--validation", required=True, help="rigid_grid.csv: simulated points and exact averaging")
         _plot_arguments(p)

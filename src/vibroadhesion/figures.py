@@ -101,8 +101,10 @@ def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred) -> pd.Dat
     )
 
 
-def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float) -> plt.Figure:
-    """P_cr/P_JKR against h1: leading-order and refined curves, and measured rows by source."""
+def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
+              virtual: pd.DataFrame | None = None) -> plt.Figure:
+    """P_cr/P_JKR against h1: leading-order, refined and exact-averaging curves, measured rows by source,
+    and the simulated pull-off of the virtual experiment (its own, labelled series: not measurements)."""
     fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)
     lead = table[table["model"] == "leading"]
     ax.plot(lead["h1_um"], lead["ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
@@ -111,6 +113,11 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
         ax.plot(rows["h1_um"], rows["ratio"], "--", color=f"C{k}", lw=1.0, label=f"refined, Eq. (106), {f:g} Hz")
     exact = table[table["model"] == "exact_averaging"]
     ax.plot(exact["h1_um"], exact["ratio"], "k:", lw=1.4, label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
+    if virtual is not None:
+        sim = virtual[(virtual["model"] == "simulation") & (virtual["status"] == "pulloff")]
+        for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
+            ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
+                    label=f"SIMULATED pull-off (virtual experiment), {f:g} Hz")
     markers = "osD^v<>p"
     for k, (source, rows) in enumerate(measurements.groupby("source", sort=True)):
         ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
@@ -209,7 +216,7 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 
 def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float],
-              exact: pd.DataFrame | None = None) -> plt.Figure:
+              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None) -> plt.Figure:
     """(a) Abar_cr and (b) P_cr/P_JKR against omega_check; dashed: the leading-order values (Eq. 72);
     dotted: the exact high-frequency averaging with the same criterion a_m = a_cr (Fig. 4's rows)."""
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
@@ -222,12 +229,16 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
             row = exact[np.isclose(exact["h1_um"], h1)].iloc[0]
             for ax, column in ((ax_a, "Abar_cr"), (ax_b, "ratio")):
                 ax.axhline(row[column], color=f"C{k}", ls=":", lw=1.0)
+        if virtual is not None:
+            sim = virtual[(virtual["model"] == "simulation") & (virtual["status"] == "pulloff") & np.isclose(virtual["h1_um"], h1)]
+            ax_b.plot([experiment_omega_check[f] for f in sim["frequency_hz"]], sim["pulloff_ratio"], "o", color=f"C{k}",
+                      ms=4, label="simulated pull-off (virtual experiment)" if k == 0 else None)
     for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):
         _mark_frequencies(ax, experiment_omega_check)
         ax.set(xscale="log", xlabel=r"$\check{\omega} = \omega R / v_0$", ylabel=label,
                title=f"({letter}) dashed: Eq. (72); dotted: exact averaging")
     ax_a.set_yscale("log")
-    ax_b.legend()
+    ax_b.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return fig
 
 

@@ -66,6 +66,7 @@ rule fig4_plot:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         pulloff="results/data/pulloff.csv",
+        virtual="results/validation/virtual_pulloff.csv",
         code=code("figures", "jkr", "fitting", "data", "cli", "artefacts"),
     output:
         pdf="results/fig4/fig4.pdf",
@@ -74,6 +75,7 @@ rule fig4_plot:
         "results/logs/fig4_plot.log",
     shell:
         "{PYTHON} -m vibroadhesion.cli fig4-plot --setup {input.setup} --fit {input.fit} --pulloff {input.pulloff} "
+        "--virtual {input.virtual} "
         "--csv {input.csv} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -223,6 +225,7 @@ rule fig7_plot:
     input:
         csv="results/fig7/fig7.csv",
         fig4="results/fig4/fig4.csv",
+        virtual="results/validation/virtual_pulloff.csv",
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         code=code("figures", "groups", "fitting", "data", "cli", "artefacts"),
@@ -233,4 +236,4 @@ rule fig7_plot:
         "results/logs/fig7_plot.log",
     shell:
         "{PYTHON} -m vibroadhesion.cli fig7-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
-        "--fig4 {input.fig4} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+        "--fig4 {input.fig4} --virtual {input.virtual} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"

@@ -97,3 +97,34 @@ rule validation_compliant_plot:
     shell:
         "{PYTHON} -m vibroadhesion.cli validate-compliant-plot --csv {input.csv} --fig5 {input.fig5} "
         "--kappa {params.sweep[kappa]} --zeta {params.sweep[zeta]} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
+
+
+# Virtual pull-off experiment (simulated; no measured pull-off numbers are published): one job per
+# test frequency, then a gather. Its rows never go to data/, which holds measurements.
+rule virtual_pulloff:
+    """Quasi-static withdrawal of the base through periodic steady states: the simulated pull-off force."""
+    input:
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        code=code(*NUMERICS, "simulate", "exact_averaging", "virtual_pulloff", "fitting", "data", "cli", "artefacts"),
+    output:
+        "results/validation/virtual_pulloff/{frequency}Hz.csv",
+    log:
+        "results/logs/virtual_pulloff_{frequency}Hz.log",
+    benchmark:
+        "results/benchmarks/rules/virtual_pulloff_{frequency}Hz.tsv"
+    shell:
+        "{PYTHON} -m vibroadhesion.cli virtual-pulloff --setup {input.setup} --fit {input.fit} "
+        "--frequency-hz {wildcards.frequency} --out {output} 2>&1 | tee {log}"
+
+
+rule virtual_pulloff_gather:
+    input:
+        parts=expand("results/validation/virtual_pulloff/{frequency}Hz.csv", frequency=config["virtual_pulloff"]["frequencies_hz"]),
+        code=code("cli", "artefacts"),
+    output:
+        "results/validation/virtual_pulloff.csv",
+    log:
+        "results/logs/virtual_pulloff_gather.log",
+    shell:
+        "{PYTHON} -m vibroadhesion.cli virtual-pulloff-gather --parts {input.parts} --out {output} 2>&1 | tee {log}"
