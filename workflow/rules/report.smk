@@ -5,7 +5,7 @@ PAGE_INPUTS = {
              "fit_json": "results/fit/gent_schultz.json"},
     "fig4": {"fig_csv": "results/fig4/fig4.csv", "fig_png": "results/fig4/fig4.png",
              "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json",
-             "pulloff_csv": "results/data/pulloff.csv"},
+             "pulloff_csv": "results/data/pulloff.csv", "virtual_csv": "results/validation/virtual_pulloff.csv"},
     "fig5": {"fig_csv": "results/fig5/fig5.csv", "fig_png": "results/fig5/fig5.png",
              "markers_csv": "results/fig5/fig5_markers.csv", "counts_csv": "results/fig5/fig5_solution_count.csv",
              "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
