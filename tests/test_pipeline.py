@@ -30,7 +30,7 @@ COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "envi
 DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot", "fig5_data", "fig5_plot",
               "fig6_data", "fig6_plot", "fig7_data", "fig7_plot", "fig8_data", "fig8_plot",
               "validation_rigid", "validation_gather", "validation_plot", "validation_compliant",
-              "validation_compliant_plot", "virtual_pulloff", "virtual_pulloff_gather",
+              "validation_compliant_plot", "virtual_pulloff", "virtual_pulloff_gather", "benchmark_speed_vs_error",
               "execute_notebook", "render_page", "report_index", "all"}
 
 
@@ -115,7 +115,7 @@ def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
         planned = _planned_rules(pipeline_run)
     finally:
         module.write_text(original)
-    assert planned == {"benchmark_j_integrals", "benchmark_simulate", "execute_notebook", "render_page", "report_index", "all"}
+    assert planned == {"benchmark_j_integrals", "benchmark_simulate", "benchmark_speed_vs_error", "execute_notebook", "render_page", "report_index", "all"}
 
 
 @pytest.mark.pipeline

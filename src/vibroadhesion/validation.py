@@ -46,42 +46,57 @@ APPLICABILITY_LIMIT = 0.1
 TRUSTED_ERROR = 0.05
 
 
-def _row(h1_um: float, omega_check: float, model: str, status: str, values: Sequence[float] | None = None) -> dict:
-    numbers = dict(zip(QUANTITIES, values)) if values is not None else dict.fromkeys(QUANTITIES, math.nan)
-    return {"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": status, **numbers}
-
-
-def _j_model_row(h1_um: float, omega_check: float, model: str, sol) -> dict:
+def _j_model_values(sol) -> tuple[float, ...]:
     abar, abar_m, w_eff = float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio)
-    j0 = math.sqrt(w_eff)
-    pm = ((4.0 / 3.0) * abar_m**3 - 2.0 * j0 * abar_m**1.5) / 0.75  # Eq. (52)
-    return _row(h1_um, omega_check, model, "ok", (abar, abar_m, w_eff, float(sol.a_over_am), pm))
+    pm = ((4.0 / 3.0) * abar_m**3 - 2.0 * math.sqrt(w_eff) * abar_m**1.5) / 0.75  # Eq. (52)
+    return abar, abar_m, w_eff, float(sol.a_over_am), pm
+
+
+def _simulation(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
+    sim = simulate.steady_state(simulate.BaseExcitation(law, chi0, eta1, omega_check))
+    if sim.status != "converged":
+        return sim.status, None
+    return "ok", (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)
+
+
+def _leading(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
+    sol = nominal_point_contact(eta1, math.inf, chi0, law)
+    return "ok", _j_model_values(sol._replace(a_over_am=contact_radius_amplitude_ratio(sol.abar, sol.abar_m, chi0, omega_check)))
+
+
+def _refined(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
+    return "ok", _j_model_values(nominal_point_contact(eta1, omega_check, chi0, law))
+
+
+def _exact(solve):
+    def level(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
+        try:
+            sol = solve(eta1, omega_check, chi0, law)
+        except NoRootError:  # includes NoSteadyStateError
+            return "no_solution", None
+        return "ok", (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio), float(sol.a_over_am),
+                      float(sol.mean_force_ratio))
+    return level
+
+
+#: Each model level as a solver of one point: (eta1, omega_check, chi0, law) -> (status, QUANTITIES or None).
+LEVELS = {
+    "simulation": _simulation,
+    "leading": _leading,
+    "refined": _refined,
+    "exact_hb": _exact(exact_harmonic_balance.rigid_fixation),
+    "exact_averaging": _exact(exact_averaging.nominal_point_contact),
+}
 
 
 def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict]:
     """The five model levels at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
     law = GentSchultz(n)
-    eta1 = h1_um * 1e-6 / radius
     rows = []
-    sim = simulate.steady_state(simulate.BaseExcitation(law, chi0, eta1, omega_check))
-    if sim.status == "converged":
-        rows.append(_row(h1_um, omega_check, "simulation", "ok",
-                         (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)))
-    else:
-        rows.append(_row(h1_um, omega_check, "simulation", sim.status))
-    leading = nominal_point_contact(eta1, math.inf, chi0, law)
-    leading = leading._replace(a_over_am=contact_radius_amplitude_ratio(leading.abar, leading.abar_m, chi0, omega_check))
-    rows.append(_j_model_row(h1_um, omega_check, "leading", leading))
-    rows.append(_j_model_row(h1_um, omega_check, "refined", nominal_point_contact(eta1, omega_check, chi0, law)))
-    for model, solve in (("exact_hb", exact_harmonic_balance.rigid_fixation),
-                         ("exact_averaging", exact_averaging.nominal_point_contact)):
-        try:
-            sol = solve(eta1, omega_check, chi0, law)
-        except NoRootError:  # includes NoSteadyStateError
-            rows.append(_row(h1_um, omega_check, model, "no_solution"))
-            continue
-        rows.append(_row(h1_um, omega_check, model, "ok", (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio),
-                                                            float(sol.a_over_am), float(sol.mean_force_ratio))))
+    for model, level in LEVELS.items():
+        status, values = level(h1_um * 1e-6 / radius, omega_check, chi0, law)
+        numbers = dict(zip(QUANTITIES, values)) if values is not None else dict.fromkeys(QUANTITIES, math.nan)
+        rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": status, **numbers})
     return rows
 
 

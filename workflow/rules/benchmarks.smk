@@ -24,3 +24,23 @@ rule benchmark_simulate:
         "results/logs/benchmark_simulate.log",
     shell:
         "{PYTHON} {input.script} {output} > {log} 2>&1"
+
+
+rule benchmark_speed_vs_error:
+    """Every model level: time per solved point against its error vs the simulation at the test conditions."""
+    input:
+        script="benchmarks/speed_vs_error.py",
+        setup="results/data/setup.json",
+        fit="results/fit/gent_schultz.json",
+        errors="results/validation/rigid_errors.csv",
+        code=code(*NUMERICS, "simulate", "exact_averaging", "exact_harmonic_balance", "validation", "benchmarking",
+                  "data", "artefacts"),
+    output:
+        csv="results/benchmarks/speed_vs_error.csv",
+        txt="results/benchmarks/speed_vs_error.txt",
+        png="results/benchmarks/speed_vs_error.png",
+        pdf="results/benchmarks/speed_vs_error.pdf",
+    log:
+        "results/logs/benchmark_speed_vs_error.log",
+    shell:
+        "{PYTHON} {input.script} {input.setup} {input.fit} {input.errors} {output.csv} {output.txt} {output.png} > {log} 2>&1"

@@ -21,6 +21,7 @@ PAGE_INPUTS = {
     "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
     "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",
                    "simulate_txt": "results/benchmarks/simulate.txt",
+                   "speed_txt": "results/benchmarks/speed_vs_error.txt", "speed_png": "results/benchmarks/speed_vs_error.png",
                    "rule_tsvs": [f"results/benchmarks/rules/{r}.tsv" for r in ("fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data")]},
 }
 

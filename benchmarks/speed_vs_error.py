@@ -1,0 +1,73 @@
+"""Speed against error of every model level at the paper's experimental conditions.
+
+Usage: python benchmarks/speed_vs_error.py SETUP_JSON FIT_JSON RIGID_ERRORS_CSV OUT_CSV OUT_TXT OUT_PNG
+
+For each level of :data:`vibroadhesion.validation.LEVELS` (leading order, refined, exact harmonic
+balance, exact averaging, direct simulation) it times the solve of each point (h1 of data/setup.yaml
+x the test frequencies) on this machine, median of 3 per point, and takes the error of that level
+against the simulation at the same points from the validation artefact (largest relative error over
+Abar, abar_m, w_eff/w0, A/a_m and P_m/|P_JKR|). The simulation is the reference: its error is its
+self-consistency between rtol 1e-12 and 1e-13, measured in results/benchmarks/simulate.txt, and is
+listed as 0 here. Timings vary from run to run; the CSV is a benchmark, not a pipeline result.
+"""
+
+import json
+import statistics
+import sys
+import time
+
+import matplotlib.pyplot as plt
+import pandas as pd
+
+from vibroadhesion import groups, validation
+from vibroadhesion.artefacts import save_figure, write_csv
+from vibroadhesion.benchmarking import machine_description
+from vibroadhesion.data import read_canonical_setup
+from vibroadhesion.ratelaw import GentSchultz
+
+
+def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:
+    setup = read_canonical_setup(setup_json)
+    fit = json.load(open(fit_json, encoding="utf-8"))
+    p = {k: v["estimate"] for k, v in fit["fits"][fit["figures_use"]]["parameters"].items()}
+    chi0 = groups.chi0(p["w0"], setup.reduced_modulus, setup.radius)
+    law = GentSchultz(p["n"])
+    tests = [float(groups.omega_check(f, p["v0"], setup.radius)) for f in setup.frequencies_hz]
+    points = [(h * 1e-6 / setup.radius, w) for h in setup.amplitudes_um for w in tests]
+    errors = pd.read_csv(errors_csv)
+    at_tests = errors[errors["omega_check"].isin(tests)]
+    rows = []
+    for model, level in validation.LEVELS.items():
+        times = []
+        for eta1, w in points:
+            runs = []
+            for _ in range(3):
+                start = time.perf_counter()
+                level(eta1, w, chi0, law)
+                runs.append(time.perf_counter() - start)
+            times.append(statistics.median(runs))
+        err = at_tests[at_tests["model"] == model]["relative_error"]
+        rows.append({"model": model, "points": len(points), "seconds_per_point_median": statistics.median(times),
+                     "seconds_per_point_max": max(times),
+                     "max_relative_error_vs_simulation": 0.0 if model == "simulation" else float(err.max()),
+                     "median_relative_error_vs_simulation": 0.0 if model == "simulation" else float(err.median())})
+    table = pd.DataFrame(rows)
+    write_csv(table, out_csv)
+    text = (f"Speed against error at the experimental conditions ({len(points)} points: h1 = "
+            f"{', '.join(f'{h:g}' for h in setup.amplitudes_um)} um x {', '.join(f'{f:g}' for f in setup.frequencies_hz)} Hz)\n"
+            f"machine: {machine_description()}\n\n{table.to_string(index=False)}\n")
+    with open(out_txt, "w", encoding="utf-8") as fh:
+        fh.write(text)
+    print(text)
+    fig, ax = plt.subplots(figsize=(5.2, 3.8), layout="constrained")
+    for k, r in table.iterrows():
+        error = max(r["max_relative_error_vs_simulation"], 1e-9)
+        ax.plot(r["seconds_per_point_median"], error, "o", color=f"C{k}", ms=8, label=r["model"])
+    ax.set(xscale="log", yscale="log", xlabel="time per solved point (s, median)",
+           ylabel="largest relative error vs simulation", title="Speed against error (simulation plotted at 1e-9)")
+    ax.legend(fontsize=8)
+    save_figure(fig, out_png.replace(".png", ".pdf"), out_png)
+
+
+if __name__ == "__main__":
+    main(*sys.argv[1:7])
