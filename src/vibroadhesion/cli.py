@@ -159,8 +159,10 @@ def _validate_rigid(args: argparse.Namespace) -> None:
                                               list(_experiment_omega_check(setup, params).values()))
     rows = []
     for k, w in enumerate(omega, start=1):
-        rows.extend(validation.rigid_point(args.h1_um, float(w), chi0=chi0, radius=setup.radius, n=params.n))
-        print(f"[{k}/{len(omega)}] h1 = {args.h1_um:g} um, omega_check = {w:.6g}: simulation {rows[-5]['status']}", flush=True)
+        point = validation.rigid_point(args.h1_um, float(w), chi0=chi0, radius=setup.radius, n=params.n)
+        rows.extend(point)
+        simulated = next(r["status"] for r in point if r["model"] == "simulation")
+        print(f"[{k}/{len(omega)}] h1 = {args.h1_um:g} um, omega_check = {w:.6g}: simulation {simulated}", flush=True)
     write_csv(pd.DataFrame(rows)[validation.RIGID_GRID_COLUMNS], args.out)
 
 
@@ -286,15 +288,13 @@ def _parser() -> argparse.ArgumentParser:
     p.set_defaults(run=_validate_rigid)
     p = steps.add_parser("validate-compliant", help="Fig. 5 sweep up and down: simulation against the refined model")
     _compliant_sweep_arguments(p)
-    p.add_argument("--kappa", type=float, required=True)
-    p.add_argument("--zeta", type=float, required=True)
+    _fixation_arguments(p)
     p.add_argument("--points", type=int, required=True)
     p.add_argument("--out", required=True)
     p.set_defaults(run=_validate_compliant)
     p = steps.add_parser("validate-compliant-plot")
     p.add_argument("--fig5", required=True, help="fig5.csv: the refined curve of the same (kappa, zeta)")
-    p.add_argument("--kappa", type=float, required=True)
-    p.add_argument("--zeta", type=float, required=True)
+    _fixation_arguments(p)
     _plot_arguments(p)
     p.set_defaults(run=_validate_compliant_plot)
     p = steps.add_parser("virtual-pulloff", help="simulated pull-off experiment at one frequency, and the predictions")
@@ -360,6 +360,12 @@ def _compliant_sweep_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--h1-um", type=float, required=True)
     p.add_argument("--omega-bar-min", type=float, required=True)
     p.add_argument("--omega-bar-max", type=float, required=True)
+
+
+def _fixation_arguments(p: argparse.ArgumentParser) -> None:
+    """Stiffness and damping ratio (Eqs. 65, 66) of one compliant fixation."""
+    p.add_argument("--kappa", type=float, required=True)
+    p.add_argument("--zeta", type=float, required=True)
 
 
 def _rig_arguments(p: argparse.ArgumentParser) -> None:

@@ -100,11 +100,11 @@ def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -
 def static_abar_m(p: CompliantFixation) -> float:
     """Static contact radius a_0/a_o: Eq. (87) with J0 = 1, i.e. Eq. (82) (unique root, see below).
 
-    positive/negative = (c1 abar^(3/2) + kappa abar^(1/2) - M abar^(-3/2)) / (c2 + kappa abar^(-1)) is strictly
-    increasing in abar (numerator increasing, denominator decreasing and positive) from -inf
-    (M > 0) or c1 0 + ... (M = 0: kappa abar^(1/2)/(kappa/abar) -> 0) to infinity: one root.
+    Dividing both parts by abar^(3/2): positive/negative = (c1 abar^(3/2) + kappa abar^(1/2) - M abar^(-3/2))
+    / (c2 + kappa/abar), with c1, c2, M the coefficients of Eq. (87). The numerator increases and the
+    positive denominator decreases with abar, so the ratio increases strictly, from below 1 (it tends
+    to -inf for M > 0 and to 0 for M = 0) to infinity: exactly one root.
     """
-
     return float(abar_m_from_mean_balance(np.array([1.0]), p)[0])
 
 
@@ -123,14 +123,23 @@ def harmonic_coefficients(
     return j0, delta_c, delta_s, p_c, p_s
 
 
-def forcing_squared(log_omega_bar: ArrayLike, zeta: float) -> Array:
-    """(1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2, the right-hand side of Eq. (90) over eta1^2.
+def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
+    """|1 - omega_bar^2 + 2 i zeta omega_bar|: the right-hand side of Eq. (90) is eta1^2 times its square.
 
     Taken from ln omega_bar with 1 - omega_bar^2 = -expm1(2 ln omega_bar): no cancellation near
-    the anti-resonance omega_bar = 1, where the solution depends on this difference alone.
+    the anti-resonance omega_bar = 1, where the solution depends on this difference alone; the
+    modulus by hypot, without overflow.
     """
     s = np.asarray(log_omega_bar, dtype=float)
-    return np.expm1(2.0 * s) ** 2 + 4.0 * zeta**2 * np.exp(2.0 * s)
+    return np.hypot(np.expm1(2.0 * s), 2.0 * zeta * np.exp(s))
+
+
+def amplitude_log_residual(log_omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
+                           p: CompliantFixation) -> Array:
+    """Eq. (90) in logarithms, ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|), from the harmonic
+    coefficients of any model level (Eqs. 93-96 here, Eqs. 125-126 in exact_harmonic_balance)."""
+    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
+    return np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - np.log(forcing_modulus(log_omega_bar, p.zeta))
 
 
 def residual(x: ArrayLike, p: CompliantFixation, law: RateLaw) -> Array:
@@ -142,16 +151,14 @@ def residual(x: ArrayLike, p: CompliantFixation, law: RateLaw) -> Array:
     omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
     j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
     positive, negative = mean_balance_parts(abar_m, j0, p)
-    xi_c, xi_s = xi_coefficients(x[:, 0], omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
-    forcing = np.hypot(np.expm1(2.0 * x[:, 0]), 2.0 * p.zeta * omega_bar)  # sqrt of forcing_squared, overflow-free
-    amplitude = np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - np.log(forcing)
-    return np.stack([positive / negative - 1.0, amplitude], axis=1)
+    return np.stack([positive / negative - 1.0, amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, p)], axis=1)
 
 
-def xi_coefficients(log_omega_bar: Array, omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
-        zeta: float) -> tuple[Array, Array]:
+def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
+                    zeta: float) -> tuple[Array, Array]:
     """xi_c, xi_s of Eqs. (91)-(92) from the harmonic coefficients (any model level that provides them)."""
-    stiffness = -np.expm1(2.0 * log_omega_bar)  # 1 - omega_bar^2
+    log_omega_bar = np.asarray(log_omega_bar, dtype=float)
+    omega_bar, stiffness = np.exp(log_omega_bar), -np.expm1(2.0 * log_omega_bar)  # stiffness = 1 - omega_bar^2
     return (stiffness * delta_c + 2.0 * zeta * omega_bar * delta_s + p_c,
             stiffness * delta_s - 2.0 * zeta * omega_bar * delta_c + p_s)
 
@@ -163,8 +170,8 @@ def residual_linear(omega_bar: float, abar_m: float, abar: float, p: CompliantFi
     """
     j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
     positive, negative = mean_balance_parts(abar_m, j0, p)
-    xi_c, xi_s = xi_coefficients(np.log(omega_bar), omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
-    rhs = p.eta1**2 * forcing_squared(math.log(omega_bar), p.zeta)
+    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_c, delta_s, p_c, p_s, p.zeta)
+    rhs = (p.eta1 * forcing_modulus(math.log(omega_bar), p.zeta)) ** 2
     return float((positive - negative) / negative), float((xi_c**2 + xi_s**2 - rhs) / rhs)
 
 
@@ -256,6 +263,11 @@ def pulloff_by_scan(omega_bar: float, p: CompliantFixation, law: RateLaw, log_ab
     return _roots_by_scan(omega_bar, p, law, log_abar, pulloff_closure)
 
 
+def _a_over_am(x: Array, p: CompliantFixation) -> Array:
+    """A/a_m at points x = (ln omega_bar, ln abar_m, ln Abar) (corrected Eq. 98, omega_check = omega_bar/nu0)."""
+    return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), p.chi0, np.exp(x[:, 0]) / p.nu0)
+
+
 # --- The response curve, Fig. 5 --------------------------------------------------------------
 
 
@@ -266,11 +278,10 @@ class ResponseCurve:
     parameters: CompliantFixation
     pieces: tuple[Curve, ...]  # points x = (ln omega_bar, ln abar_m, ln Abar) in trace order
     folds: Array  # (k, 3) fold points in x
-    omega_bar_range: tuple[float, float]
 
     def a_over_am(self, x: Array) -> Array:
         """A/a_m along points x (corrected Eq. 98)."""
-        return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), self.parameters.chi0, np.exp(x[:, 0]) / self.parameters.nu0)
+        return _a_over_am(x, self.parameters)
 
     def count_at(self, omega_bar: float) -> int:
         """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
@@ -302,23 +313,21 @@ def trace_response_curve(
     """
     lo, hi = (math.log(v) for v in omega_bar_range)
     res = lambda x: residual(x, p, law)  # noqa: E731
+    split = p.anti_resonance_is_exact and lo < 0.0 < hi
 
-    def a_over_am(x: Array) -> float:
-        return float(contact_radius_amplitude_ratio(math.exp(x[2]), math.exp(x[1]), p.chi0, math.exp(x[0]) / p.nu0))
+    def into_notch(x: Array) -> bool:  # ln omega_bar -> 0 from either side, Abar -> 0
+        return _a_over_am(x[None, :], p)[0] < NOTCH_FLOOR
 
-    ends = [(lo, 1.0)] + ([(hi, -1.0)] if p.anti_resonance_is_exact and lo < 0.0 < hi else [])
+    if split:
+        ends = [(lo, 1.0, into_notch), (hi, -1.0, into_notch)]
+    else:
+        ends = [(lo, 1.0, lambda x: x[0] >= hi)]
     pieces = []
-    for s0, sign in ends:
-        start = _start(math.exp(s0), p, law)
-        in_range = (lambda x: x[0] >= hi) if sign > 0 else (lambda x: x[0] <= lo)  # noqa: E731
-        if len(ends) == 2:
-            stop = lambda x: a_over_am(x) < NOTCH_FLOOR or (x[0] - 0.0) * sign > 0  # noqa: E731
-        else:
-            stop = in_range
-        curve = trace(res, start, np.array([sign, 0.0, 0.0]), stop, settings)
+    for s0, sign, stop in ends:
+        curve = trace(res, _start(math.exp(s0), p, law), np.array([sign, 0.0, 0.0]), stop, settings)
         pieces.append(_clip(curve, p, law, lo, hi))
-    folds = np.concatenate([locate_folds(res, c, settings) for c in pieces]) if pieces else np.empty((0, 3))
-    return ResponseCurve(p, tuple(pieces), folds, omega_bar_range)
+    folds = np.concatenate([locate_folds(res, c, settings) for c in pieces])
+    return ResponseCurve(p, tuple(pieces), folds)
 
 
 def _clip(curve: Curve, p: CompliantFixation, law: RateLaw, lo: float, hi: float) -> Curve:

@@ -134,7 +134,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import elementwise, minimize_scalar
 
 from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.groups import amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.roots import NoRootError
 
 Array = NDArray[np.float64]
@@ -155,8 +155,6 @@ _BETA_SPLIT = 0.25
 _N_EXISTENCE = 4.0
 #: ln of the largest double: Abar = I_op beyond it is reported, not returned as infinity.
 _LOG_MAX_DOUBLE = 709.0
-#: Mean JKR force scale: |P_JKR| = (3/4) E* a_o^3/R (Eq. 70 with w = w0).
-PHAT_JKR = -0.75
 
 
 class NoSteadyStateError(NoRootError):

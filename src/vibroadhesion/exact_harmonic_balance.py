@@ -108,9 +108,9 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-from vibroadhesion.compliant import CompliantFixation, forcing_squared, xi_coefficients
-from vibroadhesion.exact_averaging import PHAT_JKR, NoSteadyStateError
-from vibroadhesion.groups import amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.compliant import CompliantFixation, amplitude_log_residual
+from vibroadhesion.exact_averaging import NoSteadyStateError
+from vibroadhesion.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.integrals import folded_rule
 from vibroadhesion.ratelaw import GentSchultz, RateLaw
 from vibroadhesion.refined import nominal_point_contact as refined_nominal_point_contact
@@ -384,7 +384,6 @@ def compliant_residual(x: ArrayLike, p: CompliantFixation, law: RateLaw, deltaba
     k0_three_halves = 0.5 * ((4.0 / 3.0) * abar_m**3 + 2.0 * abar_m * epsilon**2 - h.mean_force)
     negative = p.kappa * k0_half + 2.0 * c_o * k0_three_halves
     delta_scale, force_scale = c_o**2, c_o**3 / p.kappa
-    xi_c, xi_s = xi_coefficients(x[:, 0], omega_bar, delta_scale * h.indentation_cos, delta_scale * h.indentation_sin,
-                     force_scale * h.force_cos, force_scale * h.force_sin, p.zeta)
-    amplitude = np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - 0.5 * np.log(forcing_squared(x[:, 0], p.zeta))
+    amplitude = amplitude_log_residual(x[:, 0], delta_scale * h.indentation_cos, delta_scale * h.indentation_sin,
+                                       force_scale * h.force_cos, force_scale * h.force_sin, p)
     return np.stack([positive / negative - 1.0, amplitude], axis=1)

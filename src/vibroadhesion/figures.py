@@ -293,10 +293,8 @@ def fig5_tables(
             for name, piece in zip(names, curve.pieces):
                 segment = np.concatenate([[0], np.cumsum(np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0]))])
                 curves.append(_fig5_rows(p, [f"{name}-{k}" for k in segment], piece.points, curve))
-            if p.anti_resonance_is_exact and omega_bar_range[0] < 1.0 < omega_bar_range[1]:
-                static = static_abar_m(p)
-                curves.append(pd.DataFrame([{**_fig5_rows(p, ["anti-resonance"], np.array([[0.0, np.log(static), 0.0]]), curve).iloc[0].to_dict(),
-                                             "Abar": 0.0, "A_over_am": 0.0}])[FIG5_COLUMNS])
+            if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
+                curves.append(_fig5_rows(p, ["anti-resonance"], np.array([[0.0, np.log(static_abar_m(p)), -np.inf]]), curve))
             markers.append(_fig5_rows(p, ["fold"] * len(curve.folds), curve.folds, curve).assign(kind="fold", frequency_hz=np.nan))
             for f, omega_bar in sorted(experiment_omega_bar.items()):
                 solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)] for am, a in curve.solutions_at(omega_bar, law)])

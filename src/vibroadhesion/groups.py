@@ -26,6 +26,11 @@ def contact_radius_scale(w0: float, reduced_modulus: float, radius: float) -> fl
     return (2.0 * math.pi * w0 * radius**2 / reduced_modulus) ** (1.0 / 3.0)
 
 
+#: The JKR pull-off force in the units Phat = P R/(E* a_o^3): P_JKR = -(3/2) pi w0 R and
+#: pi w0 R^2/(E* a_o^3) = 1/2 (Eq. 86), so Phat_JKR = -3/4 and P/|P_JKR| = Phat/(3/4).
+PHAT_JKR = -0.75
+
+
 def contact_radius_ratio(chi0: float) -> float:
     """c_o = a_o / R = 2^(1/3) 3^(-2/3) chi0 (text below Eq. 86)."""
     return 2.0 ** (1 / 3) * 3.0 ** (-2 / 3) * chi0

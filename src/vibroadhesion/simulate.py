@@ -170,7 +170,7 @@ from numpy.typing import NDArray
 from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau, ode
 from scipy.optimize import brentq
 
-from vibroadhesion.groups import contact_radius_ratio
+from vibroadhesion.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.ratelaw import GentSchultz
 
 Array = NDArray[np.float64]
@@ -890,7 +890,7 @@ def _summarise(
     return SteadyState(
         status=status, message=message, start_state=period.start.copy(), abar_m=abar_m,
         abar=half_range, a_over_am=half_range / (rate * abar_m), a1_over_am=math.hypot(a_c, a_s) / abar_m,
-        a_c=a_c, a_s=a_s, w_eff_ratio=(quad[3] / TWO_PI) ** 2, pm_over_abs_pjkr=phat_m / 0.75,
+        a_c=a_c, a_s=a_s, w_eff_ratio=(quad[3] / TWO_PI) ** 2, pm_over_abs_pjkr=phat_m / -PHAT_JKR,
         phat_m=phat_m, phat_c=phat_c, phat_s=phat_s, deltabar_m=d_m, deltabar_c=d_c, deltabar_s=d_s,
         peak_speed=peak_speed, peak_speed_in_range=in_range, floquet_multipliers=multipliers,
         stable=bool(np.all(np.abs(multipliers) < 1.0)), periodicity_residual=residual, iterations=iterations,

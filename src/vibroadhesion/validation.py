@@ -16,8 +16,8 @@ Every row carries a ``status``: ``ok`` for a solution, the simulation's own stat
 (``contact_loss``, ``not_converged``, ...) or ``no_solution`` when a model level has no steady
 state there. Numbers of rows without a solution are NaN, never a fill-in value.
 
-Mean force of the J-integral levels: Eq. (52) in a_o units, Phat_m = (4/3) abar_m^3 - 2 J0 abar_m^(3/2),
-and P_m/|P_JKR| = Phat_m/(3/4) (Phat = P R/(E* a_o^3), |P_JKR| R/(E* a_o^3) = 3/4).
+Mean force of the J-integral levels: Eq. (52), P_m/|P_JKR| = (4/3) [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)]
+(:func:`vibroadhesion.leading_order.mean_force_over_pulloff`).
 """
 
 from __future__ import annotations
@@ -31,6 +31,7 @@ import pandas as pd
 from vibroadhesion import exact_averaging, exact_harmonic_balance, simulate
 from vibroadhesion.compliant import CompliantFixation, trace_response_curve
 from vibroadhesion.groups import contact_radius_amplitude_ratio
+from vibroadhesion.leading_order import mean_force_over_pulloff
 from vibroadhesion.ratelaw import GentSchultz
 from vibroadhesion.refined import nominal_point_contact
 from vibroadhesion.roots import NoRootError
@@ -48,7 +49,7 @@ TRUSTED_ERROR = 0.05
 
 def _j_model_values(sol) -> tuple[float, ...]:
     abar, abar_m, w_eff = float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio)
-    pm = ((4.0 / 3.0) * abar_m**3 - 2.0 * math.sqrt(w_eff) * abar_m**1.5) / 0.75  # Eq. (52)
+    pm = float(mean_force_over_pulloff(abar_m, math.sqrt(w_eff)))  # Eq. (52)
     return abar, abar_m, w_eff, float(sol.a_over_am), pm
 
 

@@ -28,9 +28,11 @@ from scipy.optimize import minimize_scalar
 import pandas as pd
 
 from vibroadhesion import exact_averaging, groups, simulate
+from vibroadhesion.groups import PHAT_JKR
 from vibroadhesion.jkr import pulloff_force
 from vibroadhesion.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.refined import pulloff_closure
 
 Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
 
@@ -82,8 +84,8 @@ def rigid_virtual_pulloff(eta1: float, omega_check: float, chi0: float, law: Gen
     minimize_scalar(mean_force, bounds=(lo, hi), method="bounded", options={"xatol": 1e-6 * step})
     d_best = min(cache, key=mean_force)  # every evaluation is cached: the most tensile orbit found
     at = cache[d_best]
-    return VirtualPulloff("pulloff", float(-at.phat_m / 0.75), float(d_best), float(at.abar_m),
-                          float((9.0 / 16.0) ** (1.0 / 3.0) * at.w_eff_ratio ** (1.0 / 3.0)), float(at.w_eff_ratio),
+    return VirtualPulloff("pulloff", float(at.phat_m / PHAT_JKR), float(d_best), float(at.abar_m),
+                          float(pulloff_closure(math.sqrt(at.w_eff_ratio))), float(at.w_eff_ratio),
                           float(at.a_over_am), solved)
 
 
