@@ -21,6 +21,7 @@ from vibroadhesion.continuation import ContinuationError
 from vibroadhesion.artefacts import save_figure, write_csv, write_json
 from vibroadhesion.fitting import FitError, fit_gent_schultz, parameters_from_fit
 from vibroadhesion.jkr import pulloff_force
+from vibroadhesion.progress import ProgressBar
 from vibroadhesion.pulloff import MODELS, GentSchultzParameters
 from vibroadhesion.roots import NoRootError
 
@@ -157,19 +158,20 @@ def _validate_rigid(args: argparse.Namespace) -> None:
     setup, params, chi0 = _rig_and_parameters(args)
     omega = validation.validation_frequencies((args.log10_omega_min, args.log10_omega_max),
                                               list(_experiment_omega_check(setup, params).values()))
-    rows = []
-    for k, w in enumerate(omega, start=1):
+    rows, progress = [], ProgressBar(len(omega), "frequencies")
+    for w in omega:
         point = validation.rigid_point(args.h1_um, float(w), chi0=chi0, radius=setup.radius, n=params.n)
         rows.extend(point)
         simulated = next(r["status"] for r in point if r["model"] == "simulation")
-        print(f"[{k}/{len(omega)}] h1 = {args.h1_um:g} um, omega_check = {w:.6g}: simulation {simulated}", flush=True)
+        progress.advance(1, f"h1 = {args.h1_um:g} um, omega_check = {w:.6g}: simulation {simulated}")
     write_csv(pd.DataFrame(rows)[validation.RIGID_GRID_COLUMNS], args.out)
 
 
 def _validate_compliant(args: argparse.Namespace) -> None:
     base, _, _, n, _ = _compliant_fixation(args)
     p = replace(base, kappa=args.kappa, zeta=args.zeta)
-    table = validation.compliant_sweep(p, n, np.geomspace(args.omega_bar_min, args.omega_bar_max, args.points))
+    table = validation.compliant_sweep(p, n, np.geomspace(args.omega_bar_min, args.omega_bar_max, args.points),
+                                       ProgressBar(2 * args.points, "frequencies"))
     write_csv(table, args.out)
     sim = table[table["model"] == "simulation"]
     print(f"{len(sim)} simulated steady states ({int((sim['status'] != 'ok').sum())} not first time), "

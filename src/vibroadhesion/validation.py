@@ -33,6 +33,7 @@ from vibroadhesion.compliant import CompliantFixation, trace_response_curve
 from vibroadhesion.groups import contact_radius_amplitude_ratio
 from vibroadhesion.leading_order import mean_force_over_pulloff
 from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.progress import ProgressBar
 from vibroadhesion.refined import nominal_point_contact
 from vibroadhesion.roots import NoRootError
 
@@ -158,7 +159,8 @@ SWEEP_COLUMNS = ["direction", "omega_bar", "model", "branch", "status", "Abar", 
                  "max_floquet_multiplier"]
 
 
-def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float]) -> pd.DataFrame:
+def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
+                    progress: ProgressBar | None = None) -> pd.DataFrame:
     """Simulated steady states along ``omega_bar`` swept up, then down, each started from the previous
     orbit (a slow sweep, so a fold of the response shows as a jump and a hysteresis loop), next to
     every solution of the refined model (Eqs. 87, 90) on its traced curve at the same frequency.
@@ -167,7 +169,7 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float]) 
     (Eq. 82); the row says which (``status``). ``stable`` and the largest |Floquet multiplier| come
     from the monodromy matrix of the simulated orbit; the refined rows carry the index of their
     solution in order of increasing Abar as ``branch`` and no stability (the averaged model does
-    not provide one).
+    not provide one). ``progress`` advances once per simulated frequency.
     """
     law = GentSchultz(n)
     fixation = simulate.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
@@ -178,10 +180,12 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float]) 
         for w in grid:
             excitation = simulate.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
             sim = simulate.steady_state(excitation, fixation, initial_state=state)
-            status = "ok"
+            status, solved = "ok", 1
             if sim.status != "converged" and state is not None:
                 sim = simulate.steady_state(excitation, fixation)
-                status = "ok, restarted from the static state"
+                status, solved = "ok, restarted from the static state", 2
+            if progress is not None:
+                progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
             if sim.status == "converged":
                 state = sim.start_state
                 rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0, "status": status,

@@ -9,7 +9,7 @@ rule validation_rigid:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "exact_averaging", "exact_harmonic_balance", "compliant", "continuation",
+        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "exact_harmonic_balance", "compliant", "continuation",
                   "validation", "figures", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/rigid/h1_{h1}.csv",
@@ -65,7 +65,7 @@ rule validation_compliant:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "compliant", "continuation", "validation", "figures", "fitting", "data", "cli",
+        code=code(*NUMERICS, "simulate", "progress", "compliant", "continuation", "validation", "figures", "fitting", "data", "cli",
                   "artefacts"),
     output:
         "results/validation/compliant_sweep.csv",
@@ -106,7 +106,7 @@ rule virtual_pulloff:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "exact_averaging", "virtual_pulloff", "fitting", "data", "cli", "artefacts"),
+        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "virtual_pulloff", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/virtual_pulloff/{frequency}Hz.csv",
     log:
