@@ -17,6 +17,7 @@ include: "workflow/rules/fit.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/validation.smk"
+include: "workflow/rules/identifiability.smk"
 include: "workflow/rules/report.smk"
 
 

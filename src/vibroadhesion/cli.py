@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import data, figures, groups, validation, virtual_pulloff
+from vibroadhesion import data, figures, groups, identifiability, validation, virtual_pulloff
 from vibroadhesion.compliant import CompliantFixation
 from vibroadhesion.continuation import ContinuationError
 from vibroadhesion.artefacts import save_figure, write_csv, write_json
@@ -197,6 +197,46 @@ def _virtual_pulloff_gather(args: argparse.Namespace) -> None:
     write_csv(pd.concat([pd.read_csv(p) for p in args.parts], ignore_index=True), args.out)
 
 
+def _pulloff_sensitivity(args: argparse.Namespace) -> None:
+    setup, params, _ = _rig_and_parameters(args)
+    shifted = identifiability.perturbed(params, args.parameter, {"plus": 1, "minus": -1}[args.sign])
+    tables = [virtual_pulloff.pulloff_table(shifted, f, np.asarray(setup.amplitudes_um), radius=setup.radius,
+                                            reduced_modulus=setup.reduced_modulus) for f in args.frequencies_hz]
+    simulated = pd.concat(tables, ignore_index=True)
+    write_csv(simulated[simulated["model"] == "simulation"].reset_index(drop=True), args.out)
+
+
+def _simulated_rigid_rows(virtual_csv: str) -> pd.DataFrame:
+    """The simulated rigid-fixation pull-off rows of virtual_pulloff.csv, as fit input (``line`` = row number)."""
+    table = pd.read_csv(virtual_csv)
+    rows = table[(table["model"] == "simulation") & (table["fixation"] == "rigid")].reset_index(drop=True)
+    return rows.assign(line=np.arange(len(rows)))
+
+
+def _identifiability_fit(args: argparse.Namespace) -> None:
+    setup, params, _ = _rig_and_parameters(args)
+    row = identifiability.fit_level(_simulated_rigid_rows(args.virtual), args.model, params, radius=setup.radius,
+                                    reduced_modulus=setup.reduced_modulus)
+    write_csv(pd.DataFrame([row]).reindex(columns=identifiability.FIT_COLUMNS), args.out)
+    print(f"{args.model}: {row['status']} in {row['seconds']:.1f} s; {row['note']}")
+
+
+def _identifiability(args: argparse.Namespace) -> None:
+    parts = {Path(p).stem: pd.read_csv(p) for p in args.sensitivity_parts}
+    missing = [f"{n}_{s}" for n in identifiability.PARAMETERS for s in ("plus", "minus") if f"{n}_{s}" not in parts]
+    if missing:
+        raise ValueError(f"sensitivity runs missing: {', '.join(missing)}")
+    sensitivity = identifiability.log_sensitivity(
+        _simulated_rigid_rows(args.virtual), {n: parts[f"{n}_plus"] for n in identifiability.PARAMETERS},
+        {n: parts[f"{n}_minus"] for n in identifiability.PARAMETERS})
+    information = identifiability.information_table(sensitivity, args.noise)
+    fits = pd.concat([pd.read_csv(p) for p in args.fits], ignore_index=True)
+    write_csv(sensitivity, args.sensitivity_out)
+    write_csv(information, args.information_out)
+    write_csv(fits, args.fits_out)
+    print(information.to_string(index=False))
+
+
 def _validate_gather(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
     grid = pd.concat([pd.read_csv(p) for p in args.parts], ignore_index=True)
@@ -234,7 +274,7 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m vibroadhesion.cli", description=__doc__)
     steps = parser.add_subparsers(dest="step", required=True)
 
-    p = steps.add_parser("fit", help="Gent–Schultz fit with both model levels")
+    p = steps.add_parser("fit", help="Gent–Schultz fit with every model level")
     p.add_argument("--setup", required=True)
     p.add_argument("--pulloff", required=True)
     p.add_argument("--figures-use", choices=MODELS, default="refined")
@@ -308,6 +348,28 @@ def _parser() -> argparse.ArgumentParser:
     p.add_argument("--parts", nargs="+", required=True)
     p.add_argument("--out", required=True)
     p.set_defaults(run=_virtual_pulloff_gather)
+    p = steps.add_parser("pulloff-sensitivity", help="simulated pull-off with one Gent-Schultz parameter scaled by exp(+-h)")
+    _rig_arguments(p)
+    p.add_argument("--parameter", choices=identifiability.PARAMETERS, required=True)
+    p.add_argument("--sign", choices=("plus", "minus"), required=True)
+    p.add_argument("--frequencies-hz", type=float, nargs="+", required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_pulloff_sensitivity)
+    p = steps.add_parser("identifiability-fit", help="fit one model level to the simulated pull-off rows")
+    _rig_arguments(p)
+    p.add_argument("--virtual", required=True)
+    p.add_argument("--model", choices=MODELS, required=True)
+    p.add_argument("--out", required=True)
+    p.set_defaults(run=_identifiability_fit)
+    p = steps.add_parser("identifiability", help="sensitivity of the simulated pull-off, Cramer-Rao bounds, fits table")
+    p.add_argument("--virtual", required=True)
+    p.add_argument("--sensitivity-parts", nargs="+", required=True)
+    p.add_argument("--fits", nargs="+", required=True)
+    p.add_argument("--noise", type=float, nargs="+", required=True)
+    p.add_argument("--sensitivity-out", required=True)
+    p.add_argument("--information-out", required=True)
+    p.add_argument("--fits-out", required=True)
+    p.set_defaults(run=_identifiability)
     p = steps.add_parser("validate-gather")
     _rig_arguments(p)
     p.add_argument("--parts", nargs="+", required=True)

@@ -1,21 +1,25 @@
 """Least-squares fit of the Gent–Schultz parameters to pull-off measurements (Sec. 3.4).
 
 Each row is (frequency f, base amplitude h1, |P_cr| in mN). The model is the pull-off
-estimate of one asymptotic level (:func:`vibroadhesion.pulloff.predict_pulloff`):
+estimate of one level (:func:`vibroadhesion.pulloff.predict_pulloff`):
 
-* ``leading`` (Eqs. 71–72) is frequency independent, so v0 does not enter: w0 and n are
-  fitted, v0 keeps its published value;
+* ``leading`` (Eqs. 71–72) and the two exact-averaging levels are frequency independent, so v0
+  does not enter: w0 and n are fitted, v0 keeps its published value;
 * ``refined`` (Eqs. 71, 106) depends on v0 through omega_check = 2 pi f R / v0. v0 is fitted
   only when it is identifiable: the rows span at least two frequencies and, with v0 free,
-  its relative standard error is below ``max_relative_se_v0``. Otherwise the fit says why and
-  keeps the published v0.
+  it stays off its bound and its relative standard error is below ``max_relative_se_v0``.
+  Otherwise the fit says why and keeps the published v0.
 
 The parameters are fitted in logarithms (positivity; ln-standard errors are relative errors)
-by Levenberg–Marquardt on relative residuals model/observed - 1 (pull-off forces span an
-order of magnitude; measurement error is roughly proportional). The covariance is
-s^2 (J^T J)^-1 with s^2 = RSS/(m - p), mapped back to natural units by the delta method. For the
-identifiability test the relative residual scale is floored at ``noise_floor``, so that
-noise-free (synthetic) rows do not make any parameter look identifiable.
+by a trust-region reflective least-squares search (scipy ``trf``) inside :data:`BOUNDS`, on
+relative residuals model/observed - 1 (pull-off forces span an order of magnitude; measurement
+error is roughly proportional). A parameter that ends on its bound is reported as such
+(``status`` ``at_bound``, no standard error): the data push it out of the physical range, which
+means the model cannot represent them, not that the bound is the answer. The covariance of the
+parameters inside the box is s^2 (J^T J)^-1 with s^2 = RSS/(m - p), mapped back to natural units
+by the delta method. For the identifiability test the relative residual scale is floored at
+``noise_floor``, so that noise-free (synthetic) rows do not make any parameter look identifiable.
+A trial point at which the model has no solution stops the fit with :class:`FitError`.
 """
 
 from __future__ import annotations
@@ -29,8 +33,18 @@ import pandas as pd
 from scipy.optimize import least_squares
 
 from vibroadhesion.pulloff import MODELS, GentSchultzParameters, Model, predict_pulloff
+from vibroadhesion.roots import NoRootError
 
 UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
+
+#: Box searched by the fit (natural units). n: the exponents for which the J-integrals, the roots
+#: of Eqs. (72), (106) and the simulation are tested (tests/test_integrals.py, test_simulate.py);
+#: w0: 1 mJ/m^2 to 10 J/m^2 spans van der Waals surfaces to tacky elastomers (the paper's 0.236);
+#: v0: 1 nm/s to 1 m/s, the reference speeds of Gent–Schultz fits (the paper's 44.5 um/s).
+BOUNDS = {"w0": (1e-3, 10.0), "n": (0.05, 4.0), "v0": (1e-9, 1.0)}
+
+#: A log-parameter closer than this to ln of a bound is on it.
+_ON_BOUND = 1e-6
 
 
 class FitError(RuntimeError):
@@ -51,38 +65,47 @@ def _residual_function(rows: pd.DataFrame, model: Model, base: GentSchultzParame
 
 def _least_squares(rows, model, base, free, geometry) -> dict[str, Any]:
     residuals, params_of = _residual_function(rows, model, base, free, geometry)
-    x0 = np.log([getattr(base, name) for name in free])
-    result = least_squares(residuals, x0, method="lm", jac="3-point", xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=2000)
+    lo, hi = np.log([BOUNDS[name] for name in free]).T
+    x0 = np.clip(np.log([getattr(base, name) for name in free]), lo, hi)
+    try:
+        result = least_squares(residuals, x0, method="trf", bounds=(lo, hi), jac="3-point",
+                               xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=300)
+    except NoRootError as exc:
+        raise FitError(f"{model} fit of {free}: the model has no solution at a trial point ({exc})") from exc
     if result.status <= 0:
         raise FitError(f"{model} fit of {free} did not converge: {result.message}")
+    on_bound = (result.x - lo < _ON_BOUND) | (hi - result.x < _ON_BOUND)
     m, p = len(rows), len(free)
     rss = float(result.fun @ result.fun)
-    jtj = result.jac.T @ result.jac
-    s2 = rss / (m - p)
     return {
         "params": params_of(result.x),
         "log_values": result.x,
-        "jtj": jtj,
-        "s2": s2,
+        "jac": result.jac,
+        "jtj": result.jac.T @ result.jac,
+        "at_bound": [name for name, b in zip(free, on_bound) if b],
+        "s2": rss / (m - p),
         "residuals": result.fun,
         "nfev": int(result.nfev),
         "message": str(result.message),
     }
 
 
-def _v0_identifiability(fit: dict[str, Any], rows: pd.DataFrame, max_relative_se: float, noise_floor: float) -> tuple[bool, str, float]:
+def _v0_identifiability(rows, model, fit, geometry, max_relative_se: float, noise_floor: float) -> tuple[bool, str]:
+    """Would v0 be determined if freed at the (w0, n) fit? Relative standard error of v0 from the
+    central-difference Jacobian in (ln w0, ln n, ln v0) there, at a residual scale floored at ``noise_floor``."""
+    residuals, _ = _residual_function(rows, model, fit["params"], ("w0", "n", "v0"), geometry)
+    x = np.log([fit["params"].w0, fit["params"].n, fit["params"].v0])
+    step = 1e-4
+    jac = np.column_stack([(residuals(x + step * e) - residuals(x - step * e)) / (2 * step) for e in np.eye(3)])
     s2 = max(fit["s2"], noise_floor**2)
     try:
-        cov = s2 * np.linalg.inv(fit["jtj"])
+        rel_se = math.sqrt(max(s2 * np.linalg.inv(jac.T @ jac)[-1, -1], 0.0))
     except np.linalg.LinAlgError:
-        return False, "v0 not identifiable: the Jacobian is singular in v0", math.inf
-    rel_se = math.sqrt(max(cov[-1, -1], 0.0))
+        return False, "v0 not identifiable: the Jacobian is singular in v0"
     if not np.isfinite(rel_se) or rel_se > max_relative_se:
-        return False, (
-            f"v0 not identifiable: its relative standard error would be {rel_se:.3g} "
-            f"(> {max_relative_se:g}) at a relative residual scale of {math.sqrt(s2):.3g}"
-        ), rel_se
-    return True, f"v0 identifiable: relative standard error {rel_se:.3g}", rel_se
+        return False, (f"v0 not identifiable: its relative standard error would be {rel_se:.3g} "
+                       f"(> {max_relative_se:g}) at a relative residual scale of {math.sqrt(s2):.3g}")
+    return True, f"v0 identifiable: relative standard error {rel_se:.3g}"
 
 
 def fit_gent_schultz(
@@ -102,34 +125,44 @@ def fit_gent_schultz(
     frequencies = sorted(set(rows["frequency_hz"].tolist()))
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
 
-    if model == "leading":
-        free, v0_note = ("w0", "n"), "v0 not identifiable: the leading-order model (Eq. 72) does not depend on v0"
+    free = ("w0", "n")
+    if model != "refined":
+        v0_note = f"v0 not identifiable: the {model} model is frequency independent, v0 does not enter it"
     elif len(frequencies) < 2:
-        free, v0_note = ("w0", "n"), f"v0 not identifiable: the rows span {len(frequencies)} frequency (at least 2 needed)"
+        v0_note = f"v0 not identifiable: the rows span {len(frequencies)} frequency (at least 2 needed)"
+    elif len(rows) <= 3:
+        v0_note = f"v0 not identifiable: {len(rows)} rows leave no degree of freedom for a third parameter"
     else:
-        free, v0_note = ("w0", "n", "v0"), ""
+        v0_note = ""
     if len(rows) <= 2:
         summary.update(status="published", note=f"{len(rows)} rows cannot determine w0 and n: published values kept",
-                       parameters=_parameter_table(published, (), None), v0_identifiable=False, v0_note=v0_note or "no fit")
+                       parameters=_parameter_table(published, (), (), None), v0_identifiable=False, v0_note=v0_note or "no fit")
         return summary
-    if "v0" in free and len(rows) <= 3:
-        free, v0_note = ("w0", "n"), f"v0 not identifiable: {len(rows)} rows leave no degree of freedom for a third parameter"
 
     fit = _least_squares(rows, model, published, free, geometry)
-    if "v0" in free:
-        identifiable, v0_note, _ = _v0_identifiability(fit, rows, max_relative_se_v0, noise_floor)
-        if not identifiable:
-            free = ("w0", "n")
-            fit = _least_squares(rows, model, published, free, geometry)
+    if not v0_note:
+        identifiable, v0_note = _v0_identifiability(rows, model, fit, geometry, max_relative_se_v0, noise_floor)
+        if identifiable:
+            with_v0 = _least_squares(rows, model, fit["params"], ("w0", "n", "v0"), geometry)
+            if "v0" in with_v0["at_bound"]:
+                v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
+            else:
+                free, fit = ("w0", "n", "v0"), with_v0
 
-    theta = np.array([getattr(fit["params"], name) for name in free])
-    cov_log = fit["s2"] * np.linalg.inv(fit["jtj"])
-    cov = cov_log * np.outer(theta, theta)
+    inside = tuple(name for name in free if name not in fit["at_bound"])
+    columns = [free.index(name) for name in inside]
+    theta = np.array([getattr(fit["params"], name) for name in inside])
+    jac = fit["jac"][:, columns]
+    cov = fit["s2"] * np.linalg.inv(jac.T @ jac) * np.outer(theta, theta)
+    bound_note = "; ".join(f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: the model cannot "
+                           f"represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"])
     summary.update(
-        status="fitted",
+        status="at_bound" if fit["at_bound"] else "fitted",
+        note=bound_note,
         free_parameters=list(free),
-        parameters=_parameter_table(fit["params"], free, cov),
-        covariance={"parameters": list(free), "matrix": cov.tolist()},
+        at_bound=fit["at_bound"],
+        parameters=_parameter_table(fit["params"], free, inside, cov),
+        covariance={"parameters": list(inside), "matrix": cov.tolist()},
         residuals_mN=[{"line": int(line), "residual": float(r * obs)}
                       for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"])],
         rms_relative_residual=float(np.sqrt(np.mean(fit["residuals"] ** 2))),
@@ -141,13 +174,16 @@ def fit_gent_schultz(
     return summary
 
 
-def _parameter_table(params: GentSchultzParameters, free: tuple[str, ...], cov: np.ndarray | None) -> dict[str, Any]:
+def _parameter_table(params: GentSchultzParameters, free: tuple[str, ...], inside: tuple[str, ...],
+                     cov: np.ndarray | None) -> dict[str, Any]:
     table = {}
     for name in ("w0", "n", "v0"):
         entry: dict[str, Any] = {"estimate": getattr(params, name), "unit": UNITS[name]}
-        if name in free and cov is not None:
-            k = free.index(name)
+        if name in inside and cov is not None:
+            k = inside.index(name)
             entry.update(std_error=math.sqrt(max(cov[k, k], 0.0)), source="fitted")
+        elif name in free:
+            entry.update(std_error=None, source=f"fitted, on its bound {BOUNDS[name]}")
         else:
             entry.update(std_error=None, source="published (Fig. 4 caption)")
         table[name] = entry
