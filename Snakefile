@@ -1,4 +1,5 @@
-# Vibroadhesion pipeline: `snakemake -c2` regenerates every artefact under results/.
+# Vibroadhesion pipeline: `snakemake -c2` regenerates the figures, the fit and their report pages;
+# `snakemake -c2 validation` adds the checks against the direct simulation (slower; see README).
 # Rules live in workflow/rules/*.smk; settings in workflow/config.yaml (schema-validated).
 from snakemake.utils import min_version, validate
 
@@ -26,6 +27,18 @@ rule all:
     input:
         "results/fit/gent_schultz.json",
         expand("results/{fig}/{fig}.{ext}", fig=FIGURES, ext=["csv", "pdf", "png"]),
+        "results/report/index.html",
+
+
+rule validation:
+    """Every model level against the direct simulation, the virtual pull-off experiment with both
+    fixations, the identifiability of the Gent-Schultz parameters, the speed-against-error
+    benchmarks, and their report pages."""
+    input:
         "results/validation/rigid_error_maps.png",
         "results/validation/compliant_sweep.png",
-        "results/report/index.html",
+        "results/validation/virtual_pulloff.csv",
+        "results/validation/identifiability/fits.csv",
+        "results/validation/identifiability/information.csv",
+        "results/benchmarks/speed_vs_error.csv",
+        "results/report/validation_index.html",

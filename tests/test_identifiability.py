@@ -125,3 +125,25 @@ def test_refined_fit_of_simulated_rows_says_v0_is_not_identifiable() -> None:
     assert fit["v0_identifiable"] is False
     assert fit["v0_note"].startswith("v0 not identifiable")
     assert fit["parameters"]["v0"]["estimate"] == PUBLISHED.v0 and fit["parameters"]["v0"]["std_error"] is None
+
+
+def test_recommendation_picks_the_smallest_misfit_and_trusts_only_unbiased_parameters() -> None:
+    """Synthetic tables: level B misfits least; its w0 bias (1 %) is inside the 4 % Cramer-Rao error, its n bias
+    (-80 %) is not; v0 (SE 80 %) is not identifiable. A failed level is never recommended."""
+    nan = math.nan
+    fits = pd.DataFrame([
+        {"model": "A", "status": "fitted", "rms_relative_residual": 0.20, "max_relative_residual": 0.3,
+         "w0_error": 0.5, "n_error": 0.1, "v0_error": nan},
+        {"model": "B", "status": "fitted", "rms_relative_residual": 0.05, "max_relative_residual": 0.13,
+         "w0_error": 0.01, "n_error": -0.8, "v0_error": nan},
+        {"model": "C", "status": "failed", "rms_relative_residual": nan, "max_relative_residual": nan,
+         "w0_error": nan, "n_error": nan, "v0_error": nan},
+    ])
+    sensitivity = pd.DataFrame({"dlnP_dlnw0": [1.0, 0, 0], "dlnP_dlnn": [0, 25.0, 0], "dlnP_dlnv0": [0, 0, 0.05],
+                                "h1_um": [20.0, 100.0, 60.0]})
+    information = identifiability.information_table(sensitivity.iloc[:, :3], [0.04])
+    text = identifiability.recommendation(fits, information, sensitivity, 0.04)
+    assert text.startswith("Fit real data with **B**")
+    assert "Trust its **w0** (bias +1.0 %" in text
+    assert "Do not trust its n: bias -80 %" in text and "at h1 = 100 um" in text
+    assert "v0 is not identifiable" in text and "C" not in text.split("against")[1].split(".")[0]

@@ -1,4 +1,5 @@
 # Report: each page is a notebook executed by papermill, then rendered to HTML by nbconvert.
+from vibroadhesion.report import PAGES as REPORT_PAGES, VALIDATION_PAGES as VALIDATION_REPORT_PAGES
 
 PAGE_INPUTS = {
     "fig3": {"fig_csv": "results/fig3/fig3.csv", "fig_png": "results/fig3/fig3.png",
@@ -19,6 +20,10 @@ PAGE_INPUTS = {
                    "sweep_png": "results/validation/compliant_sweep.png",
                    "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
     "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
+    "identifiability": {"fits_csv": "results/validation/identifiability/fits.csv",
+                        "information_csv": "results/validation/identifiability/information.csv",
+                        "sensitivity_csv": "results/validation/identifiability/sensitivity.csv",
+                        "virtual_csv": "results/validation/virtual_pulloff.csv", "fit_json": "results/fit/gent_schultz.json"},
     "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",
                    "simulate_txt": "results/benchmarks/simulate.txt",
                    "speed_txt": "results/benchmarks/speed_vs_error.txt", "speed_png": "results/benchmarks/speed_vs_error.png",
@@ -65,13 +70,17 @@ rule render_page:
 
 
 rule report_index:
+    """Index of the figure pages (default target) or of the validation pages (``validation`` target)."""
     input:
-        expand("results/report/{page}.html", page=list(PAGE_INPUTS)),
+        lambda wc: expand("results/report/{page}.html",
+                          page=[stem for stem, _ in (REPORT_PAGES if wc.index == "index" else VALIDATION_REPORT_PAGES)]),
         code=code("report"),
     output:
-        "results/report/index.html",
+        "results/report/{index}.html",
+    wildcard_constraints:
+        index="index|validation_index",
     log:
-        "results/logs/report_index.log",
+        "results/logs/report_{index}.log",
     localrule: True
     shell:
         "{PYTHON} -c 'from vibroadhesion.report import write_index; write_index(\"{output}\")' > {log} 2>&1"
