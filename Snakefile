@@ -31,9 +31,9 @@ rule all:
 
 
 rule validation:
-    """Every model level against the direct simulation, the virtual pull-off experiment with both
-    fixations, the identifiability of the Gent-Schultz parameters, the speed-against-error
-    benchmarks, and their report pages."""
+    """Every model level against the direct simulation, the compliant resonance sweep, the
+    identifiability of the Gent-Schultz parameters from the virtual pull-off experiment, the
+    speed-against-error benchmarks, and their report pages."""
     input:
         "results/validation/rigid_error_maps.png",
         "results/validation/compliant_sweep.png",
