@@ -30,6 +30,7 @@ import pandas as pd
 from vibroadhesion import exact_averaging, groups, simulate
 from vibroadhesion.groups import PHAT_JKR
 from vibroadhesion.jkr import pulloff_force
+from vibroadhesion.progress import ProgressBar
 from vibroadhesion.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.ratelaw import GentSchultz
 from vibroadhesion.refined import pulloff_closure
@@ -101,13 +102,13 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
     jkr_mN = float(-pulloff_force(params.w0, radius)) * 1e3
-    rows = []
+    rows, progress = [], ProgressBar(len(h1_um), "amplitudes")
     for h1 in np.asarray(h1_um, dtype=float):
         result = rigid_virtual_pulloff(h1 * 1e-6 / radius, omega_check, chi0, law)
         rows.append({"model": "simulation", "h1_um": h1, "status": result.status, "pulloff_ratio": result.ratio,
                      "abar_m": result.abar_m, "abar_cr": result.abar_cr, "steady_states": result.steady_states})
-        print(f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, P/P_JKR = {result.ratio:.6g} "
-              f"({result.steady_states} steady states)", flush=True)
+        progress.advance(result.steady_states, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
+                                               f"P/P_JKR = {result.ratio:.6g}")
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     for model in ("leading", "refined"):
         pred = predict_pulloff(model, params, frequency_hz, h1_um, **geometry)
