@@ -123,7 +123,7 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
         sim = _simulated_rigid_pulloff(virtual)
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
-                    label=f"SIMULATED pull-off (virtual experiment, rigid fixation), {f:g} Hz")
+                    label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
     markers = "osD^v<>p"
     for k, (source, rows) in enumerate(measurements.groupby("source", sort=True)):
         ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
