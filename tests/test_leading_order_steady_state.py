@@ -13,7 +13,10 @@ E* = R = 1, w0 = chi0^3/(9 pi) from Eq. 64, a_o = (2 pi w0)^(1/3) from its defin
   (30-digit J's), and the number of roots counted along Abar (Eq. 87 solved for abar_m at each
   Abar by bisection, sign changes of Eq. 43 counted; J's from the quadrature, which
   test_integrals checks against mpmath to 1e-12);
-* Eqs. (67)–(69) and (72) for a_m = a_cr; Appendix B's anti-resonance (Abar = 0 exactly);
+* Eqs. (67)–(69) and (72) for a_m = a_cr, and the roots of the printed Eqs. (67)–(69) (30-digit J's at
+  each root, sign changes counted on a grid) for the pull-off of any fixation; its limits (rigid, stiff
+  spring, mass far above resonance: Eq. 72) and the refined compliant pull-off as omega_check -> infinity;
+  Appendix B's anti-resonance (Abar = 0 exactly);
 * the nominal point contact of :mod:`vibroadhesion.refined` at omega_check = inf (Eqs. 99/123).
 """
 
@@ -27,12 +30,15 @@ import pytest
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.integrals import j_integrals
+from vibroadhesion.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.leading_order import (
     Fixation,
+    critical_abars,
     fixation_transmissibility,
     indentation_amplitude,
     internal_variable,
     mean_balance_residual,
+    pulloff_leading,
     steady_states,
 )
 from vibroadhesion.ratelaw import GentSchultz
@@ -332,6 +338,78 @@ def test_amplitude_equation_at_a_cr_reproduces_eqs_67_69_and_72(kappa: float, om
         ours = (amplitude / fixation_transmissibility(abar_cr, fixation, CHI0)) ** 2
         assert abs(ours / float(printed) - 1) < 1e-13
         assert abs(amplitude / float(chi**2 / 3 * mp.cbrt(j0) * abs(jc1)) - 1) < 1e-13
+
+
+def printed_eq_67_log_excess(abar: float, kappa: float, omega_bar: float, zeta: float, eta1: float, j) -> float:
+    """ln of the left-hand side of the printed Eq. (67), with Eqs. (68)-(69), over eta1^2, at J's ``j`` = (J0, Jc1)."""
+    j0, jc1 = j
+    chi = mp.mpf(CHI0)
+    xi_c = chi**2 / 3 * mp.cbrt(j0) * (1 - omega_bar**2) * jc1 + chi**3 / (3 * kappa) * j0 * jc1
+    xi_s = -2 * chi**2 / 3 * zeta * omega_bar * mp.cbrt(j0) * jc1
+    return float(mp.log((xi_c**2 + xi_s**2) / ((1 - omega_bar**2) ** 2 + 4 * zeta**2 * omega_bar**2)) - 2 * mp.log(eta1))
+
+
+@pytest.mark.parametrize(("kappa", "omega_bar", "zeta", "count"),
+                         [(1e-3, 17.85, 0.01, 3), (1e-3, 17.85, 0.0, 3), (1e-2, 0.5, 0.05, 1), (1e-2, 3.0, 0.0, 3)])
+def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, omega_bar, zeta, count) -> None:
+    """Every root returned by critical_abars is a root of the printed Eqs. (67)-(69): the printed residual,
+    with 30-digit mpmath J's, changes sign between Abar (1 -+ 1e-9). Their number equals the sign changes of the
+    printed residual on an independent grid (8001 points in ln Abar over [-40, 40], J's from the quadrature,
+    which test_integrals checks against mpmath to 1e-12). Above the fixation's resonance a pair of roots
+    sits at the contact resonance: Abar ~ 3e7 for omega_bar = 17.85, kappa = 0.001 (the rig of Sec. 3.5.3 with
+    the assumed spring), Abar = 2.9e3 and 2.5e4 for omega_bar = 3, kappa = 0.01 (pull-off root 604); the
+    pull-off is the smallest root."""
+    n = 0.531
+    fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
+    roots = critical_abars(ETA1, fixation, CHI0, GentSchultz(n))
+    assert len(roots) == count and roots == sorted(roots)
+    for abar in roots:
+        lo, hi = (printed_eq_67_log_excess(abar * f, kappa, omega_bar, zeta, ETA1, j_integrals_mp(abar * f, n)[:2])
+                  for f in (1 - 1e-9, 1 + 1e-9))
+        assert lo * hi < 0, (abar, lo, hi)
+    grid = np.exp(np.linspace(-40.0, 40.0, 8001))
+    j0, jc1, _ = j_integrals(grid, n)
+    excess = [printed_eq_67_log_excess(a, kappa, omega_bar, zeta, ETA1, (mp.mpf(float(x)), mp.mpf(float(y))))
+              for a, x, y in zip(grid, j0, jc1)]
+    assert int(np.sum(np.diff(np.sign(excess)) != 0)) == count
+    estimate = pulloff_leading(ETA1, CHI0, GentSchultz(n), fixation)
+    assert float(estimate.abar_cr) == roots[0] and float(estimate.ratio) == float(estimate.j0) ** 2  # Eq. (71)
+
+
+@pytest.mark.parametrize("n", EXPONENTS)
+def test_fixation_pulloff_is_eq_72_for_rigid_and_tends_to_it_for_a_stiff_or_a_heavy_fixation(n: float) -> None:
+    """Fixation.rigid() is Eq. (72) exactly (the same solver). A very stiff spring (kappa = 1e9, omega_bar = 0.5) and
+    a mass far above its resonance (kappa = 1e-3, omega_bar = 1e6, |d| = 1e9 kappa) give the transmissibility
+    |d|/|d + chi0 J0^(2/3)| = 1 + O(1e-10): Abar_cr within 1e-8 of Eq. (72), through the scan of Eqs. (67)-(69)."""
+    law = GentSchultz(n)
+    rigid = pulloff_leading(ETA1, CHI0, law)
+    assert pulloff_leading(ETA1, CHI0, law, Fixation.rigid()) == rigid
+    for fixation in (Fixation.spring_mass_dashpot(1e9, 0.5, 0.05), Fixation.spring_mass_dashpot(1e-3, 1e6, 0.01)):
+        assert abs(pulloff_leading(ETA1, CHI0, law, fixation).abar_cr / rigid.abar_cr - 1) < 1e-8
+
+
+def test_fixation_pulloff_at_the_anti_resonance_is_the_static_jkr_pulloff() -> None:
+    """zeta = 0, omega_bar = 1: d = 0, the contact spring is not deformed (Appendix B), Abar_cr = 0 and
+    P_cr/P_JKR = J0(0)^2 = 1 exactly."""
+    estimate = pulloff_leading(ETA1, CHI0, GentSchultz(0.531), Fixation.spring_mass_dashpot(1e-3, 1.0, 0.0))
+    assert float(estimate.abar_cr) == 0.0 and float(estimate.ratio) == 1.0
+
+
+@pytest.mark.parametrize(("kappa", "omega_bar", "zeta", "nu0"),
+                         [(1e-3, 0.5, 0.01, 1e-12), (1e-3, 17.85, 0.01, 1e-12), (1e-3, 17.85, 0.0, 1e-12),
+                          (1e-3, 1e4, 0.01, 1.227e-5)])
+def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check_to_infinity(kappa, omega_bar, zeta, nu0):
+    """The refined compliant pull-off (Eq. 90 at a_m = a_cr, compliant.pulloff_by_scan) differs from Eqs. (67)-(69)
+    by the terms of Eqs. (94), (96) in Abar nu0/omega_bar = Abar/omega_check. With nu0 = 1e-12 (omega_check ~ 1e12
+    at fixed omega_bar) and at omega_bar = 1e4 with the rig's nu0: the same roots, the smallest (the pull-off,
+    Abar ~ 50) to 1e-10, those at the contact resonance (Abar ~ 3e7, so Abar/omega_check ~ 1e-6) to 1e-4."""
+    law = GentSchultz(0.531)
+    leading = critical_abars(ETA1, Fixation.spring_mass_dashpot(kappa, omega_bar, zeta), CHI0, law)
+    refined = [abar for _, abar in pulloff_by_scan(omega_bar, CompliantFixation(CHI0, ETA1, nu0, kappa, 0.0, zeta), law,
+                                                   np.linspace(-40.0, 40.0, 4001))]
+    assert len(refined) == len(leading)
+    assert abs(refined[0] / leading[0] - 1) < 1e-10
+    assert all(abs(r / q - 1) < 1e-4 for r, q in zip(refined, leading))
 
 
 def test_mean_balance_residual_is_eq_87_and_eq_82_term_by_term() -> None:

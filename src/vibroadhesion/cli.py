@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import data, figures, groups, identifiability, validation, virtual_pulloff
+from vibroadhesion import data, figures, groups, identifiability, simulate, validation, virtual_pulloff
 from vibroadhesion.compliant import CompliantFixation
 from vibroadhesion.continuation import ContinuationError
 from vibroadhesion.artefacts import save_figure, write_csv, write_json
@@ -120,13 +120,19 @@ def _fig8_data(args: argparse.Namespace) -> None:
     write_csv(figures.fig8_table(pd.read_csv(args.fig6), chi0=chi0, n=params.n), args.out)
 
 
-def _compliant_fixation(args: argparse.Namespace):
-    """Fig. 5's base parameters (Sec. 3.5.3) from the rig, the fit and the assumed fixation of data/setup.yaml."""
+def _rig_and_fixation(args: argparse.Namespace):
+    """:func:`_rig_and_parameters` and the assumed fixation entries of data/setup.yaml (all present)."""
     setup, params, chi0 = _rig_and_parameters(args)
     fixation = setup.fixation
     missing = {"natural_frequency", "stiffness_ratio_kappa", "weight_ratio_mu", "damping_ratio_zeta"} - set(fixation)
     if missing:
-        raise ValueError(f"{args.setup}: Fig. 5 needs the fixation entries {sorted(missing)} in data/setup.yaml")
+        raise ValueError(f"{args.setup}: the compliant fixation needs the entries {sorted(missing)} in data/setup.yaml")
+    return setup, params, chi0, fixation
+
+
+def _compliant_fixation(args: argparse.Namespace):
+    """Fig. 5's base parameters (Sec. 3.5.3) from the rig, the fit and the assumed fixation of data/setup.yaml."""
+    setup, params, chi0, fixation = _rig_and_fixation(args)
     omega0 = float(fixation["natural_frequency"])
     base = CompliantFixation(chi0=chi0, eta1=float(groups.eta1(args.h1_um * 1e-6, setup.radius)),
                              nu0=groups.nu0(params.v0, omega0, setup.radius), kappa=1.0,
@@ -187,9 +193,19 @@ def _validate_compliant_plot(args: argparse.Namespace) -> None:
 
 
 def _virtual_pulloff(args: argparse.Namespace) -> None:
-    setup, params, _ = _rig_and_parameters(args)
-    table = virtual_pulloff.pulloff_table(params, args.frequency_hz, np.asarray(setup.amplitudes_um), radius=setup.radius,
-                                          reduced_modulus=setup.reduced_modulus)
+    spring = None
+    if args.fixation == "rigid":
+        setup, params, _ = _rig_and_parameters(args)
+    else:
+        if args.kappa is None or args.zeta is None:
+            raise ValueError("the compliant virtual pull-off needs --kappa and --zeta")
+        setup, params, _, fixation = _rig_and_fixation(args)  # weight and natural frequency: data/setup.yaml
+        nu0 = groups.nu0(params.v0, float(fixation["natural_frequency"]), setup.radius)
+        spring = simulate.SpringFixation(args.kappa, args.zeta, nu0, float(fixation["weight_ratio_mu"]))
+    h1 = np.asarray(setup.amplitudes_um, dtype=float)
+    table = virtual_pulloff.pulloff_table(params, args.frequency_hz, h1, radius=setup.radius,
+                                          reduced_modulus=setup.reduced_modulus, fixation=spring,
+                                          progress=ProgressBar(len(h1), "amplitudes"))
     write_csv(table, args.out)
 
 
@@ -200,8 +216,10 @@ def _virtual_pulloff_gather(args: argparse.Namespace) -> None:
 def _pulloff_sensitivity(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
     shifted = identifiability.perturbed(params, args.parameter, {"plus": 1, "minus": -1}[args.sign])
-    tables = [virtual_pulloff.pulloff_table(shifted, f, np.asarray(setup.amplitudes_um), radius=setup.radius,
-                                            reduced_modulus=setup.reduced_modulus) for f in args.frequencies_hz]
+    h1 = np.asarray(setup.amplitudes_um, dtype=float)
+    progress = ProgressBar(len(h1) * len(args.frequencies_hz), "amplitudes")
+    tables = [virtual_pulloff.pulloff_table(shifted, f, h1, radius=setup.radius, reduced_modulus=setup.reduced_modulus,
+                                            progress=progress) for f in args.frequencies_hz]
     simulated = pd.concat(tables, ignore_index=True)
     write_csv(simulated[simulated["model"] == "simulation"].reset_index(drop=True), args.out)
 
@@ -342,6 +360,9 @@ def _parser() -> argparse.ArgumentParser:
     p = steps.add_parser("virtual-pulloff", help="simulated pull-off experiment at one frequency, and the predictions")
     _rig_arguments(p)
     p.add_argument("--frequency-hz", type=float, required=True)
+    p.add_argument("--fixation", choices=("rigid", "compliant"), required=True)
+    p.add_argument("--kappa", type=float, help="compliant only: k/(E* R), Eq. (66)")
+    p.add_argument("--zeta", type=float, help="compliant only: damping ratio, Eq. (65)")
     p.add_argument("--out", required=True)
     p.set_defaults(run=_virtual_pulloff)
     p = steps.add_parser("virtual-pulloff-gather")

@@ -53,7 +53,8 @@ from vibroadhesion.continuation import ContinuationSettings, Curve, crossings, j
 from vibroadhesion.integrals import j_integrals_for_law
 from vibroadhesion.ratelaw import RateLaw
 from vibroadhesion.groups import contact_radius_amplitude_ratio
-from vibroadhesion.refined import displacement_harmonics, pulloff_closure
+from vibroadhesion.leading_order import pulloff_closure
+from vibroadhesion.refined import displacement_harmonics
 from vibroadhesion.roots import NoRootError
 
 Array = NDArray[np.float64]

@@ -101,10 +101,16 @@ def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred) -> pd.Dat
     )
 
 
+def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
+    """The rows of virtual_pulloff.csv that Figs. 4 and 7 draw: the simulated pull-off of the RIGID fixation
+    (the figures' model); the compliant rows are a different experiment (report page only)."""
+    return virtual[(virtual["fixation"] == "rigid") & (virtual["model"] == "simulation") & (virtual["status"] == "pulloff")]
+
+
 def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
               virtual: pd.DataFrame | None = None) -> plt.Figure:
     """P_cr/P_JKR against h1: leading-order, refined and exact-averaging curves, measured rows by source,
-    and the simulated pull-off of the virtual experiment (its own, labelled series: not measurements)."""
+    and the simulated pull-off of the rigidly fixed virtual experiment (its own, labelled series: not measurements)."""
     fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)
     lead = table[table["model"] == "leading"]
     ax.plot(lead["h1_um"], lead["ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
@@ -114,10 +120,10 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     exact = table[table["model"] == "exact_averaging"]
     ax.plot(exact["h1_um"], exact["ratio"], "k:", lw=1.4, label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
     if virtual is not None:
-        sim = virtual[(virtual["model"] == "simulation") & (virtual["status"] == "pulloff")]
+        sim = _simulated_rigid_pulloff(virtual)
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
-                    label=f"SIMULATED pull-off (virtual experiment), {f:g} Hz")
+                    label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
     markers = "osD^v<>p"
     for k, (source, rows) in enumerate(measurements.groupby("source", sort=True)):
         ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
@@ -230,7 +236,8 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
             for ax, column in ((ax_a, "Abar_cr"), (ax_b, "ratio")):
                 ax.axhline(row[column], color=f"C{k}", ls=":", lw=1.0)
         if virtual is not None:
-            sim = virtual[(virtual["model"] == "simulation") & (virtual["status"] == "pulloff") & np.isclose(virtual["h1_um"], h1)]
+            sim = _simulated_rigid_pulloff(virtual)
+            sim = sim[np.isclose(sim["h1_um"], h1)]
             ax_b.plot([experiment_omega_check[f] for f in sim["frequency_hz"]], sim["pulloff_ratio"], "o", color=f"C{k}",
                       ms=4, label="simulated pull-off (virtual experiment)" if k == 0 else None)
     for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):

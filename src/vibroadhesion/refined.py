@@ -38,16 +38,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibroadhesion.groups import contact_radius_amplitude_ratio
 from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.leading_order import PulloffEstimate
+from vibroadhesion.leading_order import PulloffEstimate, pulloff_closure
 from vibroadhesion.ratelaw import RateLaw
 from vibroadhesion.roots import solve_log_increasing
 
 Array = NDArray[np.float64]
-
-
-def pulloff_closure(j0: Array) -> Array:
-    """abar_m = a_cr / a_o = (9/16)^(1/3) J0^(2/3): detachment at the JKR critical radius (Eqs. 61, 86)."""
-    return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
 
 
 def nominal_point_contact_closure(j0: Array) -> Array:

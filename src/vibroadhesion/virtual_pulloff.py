@@ -1,18 +1,57 @@
-"""Virtual pull-off experiment: the simulated pull-off force of the rigidly fixed indenter.
+"""Virtual pull-off experiment: the simulated pull-off force of the rigidly or compliantly fixed indenter.
 
 No measured pull-off forces behind the paper's Fig. 4 are published; this module generates the
 simulated counterpart. The base is withdrawn quasi-statically: a family of periodic steady states
 of the full model (:mod:`vibroadhesion.simulate`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
-(Eq. 11 with h0 growing), each orbit started from the previous one. Along the family the mean
-contact force P_m first grows more tensile, passes an extremum and then relaxes; under force
-control the steady state stops existing at that extremum, so the pull-off force is the most
-tensile mean force of the family. It is located by a bounded Brent minimisation between the
-family's neighbours of the extremum.
+(Eq. 11 with h0 growing), each orbit started from a prediction extrapolated from the previous two.
+Along the family the mean contact force P_m first grows more tensile, passes an extremum and then
+relaxes; the pull-off force is the most tensile mean force of the family, located by a bounded
+Brent minimisation between the family's neighbours of the extremum.
 
-If the family ends (the simulation loses contact, or a steady state cannot be found) while P_m is
-still growing more tensile, there is no extremum to report: the status says so and no number is
-returned. The paper's detachment criterion a_m = a_cr (Eq. 60, with the simulated w_eff) is
-reported next to the simulated mean radius at pull-off so that it can be checked.
+Why the extremum, with a spring in series. With the fixation of Eq. (3') the mean of Eq. (3') over
+a period gives xbar_m = mu/(kappa c_o^2) - sigma Phat_m, sigma = c_o/kappa, and the mean contact
+displacement is deltabar_m = xbar_m + deltabar0. Along the family, with the mean contact stiffness
+S = dPhat_m/ddeltabar_m,
+
+    d deltabar0 = (1 + sigma S) d deltabar_m,      dPhat_m/d deltabar0 = S / (1 + sigma S).
+
+The mean force is extremal where S = 0, while the family continues in deltabar0 as long as
+1 + sigma S > 0: it folds where S = -kappa/c_o, i.e. dP/ddelta = -k, the jump of a displacement-
+controlled test through a spring. S decreases through 0 before it reaches -kappa/c_o, so the fold
+comes after the force extremum, and the two coincide under force control (kappa -> 0); for the
+rigid fixation (sigma = 0) there is no fold before the JKR fixed-grip limit. Under force control
+the steady state is lost at the extremum, for either fixation: that is the pull-off reported.
+Between the extremum and the fold the window is narrow for a soft spring (for kappa = 0.001 at
+200 Hz, h1 = 20 um: 0.01 in deltabar0 after a withdrawal of 41): a step that lands beyond the fold
+finds no steady state, and the step is then halved towards the last orbit (bisection between the
+last orbit and the nearest failure) until an orbit past the extremum is found.
+
+Step. Most of a base withdrawal goes into the spring: by the relation above, a contact displacement
+step ``step`` needs a base step step (1 + sigma S). S is the secant stiffness of the family's last
+two orbits, and 2 abar_m for the first step: at fixed J0 the leading-order mean relations (Eqs.
+52–53) give dPhat_m/ddeltabar_m = 2 abar_m (4 abar_m^(3/2) - 3 J0)/(4 abar_m^(3/2) - J0) <= 2 abar_m,
+the frozen-radius contact stiffness K = 2 E* a_m of Eq. (C.5). S is clipped to [0, 2 abar_m]. So
+each step moves the contact by about ``step`` in deltabar_m, as in the rigid case, and the family
+has a similar number of orbits whatever kappa is.
+
+If the family ends (the simulation loses contact, or no steady state is found within the smallest
+step) while P_m is still growing more tensile, there is no extremum to report: the status says so
+and no number is returned. Where the shooting just fails to converge beyond the last orbit, the
+transient from that orbit at the failed deltabar0 tells why: ``contact_loss_before_extremum`` if it
+loses contact within END_TRANSIENT_PERIODS periods, ``no_steady_state_before_extremum`` otherwise.
+(Example: the compliant family kappa = 0.001, omega_bar = 17.85, h1 = 20 um at omega_check = 1e4 ends at
+deltabar0 = -26.146 with P_m still decreasing; its last orbit's Floquet multipliers, |lambda| <= 0.97,
+show no fold, and the transient from it at -26.15 loses contact after 60 periods.) The paper's detachment criterion a_m = a_cr (Eq. 60, with the simulated
+w_eff) is reported next to the simulated mean radius at pull-off so that it can be checked.
+
+Predictions next to the simulation (:func:`pulloff_table`). Rigid rows: Eq. (72) (``leading``),
+Eq. (106) (``refined``), the exact high-frequency averaging with the paper's criterion a_m = a_cr
+(``exact_averaging``) and its force-controlled detachment, the minimum of the mean force over a_m
+(``exact_averaging_force_minimum``). Compliant rows: Eqs. (67)–(69) with (71) (``leading``,
+:func:`vibroadhesion.leading_order.pulloff_leading` with the spring's fixation) and Eq. (90) at
+a_m = a_cr (``refined``, :func:`vibroadhesion.compliant.pulloff_by_scan`), both the smallest root
+(the first reached as the base is withdrawn, :mod:`vibroadhesion.leading_order`). There is no exact
+averaging row for the compliant fixation: the exact averaging is a model of the rigidly fixed contact.
 
 Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_eff/w0)^(1/3) (Eq. 61).
 """
@@ -23,17 +62,19 @@ import math
 from typing import Literal, NamedTuple
 
 import numpy as np
+import pandas as pd
 from scipy.optimize import minimize_scalar
 
-import pandas as pd
-
 from vibroadhesion import exact_averaging, groups, simulate
-from vibroadhesion.groups import PHAT_JKR
+from vibroadhesion.compliant import CompliantFixation, pulloff_by_scan
+from vibroadhesion.groups import PHAT_JKR, contact_radius_ratio
+from vibroadhesion.integrals import j_integrals_for_law
 from vibroadhesion.jkr import pulloff_force
+from vibroadhesion.leading_order import PULLOFF_SCAN, Fixation, pulloff_closure, pulloff_leading
 from vibroadhesion.progress import ProgressBar
 from vibroadhesion.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import pulloff_closure
+from vibroadhesion.roots import NoRootError
 
 Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
 
@@ -46,43 +87,100 @@ class VirtualPulloff(NamedTuple):
     abar_cr: float  # the paper's criterion (Eq. 61) with the simulated w_eff there
     w_eff_ratio: float
     a_over_am: float
-    steady_states: int  # periodic orbits solved along the family
+    steady_states: int  # periodic orbits solved along the family (failed attempts included)
 
 
-def rigid_virtual_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz, *,
-                          step: float = 0.2, max_steps: int = 400) -> VirtualPulloff:
-    """Pull-off of the rigidly fixed indenter from the family of steady states in deltabar0 (module docstring)."""
+#: Periods of the transient that tells how a family without an extremum ends (module docstring).
+END_TRANSIENT_PERIODS = 200
+
+
+def _ended(failure: str, solved: int) -> VirtualPulloff:
+    status: Status = "contact_loss_before_extremum" if failure == "contact_loss" else "no_steady_state_before_extremum"
+    return VirtualPulloff(status, *(math.nan,) * 6, solved)
+
+
+def _end_of_family(excitation: simulate.BaseExcitation, fixation: simulate.SpringFixation | None,
+                   last: simulate.SteadyState, failure: str) -> str:
+    """Why the family ends: the shooting's own ``contact_loss``, or else the transient from the last orbit at
+    the nearest failed deltabar0 over END_TRANSIENT_PERIODS periods (``contact_loss`` if it loses contact)."""
+    if failure == "contact_loss":
+        return failure
+    try:
+        run = simulate.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
+    except RuntimeError:
+        return failure
+    return "contact_loss" if run.status == "contact_loss" else failure
+
+
+def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz,
+                      fixation: simulate.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
+                      halvings: int = 6, iterations: int = 15) -> VirtualPulloff:
+    """Pull-off from the family of steady states in deltabar0 (module docstring); ``fixation=None`` is rigid.
+
+    ``step`` is the target change of the mean contact displacement deltabar_m per orbit; the base step
+    is step (1 + sigma S) (module docstring). After a failed orbit the next steps go at most half-way
+    to it; once the last orbit lies within step 2^-``halvings`` of the failure, the failed deltabar0 is tried
+    again from the now close prediction (a shooting that failed from a poor start converges then), and the
+    family is declared ended if it fails again.
+    An orbit started from a predicted state gets ``iterations`` shooting periods (3–6 suffice along the
+    families computed here; beyond the fold the shooting cannot converge, and the cap keeps those
+    attempts cheap); the first, from the static state, the default of :func:`simulate.steady_state`.
+    The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
+    """
+    sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
     solved = 0
 
-    def orbit(d0: float, state):
+    def excitation(d0: float) -> simulate.BaseExcitation:
+        return simulate.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0)
+
+    def orbit(d0: float, state) -> simulate.SteadyState:
         nonlocal solved
         solved += 1
-        return simulate.steady_state(simulate.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0),
-                                     initial_state=state)
+        return simulate.steady_state(excitation(d0), fixation, initial_state=state,
+                                     **({} if state is None else {"max_iterations": iterations}))
 
     family: list[tuple[float, simulate.SteadyState]] = []
-    state = None
-    for k in range(max_steps):
-        d0 = -step * k
+    failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
+    d0, state = 0.0, None
+    for _ in range(max_steps):
         orbit_k = orbit(d0, state)
         if orbit_k.status != "converged":
-            ended = "contact_loss_before_extremum" if orbit_k.status == "contact_loss" else "no_steady_state_before_extremum"
-            return VirtualPulloff(ended, *(math.nan,) * 6, solved)
-        family.append((d0, orbit_k))
-        state = orbit_k.start_state
-        if len(family) >= 3 and family[-1][1].phat_m > family[-2][1].phat_m:
-            break
+            if not family:
+                return _ended(orbit_k.status, solved)
+            if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
+                return _ended(_end_of_family(excitation(d0), fixation, family[-1][1], orbit_k.status), solved)
+            failure = (d0, orbit_k.status)
+        else:
+            family.append((d0, orbit_k))
+            if failure is not None and d0 == failure[0]:  # the earlier failure was the shooting's, not the family's
+                failure = None
+            if len(family) >= 3 and family[-1][1].phat_m > family[-2][1].phat_m:
+                break
+        d_last, last = family[-1]
+        if len(family) >= 2:
+            previous = family[-2][1]
+            stiffness = (last.phat_m - previous.phat_m) / (last.deltabar_m - previous.deltabar_m)
+        else:
+            stiffness = 2.0 * last.abar_m
+        stiffness = min(max(stiffness, 0.0), 2.0 * last.abar_m)
+        d0 = d_last - step * (1.0 + sigma * stiffness)
+        if failure is not None:
+            gap = d_last - failure[0]
+            # within step 2^-halvings of it, the failed deltabar0 itself is tried once more
+            d0 = failure[0] if gap <= step * 2.0**-halvings else max(d0, d_last - 0.5 * gap)
+        state = _predicted_state(family, d0, sigma * stiffness)
     else:
-        return VirtualPulloff("no_steady_state_before_extremum", *(math.nan,) * 6, solved)
-    (hi, _), (mid, middle), (lo, _) = family[-3:]
+        return _ended("not_converged", solved)
+    bracket = family[-3:]  # (hi, mid, lo): the middle orbit is the most tensile so far
+    (hi, _), (mid, middle), (lo, _) = bracket
     cache: dict[float, simulate.SteadyState] = {mid: middle}
 
-    def mean_force(d0: float) -> float:
-        if d0 not in cache:
-            cache[d0] = orbit(d0, middle.start_state)
-        return cache[d0].phat_m if cache[d0].status == "converged" else math.inf
+    def mean_force(d: float) -> float:
+        if d not in cache:
+            cache[d] = orbit(d, _interpolated_state(bracket, d))
+        return cache[d].phat_m if cache[d].status == "converged" else math.inf
 
-    minimize_scalar(mean_force, bounds=(lo, hi), method="bounded", options={"xatol": 1e-6 * step})
+    minimize_scalar(mean_force, bounds=(lo, hi), method="bounded", options={"xatol": 1e-4 * step})
     d_best = min(cache, key=mean_force)  # every evaluation is cached: the most tensile orbit found
     at = cache[d_best]
     return VirtualPulloff("pulloff", float(at.phat_m / PHAT_JKR), float(d_best), float(at.abar_m),
@@ -90,32 +188,88 @@ def rigid_virtual_pulloff(eta1: float, omega_check: float, chi0: float, law: Gen
                           float(at.a_over_am), solved)
 
 
-COLUMNS = ["fixation", "frequency_hz", "h1_um", "model", "status", "pulloff_ratio", "pulloff_mN", "abar_m", "abar_cr",
-           "steady_states"]
+def _predicted_state(family: list[tuple[float, simulate.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
+    """Start state for the orbit at ``d0``: linear extrapolation from the last two orbits of the family;
+    from one orbit, its state with the spring's mean shifted by d xbar_m = -sigma S/(1 + sigma S) d deltabar0."""
+    d_last, last = family[-1]
+    if len(family) >= 2:
+        d_prev, previous = family[-2]
+        return last.start_state + (last.start_state - previous.start_state) * (d0 - d_last) / (d_last - d_prev)
+    state = last.start_state.copy()
+    if state.size == 3:
+        state[0] -= sigma_stiffness / (1.0 + sigma_stiffness) * (d0 - d_last)
+    return state
+
+
+def _interpolated_state(bracket: list[tuple[float, simulate.SteadyState]], d0: float) -> np.ndarray:
+    """Start state inside the bracket of the extremum: piecewise-linear in deltabar0 between its orbits."""
+    ds = np.array([d for d, _ in bracket])[::-1]  # ascending
+    states = np.array([o.start_state for _, o in bracket])[::-1]
+    return np.array([np.interp(d0, ds, states[:, i]) for i in range(states.shape[1])])
+
+
+def _refined_compliant_ratio(omega_bar: float, case: CompliantFixation, law: GentSchultz) -> float:
+    """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn)."""
+    roots = pulloff_by_scan(omega_bar, case, law, PULLOFF_SCAN)
+    if not roots:
+        raise NoRootError(f"Eq. (90) at a_m = a_cr: no root on the scan at omega_bar = {omega_bar:.6g}")
+    return float(j_integrals_for_law(roots[0][1], law)[0]) ** 2
+
+
+def _prediction(solve, case: CompliantFixation) -> dict:
+    """{status, pulloff_ratio} of one prediction: ``ok`` and the ratio, or ``no_solution`` and NaN."""
+    try:
+        return {"status": "ok", "pulloff_ratio": solve(case)}
+    except NoRootError:
+        return {"status": "no_solution", "pulloff_ratio": math.nan}
+
+
+COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "status", "pulloff_ratio", "pulloff_mN",
+           "abar_m", "abar_cr", "steady_states"]
 
 
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
-                  reduced_modulus: float) -> pd.DataFrame:
-    """results/validation/virtual_pulloff.csv rows at one frequency: the simulated (virtual) experiment
-    and the predictions of Eq. (72) (leading), Eq. (106) (refined) and the exact averaging (a_m = a_cr)."""
+                  reduced_modulus: float, fixation: simulate.SpringFixation | None = None,
+                  progress: ProgressBar | None = None) -> pd.DataFrame:
+    """results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv rows: the simulated (virtual)
+    experiment and the predictions of the module docstring, for the rigid (``fixation=None``) or the
+    spring fixation. ``progress`` advances once per amplitude with the steady states solved for it."""
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
     jkr_mN = float(-pulloff_force(params.w0, radius)) * 1e3
-    rows, progress = [], ProgressBar(len(h1_um), "amplitudes")
-    for h1 in np.asarray(h1_um, dtype=float):
-        result = rigid_virtual_pulloff(h1 * 1e-6 / radius, omega_check, chi0, law)
+    h1_um = np.asarray(h1_um, dtype=float)
+    eta1 = h1_um * 1e-6 / radius
+    rows = []
+    for h1, e in zip(h1_um, eta1):
+        result = simulated_pulloff(float(e), omega_check, chi0, law, fixation)
         rows.append({"model": "simulation", "h1_um": h1, "status": result.status, "pulloff_ratio": result.ratio,
                      "abar_m": result.abar_m, "abar_cr": result.abar_cr, "steady_states": result.steady_states})
-        progress.advance(result.steady_states, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
-                                               f"P/P_JKR = {result.ratio:.6g}")
-    geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
-    for model in ("leading", "refined"):
-        pred = predict_pulloff(model, params, frequency_hz, h1_um, **geometry)
-        rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r} for h, r in zip(h1_um, pred.ratio)]
-    exact = exact_averaging.pulloff_at_critical_radius(np.asarray(h1_um) * 1e-6 / radius, chi0, law)
-    rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
-             for h, r, a in zip(h1_um, exact.ratio, exact.abar_m)]
-    table = pd.DataFrame(rows).assign(fixation="rigid", frequency_hz=frequency_hz)
+        if progress is not None:
+            progress.advance(result.steady_states, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
+                                                   f"P/P_JKR = {result.ratio:.6g}")
+    if fixation is None:
+        geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
+        for model in ("leading", "refined"):
+            pred = predict_pulloff(model, params, frequency_hz, h1_um, **geometry)
+            rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r} for h, r in zip(h1_um, pred.ratio)]
+        exact = exact_averaging.pulloff_at_critical_radius(eta1, chi0, law)
+        rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
+                 for h, r, a in zip(h1_um, exact.ratio, exact.abar_m)]
+        for h, e in zip(h1_um, eta1):
+            minimum = exact_averaging.pulloff_at_force_minimum(float(e), chi0, law)
+            rows.append({"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok",
+                         "pulloff_ratio": float(minimum.ratio), "abar_m": float(minimum.abar_m)})
+        constants = {"fixation": "rigid", "kappa": math.nan, "zeta": math.nan}
+    else:
+        omega_bar = omega_check * fixation.nu0
+        spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
+        cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
+        solvers = {"leading": lambda case: float(pulloff_leading(case.eta1, chi0, law, spring).ratio),
+                   "refined": lambda case: _refined_compliant_ratio(omega_bar, case, law)}
+        rows += [{"model": model, "h1_um": h, **_prediction(solve, case)}
+                 for model, solve in solvers.items() for h, case in zip(h1_um, cases)]
+        constants = {"fixation": "compliant", "kappa": fixation.kappa, "zeta": fixation.zeta}
+    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **constants)
     table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN
     return table.reindex(columns=COLUMNS)

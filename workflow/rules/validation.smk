@@ -100,27 +100,45 @@ rule validation_compliant_plot:
 
 
 # Virtual pull-off experiment (simulated; no measured pull-off numbers are published): one job per
-# test frequency, then a gather. Its rows never go to data/, which holds measurements.
+# fixation (rigid, or the compliant case of config virtual_pulloff.compliant) and test frequency,
+# then a gather. Its rows never go to data/, which holds measurements.
+VIRTUAL_PULLOFF = config["virtual_pulloff"]
+
+
+def spring_arguments(wildcards):
+    """--kappa/--zeta for the compliant jobs only (so a change of them does not rerun the rigid ones)."""
+    if wildcards.fixation != "compliant":
+        return ""
+    return f"--kappa {VIRTUAL_PULLOFF['compliant']['kappa']} --zeta {VIRTUAL_PULLOFF['compliant']['zeta']}"
+
+
 rule virtual_pulloff:
     """Quasi-static withdrawal of the base through periodic steady states: the simulated pull-off force."""
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "virtual_pulloff", "fitting", "data", "cli", "artefacts"),
+        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
+                  "fitting", "data", "cli", "artefacts"),
     output:
-        "results/validation/virtual_pulloff/{frequency}Hz.csv",
+        "results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv",
+    wildcard_constraints:
+        fixation="rigid|compliant",
+        frequency=r"\d+",
+    params:
+        spring=spring_arguments,
     log:
-        "results/logs/virtual_pulloff_{frequency}Hz.log",
+        "results/logs/virtual_pulloff_{fixation}_{frequency}Hz.log",
     benchmark:
-        "results/benchmarks/rules/virtual_pulloff_{frequency}Hz.tsv"
+        "results/benchmarks/rules/virtual_pulloff_{fixation}_{frequency}Hz.tsv"
     shell:
         "{PYTHON} -m vibroadhesion.cli virtual-pulloff --setup {input.setup} --fit {input.fit} "
-        "--frequency-hz {wildcards.frequency} --out {output} 2>&1 | tee {log}"
+        "--frequency-hz {wildcards.frequency} --fixation {wildcards.fixation} {params.spring} --out {output} 2>&1 | tee {log}"
 
 
 rule virtual_pulloff_gather:
     input:
-        parts=expand("results/validation/virtual_pulloff/{frequency}Hz.csv", frequency=config["virtual_pulloff"]["frequencies_hz"]),
+        parts=expand("results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv", fixation=["rigid", "compliant"],
+                     frequency=VIRTUAL_PULLOFF["frequencies_hz"]),
         code=code("cli", "artefacts"),
     output:
         "results/validation/virtual_pulloff.csv",
