@@ -66,7 +66,7 @@ rule fig4_plot:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         pulloff="results/data/pulloff.csv",
-        virtual="results/validation/virtual_pulloff.csv",
+        virtual="results/validation/virtual_pulloff_rigid.csv",
         code=code("figures", "jkr", "fitting", "data", "cli", "artefacts"),
     output:
         pdf="results/fig4/fig4.pdf",
@@ -225,7 +225,7 @@ rule fig7_plot:
     input:
         csv="results/fig7/fig7.csv",
         fig4="results/fig4/fig4.csv",
-        virtual="results/validation/virtual_pulloff.csv",
+        virtual="results/validation/virtual_pulloff_rigid.csv",
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         code=code("figures", "groups", "fitting", "data", "cli", "artefacts"),

@@ -10,8 +10,8 @@ rule pulloff_sensitivity:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "virtual_pulloff", "identifiability", "fitting",
-                  "data", "cli", "artefacts"),
+        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
+                  "identifiability", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/identifiability/sensitivity/{parameter}_{sign}.csv",
     wildcard_constraints:
@@ -34,7 +34,7 @@ rule identifiability_fit:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        virtual="results/validation/virtual_pulloff.csv",
+        virtual="results/validation/virtual_pulloff_rigid.csv",
         code=code(*NUMERICS, "exact_averaging", "identifiability", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/identifiability/fits/{model}.csv",
@@ -52,7 +52,7 @@ rule identifiability_fit:
 rule identifiability:
     """Sensitivity of the simulated pull-off, Cramer-Rao standard errors per design and noise, fits of every level."""
     input:
-        virtual="results/validation/virtual_pulloff.csv",
+        virtual="results/validation/virtual_pulloff_rigid.csv",
         sensitivity=expand("results/validation/identifiability/sensitivity/{run}.csv", run=SENSITIVITY_RUNS),
         fits=expand("results/validation/identifiability/fits/{model}.csv",
                     model=["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]),
