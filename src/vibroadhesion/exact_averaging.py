@@ -131,7 +131,7 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import elementwise, minimize_scalar
+from scipy.optimize import elementwise
 
 from vibroadhesion.ratelaw import GentSchultz
 from vibroadhesion.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
@@ -385,16 +385,17 @@ class MeanState(NamedTuple):
     abar: Array  # internal variable omega A/v0
 
 
-def mean_state(abar_m: ArrayLike, eta1: float, chi0: float, law: GentSchultz) -> MeanState:
+def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz) -> MeanState:
     """Mean state at given abar_m for base amplitude eta1 = h1/R: beta = etahat/sqrt(abar_m), alpha = alpha*(beta).
 
-    Parametrising by abar_m (instead of deltabar0) makes a quasi-static sweep of h0 explicit: every
-    abar_m > 0 has exactly one state (for n <= 4), while a given deltabar0 may have two or none.
+    ``abar_m`` and ``eta1`` broadcast against each other. Parametrising by abar_m (instead of
+    deltabar0) makes a quasi-static sweep of h0 explicit: every abar_m > 0 has exactly one state
+    (for n <= 4), while a given deltabar0 may have two or none.
     """
-    abar_m = np.asarray(abar_m, dtype=float)
+    abar_m, etahat = np.broadcast_arrays(np.asarray(abar_m, dtype=float),
+                                         amplitude_in_contact_units(np.asarray(eta1, dtype=float), chi0))
     if np.any(~(abar_m > 0)) or np.any(~np.isfinite(abar_m)):
         raise ValueError("abar_m must be positive and finite")
-    etahat = float(amplitude_in_contact_units(eta1, chi0))
     cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
     root = np.sqrt(abar_m)
     return MeanState(
@@ -496,34 +497,43 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
                         (cycle.alpha**2).reshape(shape))
 
 
-#: Points of the coarse scan in ln abar_m that brackets the minimum of the mean force.
-_SCAN_POINTS = 49
+#: Points of the coarse scan in ln abar_m that brackets the minimum of the mean force, and of each
+#: of the nested scans that refine it (each shrinks the bracket by (points - 1)/2).
+_SCAN_POINTS = 17
+_REFINE_POINTS = 9
+_REFINEMENTS = 3
 
 
-def pulloff_at_force_minimum(eta1: float, chi0: float, law: GentSchultz) -> PulloffState:
-    """Force-controlled detachment: the minimum over abar_m of Phat_m(abar_m) at fixed etahat.
+def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> PulloffState:
+    """Force-controlled detachment: the minimum over abar_m of Phat_m(abar_m) at fixed etahat, vectorised over eta1.
 
     Under a slowly decreasing mean load the mean state is lost where d Phat_m/d abar_m = 0. The
-    minimum is located on a scan of ln abar_m over [ln(0.05 m), ln(20 m)], m = max(1, sqrt(etahat))
+    minimum is located on a scan of z = ln abar_m over [ln(0.05 m), ln(20 m)], m = max(1, sqrt(etahat))
     (the limits etahat -> 0, abar_m^(3/2) = 3/4, and etahat -> infinity, alpha ~ beta so Phat_m ~
-    (4/3) abar_m^3 - 2 etahat abar_m with minimum at sqrt(etahat/2), both lie well inside), then
-    polished by Brent's method between the neighbours of the smallest scanned value (the returned
-    force is accurate to the square of the location tolerance 1e-10). Raises when the minimum
-    sits at the end of the scan.
+    (4/3) abar_m^3 - 2 etahat abar_m with minimum at sqrt(etahat/2), both lie well inside), refined by
+    nested scans between the neighbours of the smallest value (step 0.37 in z, then 0.094, 0.023,
+    0.0058; each scan one vectorised call of :func:`mean_state` for all amplitudes), and placed at the
+    vertex of the parabola through the smallest value and its neighbours. The vertex is off by O(h^2)
+    in z for the last step h, so the force by O(h^4): 1.1e-9 relative at most over n = 0.05–4 and
+    etahat = 1e-4–1e3 against Brent's method to 1e-12 in z (tested to 1e-8). Raises when a minimum
+    sits at an end of a scan.
     """
-    etahat = float(amplitude_in_contact_units(eta1, chi0))
-    scale = max(1.0, math.sqrt(etahat))
-    grid = np.linspace(math.log(0.05 * scale), math.log(20.0 * scale), _SCAN_POINTS)
-    force = mean_state(np.exp(grid), eta1, chi0, law).mean_force
-    k = int(np.argmin(force))
-    if k in (0, _SCAN_POINTS - 1):
-        raise NoRootError(f"mean force has no interior minimum on the scan for etahat = {etahat:.6g}")
-
-    def mean_force(z: float) -> float:
-        return float(mean_state(np.array([math.exp(z)]), eta1, chi0, law).mean_force[0])
-
-    opt = minimize_scalar(mean_force, bounds=(grid[k - 1], grid[k + 1]), method="bounded", options={"xatol": 1e-10})
-    if not opt.success:
-        raise NoRootError(f"minimum of the mean force not located for etahat = {etahat:.6g}: {opt.message}")
-    state = mean_state(np.array([math.exp(opt.x)]), eta1, chi0, law)
-    return PulloffState(state.abar_m[0], state.alpha[0], state.abar[0], state.mean_force[0] / PHAT_JKR)
+    eta1 = np.asarray(eta1, dtype=float)
+    column = eta1.reshape(-1, 1)
+    etahat = amplitude_in_contact_units(column, chi0)[:, 0]
+    scale = np.maximum(1.0, np.sqrt(etahat))
+    rows = np.arange(etahat.size)
+    z = np.linspace(np.log(0.05 * scale), np.log(20.0 * scale), _SCAN_POINTS, axis=-1)
+    for refinement in range(_REFINEMENTS + 1):
+        if refinement:
+            z = np.linspace(z[rows, k - 1], z[rows, k + 1], _REFINE_POINTS, axis=-1)
+        force = mean_state(np.exp(z), column, chi0, law).mean_force
+        k = np.argmin(force, axis=1)
+        at_end = (k == 0) | (k == z.shape[1] - 1)
+        if np.any(at_end):
+            raise NoRootError(f"mean force has no interior minimum on the scan for etahat = {etahat[at_end][0]:.6g}")
+    lower, middle, upper = force[rows, k - 1], force[rows, k], force[rows, k + 1]
+    vertex = z[rows, k] - 0.5 * (z[:, 1] - z[:, 0]) * (upper - lower) / (upper - 2.0 * middle + lower)
+    state = mean_state(np.exp(vertex), column[:, 0], chi0, law)
+    return PulloffState(*(np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
+                                                                  state.mean_force / PHAT_JKR)))

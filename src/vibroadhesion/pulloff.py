@@ -75,10 +75,9 @@ def _frequency_independent(model: Model, eta1: NDArray[np.float64], chi0: float,
     distinct, back = np.unique(eta1, return_inverse=True)
     if model == "leading":
         est = pulloff_leading(distinct, chi0, law)
-    elif model == "exact_averaging":
-        state = exact_averaging.pulloff_at_critical_radius(distinct, chi0, law)
-        est = PulloffEstimate(state.abar, state.alpha, state.ratio)
     else:
-        states = [exact_averaging.pulloff_at_force_minimum(float(e), chi0, law) for e in distinct]
-        est = PulloffEstimate(*(np.array([getattr(s, name) for s in states], dtype=float) for name in ("abar", "alpha", "ratio")))
+        detachment = {"exact_averaging": exact_averaging.pulloff_at_critical_radius,
+                      "exact_averaging_force_minimum": exact_averaging.pulloff_at_force_minimum}[model]
+        state = detachment(distinct, chi0, law)
+        est = PulloffEstimate(state.abar, state.alpha, state.ratio)
     return PulloffEstimate(*(np.asarray(v)[back].reshape(eta1.shape) for v in est))

@@ -256,10 +256,9 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
         exact = exact_averaging.pulloff_at_critical_radius(eta1, chi0, law)
         rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
                  for h, r, a in zip(h1_um, exact.ratio, exact.abar_m)]
-        for h, e in zip(h1_um, eta1):
-            minimum = exact_averaging.pulloff_at_force_minimum(float(e), chi0, law)
-            rows.append({"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok",
-                         "pulloff_ratio": float(minimum.ratio), "abar_m": float(minimum.abar_m)})
+        minimum = exact_averaging.pulloff_at_force_minimum(eta1, chi0, law)
+        rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
+                 for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m)]
         constants = {"fixation": "rigid", "kappa": math.nan, "zeta": math.nan}
     else:
         omega_bar = omega_check * fixation.nu0
