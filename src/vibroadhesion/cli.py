@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import time
 from dataclasses import replace
 from pathlib import Path
 
@@ -219,9 +220,8 @@ def _pulloff_sensitivity(args: argparse.Namespace) -> None:
     h1 = np.asarray(setup.amplitudes_um, dtype=float)
     progress = ProgressBar(len(h1) * len(args.frequencies_hz), "amplitudes")
     tables = [virtual_pulloff.pulloff_table(shifted, f, h1, radius=setup.radius, reduced_modulus=setup.reduced_modulus,
-                                            progress=progress) for f in args.frequencies_hz]
-    simulated = pd.concat(tables, ignore_index=True)
-    write_csv(simulated[simulated["model"] == "simulation"].reset_index(drop=True), args.out)
+                                            progress=progress, predictions=False) for f in args.frequencies_hz]
+    write_csv(pd.concat(tables, ignore_index=True), args.out)
 
 
 def _simulated_rigid_rows(virtual_csv: str) -> pd.DataFrame:
@@ -233,10 +233,11 @@ def _simulated_rigid_rows(virtual_csv: str) -> pd.DataFrame:
 
 def _identifiability_fit(args: argparse.Namespace) -> None:
     setup, params, _ = _rig_and_parameters(args)
+    start = time.perf_counter()
     row = identifiability.fit_level(_simulated_rigid_rows(args.virtual), args.model, params, radius=setup.radius,
                                     reduced_modulus=setup.reduced_modulus)
     write_csv(pd.DataFrame([row]).reindex(columns=identifiability.FIT_COLUMNS), args.out)
-    print(f"{args.model}: {row['status']} in {row['seconds']:.1f} s; {row['note']}")
+    print(f"{args.model}: {row['status']} in {time.perf_counter() - start:.1f} s; {row['note']}")
 
 
 def _identifiability(args: argparse.Namespace) -> None:

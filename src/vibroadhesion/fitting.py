@@ -79,9 +79,7 @@ def _least_squares(rows, model, base, free, geometry) -> dict[str, Any]:
     rss = float(result.fun @ result.fun)
     return {
         "params": params_of(result.x),
-        "log_values": result.x,
         "jac": result.jac,
-        "jtj": result.jac.T @ result.jac,
         "at_bound": [name for name, b in zip(free, on_bound) if b],
         "s2": rss / (m - p),
         "residuals": result.fun,

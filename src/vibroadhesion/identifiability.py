@@ -25,7 +25,6 @@ exact sensitivity row (1, 0, 0); :func:`information_table` reports the design wi
 from __future__ import annotations
 
 import math
-import time
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -44,7 +43,7 @@ IDENTIFIABLE_RELATIVE_SE = 0.5
 LOG_STEP = 0.05
 
 FIT_COLUMNS = ["model", "status", "w0", "w0_se", "w0_error", "n", "n_se", "n_error", "v0", "v0_se", "v0_error",
-               "v0_identifiable", "rms_relative_residual", "max_relative_residual", "seconds", "note"]
+               "v0_identifiable", "rms_relative_residual", "max_relative_residual", "note"]
 
 
 def perturbed(params: GentSchultzParameters, parameter: str, sign: int, step: float = LOG_STEP) -> GentSchultzParameters:
@@ -63,12 +62,11 @@ def fit_level(rows: pd.DataFrame, model: Model, truth: GentSchultzParameters, *,
     ``*_error`` is estimate/true - 1; a fit that fails (:class:`FitError`) is a row with status
     ``failed`` and the reason, never numbers.
     """
-    start = time.perf_counter()
     try:
         summary = fit_gent_schultz(rows, model, truth, radius=radius, reduced_modulus=reduced_modulus)
     except FitError as exc:
-        return {"model": model, "status": "failed", "seconds": time.perf_counter() - start, "note": str(exc)}
-    row: dict[str, Any] = {"model": model, "status": summary["status"], "seconds": time.perf_counter() - start}
+        return {"model": model, "status": "failed", "note": str(exc)}
+    row: dict[str, Any] = {"model": model, "status": summary["status"]}
     for name in PARAMETERS:
         entry = summary["parameters"][name]
         row[name], row[f"{name}_se"] = entry["estimate"], entry["std_error"]

@@ -230,10 +230,11 @@ COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "statu
 
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
                   reduced_modulus: float, fixation: simulate.SpringFixation | None = None,
-                  progress: ProgressBar | None = None) -> pd.DataFrame:
+                  progress: ProgressBar | None = None, predictions: bool = True) -> pd.DataFrame:
     """results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv rows: the simulated (virtual)
-    experiment and the predictions of the module docstring, for the rigid (``fixation=None``) or the
-    spring fixation. ``progress`` advances once per amplitude with the steady states solved for it."""
+    experiment and, unless ``predictions`` is false, the predictions of the module docstring, for the
+    rigid (``fixation=None``) or the spring fixation. ``progress`` advances once per amplitude with the
+    steady states solved for it."""
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
@@ -248,10 +249,25 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
         if progress is not None:
             progress.advance(result.steady_states, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
                                                    f"P/P_JKR = {result.ratio:.6g}")
+    if predictions:
+        rows += _predicted_rows(params, frequency_hz, h1_um, fixation, radius=radius, reduced_modulus=reduced_modulus)
+    constants = ({"fixation": "rigid", "kappa": math.nan, "zeta": math.nan} if fixation is None
+                 else {"fixation": "compliant", "kappa": fixation.kappa, "zeta": fixation.zeta})
+    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **constants)
+    table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN
+    return table.reindex(columns=COLUMNS)
+
+
+def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray,
+                    fixation: simulate.SpringFixation | None, *, radius: float, reduced_modulus: float) -> list[dict]:
+    """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
+    law = GentSchultz(params.n)
+    chi0 = groups.chi0(params.w0, reduced_modulus, radius)
+    eta1 = h1_um * 1e-6 / radius
     if fixation is None:
-        geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
+        rows = []
         for model in ("leading", "refined"):
-            pred = predict_pulloff(model, params, frequency_hz, h1_um, **geometry)
+            pred = predict_pulloff(model, params, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus)
             rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r} for h, r in zip(h1_um, pred.ratio)]
         exact = exact_averaging.pulloff_at_critical_radius(eta1, chi0, law)
         rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
@@ -259,16 +275,11 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
         minimum = exact_averaging.pulloff_at_force_minimum(eta1, chi0, law)
         rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
                  for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m)]
-        constants = {"fixation": "rigid", "kappa": math.nan, "zeta": math.nan}
-    else:
-        omega_bar = omega_check * fixation.nu0
-        spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
-        cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
-        solvers = {"leading": lambda case: float(pulloff_leading(case.eta1, chi0, law, spring).ratio),
-                   "refined": lambda case: _refined_compliant_ratio(omega_bar, case, law)}
-        rows += [{"model": model, "h1_um": h, **_prediction(solve, case)}
-                 for model, solve in solvers.items() for h, case in zip(h1_um, cases)]
-        constants = {"fixation": "compliant", "kappa": fixation.kappa, "zeta": fixation.zeta}
-    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **constants)
-    table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN
-    return table.reindex(columns=COLUMNS)
+        return rows
+    omega_bar = float(groups.omega_check(frequency_hz, params.v0, radius)) * fixation.nu0
+    spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
+    cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
+    solvers = {"leading": lambda case: float(pulloff_leading(case.eta1, chi0, law, spring).ratio),
+               "refined": lambda case: _refined_compliant_ratio(omega_bar, case, law)}
+    return [{"model": model, "h1_um": h, **_prediction(solve, case)}
+            for model, solve in solvers.items() for h, case in zip(h1_um, cases)]
