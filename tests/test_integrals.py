@@ -21,6 +21,7 @@ import pytest
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.integrals import (
+    folded_rule,
     j_integrals,
     j_integrals_for_law,
     j_integrals_general,
@@ -122,14 +123,37 @@ def test_mpmath_reference_matches_folded_mpmath_45_digits_to_1e25(abar: float, n
 # ----------------------------------------------------------------------------- shapes
 
 
+def _reordered_sum_bound(n_terms: int, elementwise_ulps: float) -> float:
+    """Relative bound on the difference of two evaluations of a one-signed sum in different orders.
+
+    Each evaluation of sum_k x_k (x_k all of one sign, so sum |x_k| = |sum x_k|) in any order
+    has |fl(sum) - sum| <= gamma_{N-1} sum |x_k|, gamma_k = k u / (1 - k u), u = 2^-53 (Higham,
+    *Accuracy and Stability of Numerical Algorithms*, 2nd ed., Eq. 4.4); the terms themselves
+    may come from different element-wise kernels (SIMD or scalar exp, sqrt, ...), each within
+    ``elementwise_ulps`` u relatively. Two evaluations therefore differ by at most
+    2 (gamma_{N-1} + elementwise_ulps u) |sum|.
+    """
+    u = np.finfo(float).eps / 2
+    gamma = (n_terms - 1) * u / (1 - (n_terms - 1) * u)
+    return 2 * (gamma + elementwise_ulps * u)
+
+
 @pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
 def test_shapes_scalar_0d_1d_2d_agree_with_1d_call(n: float) -> None:
-    """Reference: the 1-d call. Same flat input -> bitwise equal; other batch sizes -> within 8 ulp.
+    """Reference: the 1-d call. Same flat input -> bitwise equal; other batch sizes -> within the
+    rounding bound of the rule's summation.
 
-    Rows are reduced by a BLAS matrix product whose summation order depends on the batch size
-    (gemv for one row, gemm for several), so a scalar and the same value inside a batch may
-    differ by a few ulp (measured: up to 5). Reshaping the same batch changes nothing.
+    Rows are reduced by a BLAS matrix product whose summation order (and, on some CPUs, whose
+    kernel) depends on the batch size, so a scalar and the same value inside a batch may differ
+    in the last digits. Every term of each sum has one sign (S > 0 with positive weights for J0
+    and J1; -u r with positive weights for Jc1), so the difference is bounded relatively by
+    ``_reordered_sum_bound``: N = 2 x 198 products (r @ w_r + u @ w_ur), element-wise terms
+    within 7 u each (exp <= 4 ulp in numpy's SIMD kernels, then +1, sqrt, reciprocal, product
+    and the weight product, each correctly rounded). That is 9e-14 relative; the measured
+    difference on an AMD EPYC with OpenBLAS is up to 10 ulp. Reshaping the same batch changes
+    nothing (the same flat array is reduced).
     """
+    bound = _reordered_sum_bound(2 * len(folded_rule()[0]), elementwise_ulps=7.0)
     vec = np.array([0.0, 1e-300, 1e-3, 0.7, 3.0, 41.0, 1e5, 1e12])
     ref = j_integrals(vec, n)
     assert all(r.shape == vec.shape for r in ref)
@@ -146,7 +170,7 @@ def test_shapes_scalar_0d_1d_2d_agree_with_1d_call(n: float) -> None:
         for k in range(3):
             assert np.shape(scalar[k]) == () and np.shape(zero_d[k]) == () and one[k].shape == (1,)
             assert scalar[k] == zero_d[k] == one[k][0]  # identical computation
-            assert abs(scalar[k] - ref[k][i]) <= 8 * np.spacing(abs(ref[k][i])), (a, k, scalar[k], ref[k][i])
+            assert abs(scalar[k] - ref[k][i]) <= bound * abs(ref[k][i]), (a, k, scalar[k], ref[k][i], bound)
 
 
 def test_abar_zero_gives_exactly_one_zero_one() -> None:
@@ -334,14 +358,18 @@ def test_j0_and_minus_jc1_strictly_increasing_as_proved(n: float) -> None:
     """Closed-form proof (dS/du, -dD/du > 0): J0 and -Jc1 strictly increase with Abar.
 
     Dense grid Abar in logspace(-12, 12, 4001). -Jc1 ~ Abar^n is resolvable everywhere; J0 - 1 ~
-    Abar^{2n} falls below double resolution for small Abar and large n, and it must increase strictly wherever J0 - 1 > 1e-12 (elsewhere: no step down beyond 4 ulp).
+    Abar^{2n} falls below double resolution for small Abar and large n. Each computed J0 lies
+    within the summation bound of ``_reordered_sum_bound`` of the rule's exact sum, so a step
+    may go down by at most that bound; J0 must increase strictly wherever the expected step
+    (J0 - 1)((grid ratio)^{2n} - 1), from J0 - 1 ~ Abar^{2n}, exceeds twice the bound.
     """
     abar = np.logspace(-12, 12, 4001)
     j0, jc1, j1 = j_integrals(abar, n)
+    bound = _reordered_sum_bound(2 * len(folded_rule()[0]), elementwise_ulps=7.0)
     assert np.all(np.diff(-jc1) > 0), np.min(np.diff(-jc1))
-    # unresolvable region: rounding noise of J0 = 1 + O(Abar^{2n}) may step down by an ulp or two
-    assert np.all(np.diff(j0) >= -4 * np.spacing(j0[:-1])), np.min(np.diff(j0))
-    resolvable = j0[:-1] > 1 + 1e-12
+    assert np.all(np.diff(j0) >= -bound * j0[:-1]), np.min(np.diff(j0))
+    expected_step = (j0[:-1] - 1) * ((abar[1] / abar[0]) ** (2 * n) - 1)
+    resolvable = expected_step > 2 * bound * j0[:-1]
     assert resolvable.sum() > 1000
     assert np.all(np.diff(j0)[resolvable] > 0)
     assert float(j_integrals(0.0, n)[2]) == 1.0  # J1(0) = 2/pi int_0^pi sin^2 = 1
