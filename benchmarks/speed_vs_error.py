@@ -2,7 +2,7 @@
 
 Usage: python benchmarks/speed_vs_error.py SETUP_JSON FIT_JSON RIGID_ERRORS_CSV OUT_CSV OUT_TXT OUT_PNG
 
-For each level of :data:`vibroadhesion.validation.LEVELS` (leading order, refined, exact harmonic
+For each level of :data:`vibroadhesion.experiments.validation.LEVELS` (leading order, refined, exact harmonic
 balance, exact averaging, direct simulation) it times the solve of each point (h1 of data/setup.yaml
 x the test frequencies) on this machine, median of 3 per point, and takes the error of that level
 against the simulation at the same points from the validation artefact (largest relative error over
@@ -19,11 +19,13 @@ import time
 import matplotlib.pyplot as plt
 import pandas as pd
 
-from vibroadhesion import groups, validation
-from vibroadhesion.artefacts import save_figure, write_csv
-from vibroadhesion.benchmarking import machine_description
-from vibroadhesion.data import read_canonical_setup
-from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.core import groups
+
+from vibroadhesion.experiments import validation
+from vibroadhesion.pipeline.artefacts import save_figure, write_csv
+from vibroadhesion.experiments.benchmarking import machine_description
+from vibroadhesion.pipeline.data import read_canonical_setup
+from vibroadhesion.core.ratelaw import GentSchultz
 
 
 def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:

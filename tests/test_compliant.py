@@ -17,8 +17,8 @@ import pytest
 from scipy.optimize import root
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion import figures
-from vibroadhesion.compliant import (
+from vibroadhesion.pipeline import figures
+from vibroadhesion.models.compliant import (
     NOTCH_FLOOR,
     CompliantFixation,
     newton_at_frequency,
@@ -29,10 +29,10 @@ from vibroadhesion.compliant import (
     static_abar_m,
     trace_response_curve,
 )
-from vibroadhesion.continuation import Curve, crossings, locate_folds, trace
-from vibroadhesion.integrals import j_integrals
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import nominal_point_contact, pulloff_refined
+from vibroadhesion.numerics.continuation import Curve, crossings, locate_folds, trace
+from vibroadhesion.core.integrals import j_integrals
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 
 CHI0, ETA1, NU0 = 2.589e-2, 3.883e-4, 1.227e-5  # paper, Sec. 3.5.3 (Fig. 5 caption)
 LAW = GentSchultz(0.531)
@@ -81,7 +81,7 @@ def test_continuation_passes_both_folds_and_reaches_the_end_of_the_range(folded)
     upper = folded.pieces[-1]
     assert math.isclose(math.exp(upper.points[0, 0]), 50.0, rel_tol=1e-12)  # the upper piece starts at the top
     for fold in folded.folds:
-        from vibroadhesion.continuation import jacobian
+        from vibroadhesion.numerics.continuation import jacobian
 
         jac = jacobian(lambda x: residual(x, FOLDING, LAW), fold, 1e-7)[:, 1:]
         sv = np.linalg.svd(jac, compute_uv=False)

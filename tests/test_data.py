@@ -1,4 +1,4 @@
-"""Ingestion and validation of data/setup.yaml and data/pulloff.csv (vibroadhesion.data)."""
+"""Ingestion and validation of data/setup.yaml and data/pulloff.csv (vibroadhesion.pipeline.data)."""
 
 from __future__ import annotations
 
@@ -10,8 +10,8 @@ import pandas as pd
 import pytest
 from jsonschema import Draft202012Validator
 
-from vibroadhesion import data
-from vibroadhesion.data import DataError, Setup, load_pulloff, load_setup, main
+from vibroadhesion.pipeline import data
+from vibroadhesion.pipeline.data import DataError, Setup, load_pulloff, load_setup, main
 
 ROOT = Path(__file__).resolve().parents[1]
 SETUP_YAML = ROOT / "data" / "setup.yaml"

@@ -1,4 +1,4 @@
-"""Exact averaging in the high-frequency limit (vibroadhesion.exact_averaging).
+"""Exact averaging in the high-frequency limit (vibroadhesion.models.exact_averaging).
 
 Independent references:
 
@@ -22,7 +22,7 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from vibroadhesion.exact_averaging import (
+from vibroadhesion.models.exact_averaging import (
     NoSteadyStateError,
     frozen_radius_cycle,
     mean_state,
@@ -30,9 +30,9 @@ from vibroadhesion.exact_averaging import (
     pulloff_at_critical_radius,
     pulloff_at_force_minimum,
 )
-from vibroadhesion.groups import amplitude_in_contact_units, contact_radius_ratio
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import nominal_point_contact as j_model_nominal_point_contact
+from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius_ratio
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import nominal_point_contact as j_model_nominal_point_contact
 
 CHI0 = 2.589e-2  # Sec. 3.5.3
 C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R, text below Eq. (86), written out independently
@@ -274,7 +274,7 @@ def test_nominal_point_contact_solves_alpha_star_equal_abar_m_cubed_half(n: floa
 
 @pytest.mark.parametrize("etahat", [0.1, 1.58, 7.9, 100.0])
 def test_nominal_point_contact_equation_changes_sign_once(etahat: float) -> None:
-    """Uniqueness (proof in vibroadhesion.exact_averaging): ln alpha*(etahat/u) - 3 ln u, u = sqrt(abar_m),
+    """Uniqueness (proof in vibroadhesion.models.exact_averaging): ln alpha*(etahat/u) - 3 ln u, u = sqrt(abar_m),
     is strictly decreasing on u in (etahat^(1/4), 3 (1 + etahat)^(1/3)], positive at the left end and
     negative at the right; checked on 400 points."""
     u = np.linspace(etahat**0.25 * (1 + 1e-6), 3 * (1 + etahat) ** (1 / 3), 400)

@@ -1,4 +1,4 @@
-"""Exact harmonic balance of the single-harmonic ansatz (vibroadhesion.exact_harmonic_balance).
+"""Exact harmonic balance of the single-harmonic ansatz (vibroadhesion.models.exact_harmonic_balance).
 
 Independent references:
 
@@ -11,7 +11,7 @@ Independent references:
   Abar(exact)/Abar(refined) - 1 -> c epsilon^2 (c = 19/32 for n > 1, (3/16 + 1/(8(n+3)))/n for n < 1);
 * the high-frequency expansion to O(epsilon^2), solved with J-integrals from scipy's adaptive
   quadrature (a second integrator) and scipy's fsolve;
-* the refined-model residual of vibroadhesion.compliant (Eqs. 87, 90–96), which the exact residual
+* the refined-model residual of vibroadhesion.models.compliant (Eqs. 87, 90–96), which the exact residual
   must approach as O(epsilon^2).
 """
 
@@ -26,11 +26,11 @@ from mpmath_reference import j_integrals_mp
 from scipy.integrate import quad
 from scipy.optimize import fsolve
 
-from vibroadhesion.compliant import CompliantFixation, residual
-from vibroadhesion.exact_averaging import NoSteadyStateError
-from vibroadhesion.exact_harmonic_balance import compliant_residual, exact_harmonics, rigid_fixation
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import nominal_point_contact as refined_nominal_point_contact
+from vibroadhesion.models.compliant import CompliantFixation, residual
+from vibroadhesion.models.exact_averaging import NoSteadyStateError
+from vibroadhesion.models.exact_harmonic_balance import compliant_residual, exact_harmonics, rigid_fixation
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
 
 CHI0 = 2.589e-2  # Sec. 3.5.3
 C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R (text below Eq. 86), written out independently
@@ -172,7 +172,7 @@ def test_linearisation_gives_the_printed_refined_coefficients_with_the_derived_c
 
 
 def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() -> None:
-    """Reference: vibroadhesion.compliant.residual (Eqs. 87, 90–96), the linearised system. At fixed
+    """Reference: vibroadhesion.models.compliant.residual (Eqs. 87, 90–96), the linearised system. At fixed
     (omega_bar, abar_m, Abar), epsilon = nu0 Abar/(omega_bar c_o) -> 0 with nu0: the difference of both
     columns divided by epsilon^2 must converge (change below 1e-3 relative from nu0 = 1e-5 to 1e-6) and
     the difference be below 1e-6 at nu0 = 1e-6."""

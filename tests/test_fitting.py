@@ -1,7 +1,7 @@
-"""Least-squares fit of the Gent–Schultz parameters (vibroadhesion.fitting) on synthetic rows.
+"""Least-squares fit of the Gent–Schultz parameters (vibroadhesion.experiments.fitting) on synthetic rows.
 
 Reference: the parameters chosen here. Rows are generated from them with the forward model
-(:func:`vibroadhesion.pulloff.predict_pulloff`, whose equations are checked against mpmath in
+(:func:`vibroadhesion.experiments.pulloff.predict_pulloff`, whose equations are checked against mpmath in
 test_pulloff.py); a correct fit recovers them exactly without noise, and with 1 % Gaussian
 noise its reported standard errors must cover them at the nominal rate (2 SE ~ 95 %).
 """
@@ -12,8 +12,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from vibroadhesion.fitting import fit_gent_schultz, parameters_from_fit
-from vibroadhesion.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 
 RADIUS = 0.0515
 REDUCED_MODULUS = 2 * 2.8e6 / 0.75

@@ -15,9 +15,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from vibroadhesion import identifiability, virtual_pulloff
-from vibroadhesion.fitting import fit_gent_schultz
-from vibroadhesion.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.experiments import identifiability, virtual_pulloff
+from vibroadhesion.experiments.fitting import fit_gent_schultz
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 
 RADIUS = 0.0515
 REDUCED_MODULUS = 2 * 2.8e6 / 0.75

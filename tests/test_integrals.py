@@ -1,4 +1,4 @@
-"""J-integrals of Eqs. (28), (29), (36) for the Gent–Schultz law (vibroadhesion.integrals).
+"""J-integrals of Eqs. (28), (29), (36) for the Gent–Schultz law (vibroadhesion.core.integrals).
 
 Every expected number comes from an independent reference:
 
@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.integrals import (
+from vibroadhesion.core.integrals import (
     folded_rule,
     j_integrals,
     j_integrals_for_law,
@@ -28,7 +28,7 @@ from vibroadhesion.integrals import (
     j_integrals_large_abar,
     j_integrals_small_abar,
 )
-from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.core.ratelaw import GentSchultz
 
 N_VALUES = [0.05, 0.1, 0.25, 0.531, 1.0, 1.5, 2.0, 3.0, 4.0]
 FIXED_ABAR = [0.0, 1e-12, 1e-8, 1e-4, 0.01, 0.3, 1.0, 1.5708, 2.0, 7.0, 30.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e8,

@@ -17,7 +17,7 @@ E* = R = 1, w0 = chi0^3/(9 pi) from Eq. 64, a_o = (2 pi w0)^(1/3) from its defin
   each root, sign changes counted on a grid) for the pull-off of any fixation; its limits (rigid, stiff
   spring, mass far above resonance: Eq. 72) and the refined compliant pull-off as omega_check -> infinity;
   Appendix B's anti-resonance (Abar = 0 exactly);
-* the nominal point contact of :mod:`vibroadhesion.refined` at omega_check = inf (Eqs. 99/123).
+* the nominal point contact of :mod:`vibroadhesion.models.refined` at omega_check = inf (Eqs. 99/123).
 """
 
 from __future__ import annotations
@@ -29,9 +29,9 @@ import numpy as np
 import pytest
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.integrals import j_integrals
-from vibroadhesion.compliant import CompliantFixation, pulloff_by_scan
-from vibroadhesion.leading_order import (
+from vibroadhesion.core.integrals import j_integrals
+from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
+from vibroadhesion.models.leading_order import (
     Fixation,
     critical_abars,
     fixation_transmissibility,
@@ -41,9 +41,9 @@ from vibroadhesion.leading_order import (
     pulloff_leading,
     steady_states,
 )
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import nominal_point_contact
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import nominal_point_contact
+from vibroadhesion.numerics.roots import NoRootError
 
 CHI0 = 2.589e-2  # Sec. 3.5.3
 ETA1 = 3.883e-4  # h1 = 20 um, R = 51.5 mm

@@ -20,9 +20,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from vibroadhesion.artefacts import save_figure, write_csv
-from vibroadhesion.figures import fig4_table, plot_fig4
-from vibroadhesion.pulloff import GentSchultzParameters
+from vibroadhesion.pipeline.artefacts import save_figure, write_csv
+from vibroadhesion.pipeline.figures import fig4_table, plot_fig4
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
@@ -116,7 +116,7 @@ def test_data_edit_reruns_fit_figures_and_report_only(pipeline_run: Path) -> Non
 
 @pytest.mark.pipeline
 def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
-    module = pipeline_run / "src/vibroadhesion/stiffness.py"
+    module = pipeline_run / "src/vibroadhesion/models/stiffness.py"
     original = module.read_text()
     try:
         module.write_text(original + "\n# edited\n")

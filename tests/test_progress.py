@@ -4,7 +4,7 @@ import io
 
 import pytest
 
-from vibroadhesion.progress import BAR_WIDTH, ProgressBar
+from vibroadhesion.numerics.progress import BAR_WIDTH, ProgressBar
 
 
 def test_bar_fills_in_proportion_and_sums_steady_states() -> None:

@@ -16,11 +16,11 @@ import numpy as np
 import pytest
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion import groups, jkr
-from vibroadhesion.leading_order import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.core import groups, jkr
+from vibroadhesion.models.leading_order import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
+from vibroadhesion.numerics.roots import NoRootError
 
 CHI0 = 2.589e-2  # paper, Sec. 3.5.3 / Fig. 5-6 captions
 ETA1_PAPER = 3.883e-4  # h1 = 20 um, R = 51.5 mm (Fig. 5 caption)

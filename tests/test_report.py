@@ -4,8 +4,8 @@ from pathlib import Path
 
 import pytest
 
-from vibroadhesion import report
-from vibroadhesion.report import PAGES, VALIDATION_PAGES, write_index
+from vibroadhesion.pipeline import report
+from vibroadhesion.pipeline.report import PAGES, VALIDATION_PAGES, write_index
 
 
 @pytest.mark.parametrize(("name", "pages", "other"), [("index", PAGES, VALIDATION_PAGES),

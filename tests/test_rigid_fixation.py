@@ -16,11 +16,11 @@ import numpy as np
 import pytest
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion import figures
-from vibroadhesion.pulloff import GentSchultzParameters
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import nominal_point_contact, nominal_point_contact_closure, rigid_amplitude_squared
-from vibroadhesion.stiffness import dynamic_stiffness
+from vibroadhesion.pipeline import figures
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import nominal_point_contact, nominal_point_contact_closure, rigid_amplitude_squared
+from vibroadhesion.models.stiffness import dynamic_stiffness
 
 CHI0 = 2.589e-2  # paper, Sec. 3.5.3
 RADIUS = 51.5e-3  # m, Fig. 4 caption
@@ -63,7 +63,7 @@ def test_eq122_root_satisfies_printed_equation_with_mpmath_j_to_1e11(h1_um: floa
 @pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0, 5.9])
 @pytest.mark.parametrize("omega_check", [1e1, 1e3, 1e6, 1e9, math.inf])
 def test_eq122_lhs_rises_strictly_from_zero_to_infinity_so_one_root(omega_check: float, n: float) -> None:
-    """Uniqueness (proof in the docstring of vibroadhesion.refined, valid for n < 6): the
+    """Uniqueness (proof in the docstring of vibroadhesion.models.refined, valid for n < 6): the
     left-hand side of Eq. (122) along abar_m = J0^(2/3) rises strictly with Abar, from 0 to
     infinity, so Eq. (122) has exactly one root for every eta1 > 0 and omega_check > 0.
     Checked on Abar in logspace(-12, 12, 2401); the ends: exactly 0 at Abar = 0, and above

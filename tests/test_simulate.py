@@ -1,8 +1,8 @@
-"""Direct simulation of the full model (vibroadhesion.simulate): shooting checked against
+"""Direct simulation of the full model (vibroadhesion.simulation.simulate): shooting checked against
 independent references.
 
 References, each named in the test that uses it:
-* the dimensional JKR formulas of :mod:`vibroadhesion.jkr` (Eqs. 4, 5) for the nondimensional
+* the dimensional JKR formulas of :mod:`vibroadhesion.core.jkr` (Eqs. 4, 5) for the nondimensional
   kernel, and the forward Gent–Schultz law f (Eq. 75) for its inverse;
 * Eq. (82) solved with mpmath for the static state;
 * the limit omega_check -> infinity (contact radius frozen over a period): the mean front speed
@@ -25,10 +25,10 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from vibroadhesion import simulate as sim
-from vibroadhesion.groups import contact_radius_scale
-from vibroadhesion.jkr import contact_force, indentation
-from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.simulation import simulate as sim
+from vibroadhesion.core.groups import contact_radius_scale
+from vibroadhesion.core.jkr import contact_force, indentation
+from vibroadhesion.core.ratelaw import GentSchultz
 
 CHI0 = 2.589e-2
 RADIUS = 51.5e-3
@@ -130,7 +130,7 @@ def test_gent_schultz_speed_overflows_to_infinity_without_warning() -> None:
 
 
 def test_contact_kernel_against_dimensional_jkr_and_inverse_law() -> None:
-    """References: Eqs. (4), (5) in SI units (vibroadhesion.jkr) with E* = 5.6 MPa, R = 51.5 mm,
+    """References: Eqs. (4), (5) in SI units (vibroadhesion.core.jkr) with E* = 5.6 MPa, R = 51.5 mm,
     w0 = 0.236 J/m^2, and GentSchultz.speed; derivatives against central differences.
 
     For a and w given, Phat = P R/(E* a_o^3) must equal 2 abar deltabar - (2/3) abar^3 with

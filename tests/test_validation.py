@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from vibroadhesion import validation
+from vibroadhesion.experiments import validation
 
 CHI0, RADIUS, N = 2.589e-2, 51.5e-3, 0.531
 
@@ -71,7 +71,7 @@ def test_compliant_sweep_far_from_resonance_agrees_with_refined_and_orbits_are_s
     refined solution, and the simulated orbit swept either way is stable (all |Floquet multipliers| < 1)
     with A/a_m within 15 % of the refined model (the measured gap there is ~8 %, the same first-harmonic
     truncation as in the rigid case)."""
-    from vibroadhesion.compliant import CompliantFixation
+    from vibroadhesion.models.compliant import CompliantFixation
 
     p = CompliantFixation(CHI0, 3.883e-4, 1.227e-5, kappa=1e-3, mu=0.0, zeta=0.01)
     sweep = validation.compliant_sweep(p, N, [18.0, 20.0])

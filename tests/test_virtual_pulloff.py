@@ -1,7 +1,7 @@
 """Virtual pull-off experiment: the simulated pull-off of the rigidly and of the compliantly fixed indenter.
 
 References: the exact high-frequency averaging's force-controlled pull-off (minimum of the mean
-force over a_m, :func:`vibroadhesion.exact_averaging.pulloff_at_force_minimum`, an independent
+force over a_m, :func:`vibroadhesion.models.exact_averaging.pulloff_at_force_minimum`, an independent
 solver of a different formulation) as omega_check -> infinity; the rigid simulated pull-off and the
 leading-order transmissibility (Eqs. 67-69 against Eq. 72) for a very stiff spring; the simulation's
 contact-loss report.
@@ -13,11 +13,11 @@ import math
 
 import pytest
 
-from vibroadhesion import exact_averaging
-from vibroadhesion.leading_order import Fixation, pulloff_leading
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.simulate import SpringFixation
-from vibroadhesion.virtual_pulloff import simulated_pulloff
+from vibroadhesion.models import exact_averaging
+from vibroadhesion.models.leading_order import Fixation, pulloff_leading
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.simulation.simulate import SpringFixation
+from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 
 CHI0, RADIUS = 2.589e-2, 51.5e-3
 LAW = GentSchultz(0.531)

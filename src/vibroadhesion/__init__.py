@@ -1,10 +1,15 @@
 """Reference implementation of "An asymptotic model of vibroadhesion" (Argatov, Papangelo, Ciavarella).
 
-Modules, one per idea: :mod:`~vibroadhesion.ratelaw` (Eq. 6, Eqs. 73–75),
-:mod:`~vibroadhesion.integrals` (Eqs. 28, 29, 36), :mod:`~vibroadhesion.jkr` (Eqs. 4, 5, 60, 70),
-:mod:`~vibroadhesion.groups` (Eqs. 64–66, 81, 86, 97, 105), :mod:`~vibroadhesion.roots`,
-:mod:`~vibroadhesion.leading_order` (Eqs. 71–72), :mod:`~vibroadhesion.refined` (Eq. 106),
-:mod:`~vibroadhesion.pulloff`, :mod:`~vibroadhesion.fitting`, :mod:`~vibroadhesion.data`.
+Sub-packages, one layer each, in the direction the data flows (a module imports only from its own
+layer and the layers listed before it; ``tests/test_layers.py`` enforces it):
+
+* :mod:`vibroadhesion.numerics`: roots, continuation, progress (no physics);
+* :mod:`vibroadhesion.core`: rate law, J-integrals, JKR, dimensionless groups;
+* :mod:`vibroadhesion.models`: the asymptotic model levels of the paper;
+* :mod:`vibroadhesion.simulation`: the full model in time (ground truth);
+* :mod:`vibroadhesion.experiments`: pull-off, fit, virtual pull-off, validation, identifiability;
+* :mod:`vibroadhesion.pipeline`: files, figures, report and the steps the Snakemake rules run.
 """
 
 __version__ = "0.1.0"
+__all__ = ["core", "experiments", "models", "numerics", "pipeline", "simulation"]

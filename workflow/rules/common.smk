@@ -15,7 +15,7 @@ def code(*modules):
     Snakemake does not track imported code by itself; listing the files as inputs makes a
     change of their content trigger a rerun of exactly the rules that use them.
     """
-    return [f"src/vibroadhesion/{m}.py" for m in modules] + ["environment.lock"]
+    return [str(next(Path("src/vibroadhesion").glob(f"*/{m}.py"))) for m in modules] + ["environment.lock"]
 
 
 NUMERICS = ["ratelaw", "integrals", "roots", "groups", "jkr", "leading_order", "refined", "pulloff"]

@@ -18,7 +18,7 @@ rule fig3_data:
     benchmark:
         "results/benchmarks/rules/fig3_data.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig3-data --fit {input.fit} --panel-n {params.panel_n} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig3-data --fit {input.fit} --panel-n {params.panel_n} "
         "--log10-abar-min {params.lo} --log10-abar-max {params.hi} --points {params.points} --out {output} "
         "2>&1 | tee {log}"
 
@@ -36,7 +36,7 @@ rule fig3_plot:
     log:
         "results/logs/fig3_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig3-plot --fit {input.fit} --panel-n {params.panel_n} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig3-plot --fit {input.fit} --panel-n {params.panel_n} "
         "--csv {input.csv} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -56,7 +56,7 @@ rule fig4_data:
     benchmark:
         "results/benchmarks/rules/fig4_data.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig4-data --setup {input.setup} --fit {input.fit} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig4-data --setup {input.setup} --fit {input.fit} "
         "--h1-max-um {params.h1_max} --points {params.points} --out {output} 2>&1 | tee {log}"
 
 
@@ -74,7 +74,7 @@ rule fig4_plot:
     log:
         "results/logs/fig4_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig4-plot --setup {input.setup} --fit {input.fit} --pulloff {input.pulloff} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig4-plot --setup {input.setup} --fit {input.fit} --pulloff {input.pulloff} "
         "--virtual {input.virtual} "
         "--csv {input.csv} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
@@ -102,7 +102,7 @@ rule fig5_data:
     benchmark:
         "results/benchmarks/rules/fig5_data.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig5-data --setup {input.setup} --fit {input.fit} --h1-um {params.h1} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig5-data --setup {input.setup} --fit {input.fit} --h1-um {params.h1} "
         "--omega-bar-min {params.lo} --omega-bar-max {params.hi} --count-points {params.points} "
         "--out {output.csv} --markers {output.markers} --counts {output.counts} 2>&1 | tee {log}"
 
@@ -120,7 +120,7 @@ rule fig5_plot:
     log:
         "results/logs/fig5_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig5-plot --csv {input.csv} --markers {input.markers} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig5-plot --csv {input.csv} --markers {input.markers} "
         "--highlight-hz {params.highlight} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -145,7 +145,7 @@ rule fig6_data:
     benchmark:
         "results/benchmarks/rules/fig6_data.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig6-data --setup {input.setup} --fit {input.fit} --log10-omega-min {params.lo} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig6-data --setup {input.setup} --fit {input.fit} --log10-omega-min {params.lo} "
         "--log10-omega-max {params.hi} --points {params.points} --out {output} 2>&1 | tee {log}"
 
 
@@ -166,7 +166,7 @@ rule fig7_data:
     benchmark:
         "results/benchmarks/rules/fig7_data.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig7-data --setup {input.setup} --fit {input.fit} --log10-omega-min {params.lo} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig7-data --setup {input.setup} --fit {input.fit} --log10-omega-min {params.lo} "
         "--log10-omega-max {params.hi} --points {params.points} --out {output} 2>&1 | tee {log}"
 
 
@@ -184,7 +184,7 @@ rule fig8_data:
     benchmark:
         "results/benchmarks/rules/fig8_data.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig8-data --setup {input.setup} --fit {input.fit} --fig6 {input.fig6} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig8-data --setup {input.setup} --fit {input.fit} --fig6 {input.fig6} "
         "--out {output} 2>&1 | tee {log}"
 
 
@@ -201,7 +201,7 @@ rule fig6_plot:
     log:
         "results/logs/fig6_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig6-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} --validation {input.validation} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig6-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} --validation {input.validation} "
         "--pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -217,7 +217,7 @@ rule fig8_plot:
     log:
         "results/logs/fig8_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig8-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig8-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
         "--pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -235,5 +235,5 @@ rule fig7_plot:
     log:
         "results/logs/fig7_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli fig7-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fig7-plot --setup {input.setup} --fit {input.fit} --csv {input.csv} "
         "--fig4 {input.fig4} --virtual {input.virtual} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"

@@ -13,5 +13,5 @@ rule fit_gent_schultz:
     benchmark:
         "results/benchmarks/rules/fit_gent_schultz.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli fit --setup {input.setup} --pulloff {input.pulloff} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli fit --setup {input.setup} --pulloff {input.pulloff} "
         "--figures-use {params.figures_use} --out {output} 2>&1 | tee {log}"

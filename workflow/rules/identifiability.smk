@@ -24,7 +24,7 @@ rule pulloff_sensitivity:
     benchmark:
         "results/benchmarks/rules/pulloff_sensitivity_{parameter}_{sign}.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli pulloff-sensitivity --setup {input.setup} --fit {input.fit} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli pulloff-sensitivity --setup {input.setup} --fit {input.fit} "
         "--parameter {wildcards.parameter} --sign {wildcards.sign} --frequencies-hz {params.frequencies} "
         "--out {output} 2>&1 | tee {log}"
 
@@ -45,7 +45,7 @@ rule identifiability_fit:
     benchmark:
         "results/benchmarks/rules/identifiability_fit_{model}.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli identifiability-fit --setup {input.setup} --fit {input.fit} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli identifiability-fit --setup {input.setup} --fit {input.fit} "
         "--virtual {input.virtual} --model {wildcards.model} --out {output} 2>&1 | tee {log}"
 
 
@@ -66,7 +66,7 @@ rule identifiability:
     log:
         "results/logs/identifiability.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli identifiability --virtual {input.virtual} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli identifiability --virtual {input.virtual} "
         "--sensitivity-parts {input.sensitivity} --fits {input.fits} --noise {params.noise} "
         "--sensitivity-out {output.sensitivity} --information-out {output.information} --fits-out {output.fits} "
         "2>&1 | tee {log}"

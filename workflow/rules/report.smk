@@ -1,5 +1,5 @@
 # Report: each page is a notebook executed by papermill, then rendered to HTML by nbconvert.
-from vibroadhesion.report import PAGES as REPORT_PAGES, VALIDATION_PAGES as VALIDATION_REPORT_PAGES
+from vibroadhesion.pipeline.report import PAGES as REPORT_PAGES, VALIDATION_PAGES as VALIDATION_REPORT_PAGES
 
 PAGE_INPUTS = {
     "fig3": {"fig_csv": "results/fig3/fig3.csv", "fig_png": "results/fig3/fig3.png",
@@ -84,4 +84,4 @@ rule report_index:
         "results/logs/report_{index}.log",
     localrule: True
     shell:
-        "{PYTHON} -c 'from vibroadhesion.report import write_index; write_index(\"{output}\")' > {log} 2>&1"
+        "{PYTHON} -c 'from vibroadhesion.pipeline.report import write_index; write_index(\"{output}\")' > {log} 2>&1"

@@ -21,7 +21,7 @@ rule validation_rigid:
     benchmark:
         "results/benchmarks/rules/validation_rigid_h1_{h1}.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli validate-rigid --setup {input.setup} --fit {input.fit} --h1-um {wildcards.h1} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli validate-rigid --setup {input.setup} --fit {input.fit} --h1-um {wildcards.h1} "
         "--log10-omega-min {params.lo} --log10-omega-max {params.hi} --out {output} 2>&1 | tee {log}"
 
 
@@ -39,7 +39,7 @@ rule validation_gather:
     log:
         "results/logs/validation_gather.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli validate-gather --setup {input.setup} --fit {input.fit} --parts {input.parts} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli validate-gather --setup {input.setup} --fit {input.fit} --parts {input.parts} "
         "--grid {output.grid} --errors {output.errors} --summary {output.summary} 2>&1 | tee {log}"
 
 
@@ -56,7 +56,7 @@ rule validation_plot:
     log:
         "results/logs/validation_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli validate-plot --setup {input.setup} --fit {input.fit} --grid {input.grid} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli validate-plot --setup {input.setup} --fit {input.fit} --grid {input.grid} "
         "--errors {input.errors} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -77,7 +77,7 @@ rule validation_compliant:
     benchmark:
         "results/benchmarks/rules/validation_compliant.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli validate-compliant --setup {input.setup} --fit {input.fit} --h1-um {params.h1} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli validate-compliant --setup {input.setup} --fit {input.fit} --h1-um {params.h1} "
         "--kappa {params.sweep[kappa]} --zeta {params.sweep[zeta]} --omega-bar-min {params.sweep[omega_bar_min]} "
         "--omega-bar-max {params.sweep[omega_bar_max]} --points {params.sweep[points]} --out {output} 2>&1 | tee {log}"
 
@@ -95,7 +95,7 @@ rule validation_compliant_plot:
     log:
         "results/logs/validation_compliant_plot.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli validate-compliant-plot --csv {input.csv} --fig5 {input.fig5} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli validate-compliant-plot --csv {input.csv} --fig5 {input.fig5} "
         "--kappa {params.sweep[kappa]} --zeta {params.sweep[zeta]} --pdf {output.pdf} --png {output.png} 2>&1 | tee {log}"
 
 
@@ -131,7 +131,7 @@ rule virtual_pulloff:
     benchmark:
         "results/benchmarks/rules/virtual_pulloff_{fixation}_{frequency}Hz.tsv"
     shell:
-        "{PYTHON} -m vibroadhesion.cli virtual-pulloff --setup {input.setup} --fit {input.fit} "
+        "{PYTHON} -m vibroadhesion.pipeline.cli virtual-pulloff --setup {input.setup} --fit {input.fit} "
         "--frequency-hz {wildcards.frequency} --fixation {wildcards.fixation} {params.spring} --out {output} 2>&1 | tee {log}"
 
 
@@ -149,7 +149,7 @@ rule virtual_pulloff_fixation:
     log:
         "results/logs/virtual_pulloff_{fixation}.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli virtual-pulloff-gather --parts {input.parts} --out {output} 2>&1 | tee {log}"
+        "{PYTHON} -m vibroadhesion.pipeline.cli virtual-pulloff-gather --parts {input.parts} --out {output} 2>&1 | tee {log}"
 
 
 rule virtual_pulloff_gather:
@@ -162,4 +162,4 @@ rule virtual_pulloff_gather:
     log:
         "results/logs/virtual_pulloff_gather.log",
     shell:
-        "{PYTHON} -m vibroadhesion.cli virtual-pulloff-gather --parts {input.parts} --out {output} 2>&1 | tee {log}"
+        "{PYTHON} -m vibroadhesion.pipeline.cli virtual-pulloff-gather --parts {input.parts} --out {output} 2>&1 | tee {log}"

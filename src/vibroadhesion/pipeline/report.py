@@ -15,9 +15,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import data, groups
-from vibroadhesion.artefacts import atomic_path
-from vibroadhesion.jkr import pulloff_force
+from vibroadhesion.pipeline import data
+
+from vibroadhesion.core import groups
+from vibroadhesion.pipeline.artefacts import atomic_path
+from vibroadhesion.core.jkr import pulloff_force
 
 #: (file stem, title) of the pages of the default target (``snakemake -c2``), in the order of its index.
 PAGES: list[tuple[str, str]] = [
@@ -46,7 +48,7 @@ _INDEX_TEXT = {
   <a href="validation_index.html">validation pages</a>.</p>"""),
     "validation_index": ("validation against the direct simulation", """<p>Built by <code>snakemake -c2 validation</code>.
   Every number on these pages that is not a model prediction is SIMULATED (periodic steady states of the
-  full nonlinear model, <code>vibroadhesion.simulate</code>); none is a measurement.
+  full nonlinear model, <code>vibroadhesion.simulation.simulate</code>); none is a measurement.
   <a href="index.html">Figure pages</a>.</p>"""),
 }
 

@@ -170,8 +170,8 @@ from numpy.typing import NDArray
 from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau, ode
 from scipy.optimize import brentq
 
-from vibroadhesion.groups import PHAT_JKR, contact_radius_ratio
-from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
+from vibroadhesion.core.ratelaw import GentSchultz
 
 Array = NDArray[np.float64]
 Integrator = Literal["auto", "fortran-dop853", "Radau", "BDF", "LSODA", "DOP853", "RK45"]

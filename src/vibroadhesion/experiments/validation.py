@@ -4,20 +4,20 @@ For each base amplitude h1 and frequency omega_check the steady state of the rig
 nominal point contact (h0 = hhat, Eq. 78) is computed five ways:
 
 * ``simulation``: periodic orbit of Eqs. (4), (5) with w = w0 f(adot/v0), shooting on the
-  one-period map (:mod:`vibroadhesion.simulate`), the ground truth;
+  one-period map (:mod:`vibroadhesion.simulation.simulate`), the ground truth;
 * ``leading``: Eq. (55) with abar_m^(3/2) = J0 (Eqs. 99, 123), frequency independent (the
   omega_check -> infinity limit of the refined model); A/a_m from its Abar at the given omega_check;
 * ``refined``: Eqs. (122)–(123);
 * ``exact_hb``: harmonic balance with the exact JKR relations, Eqs. (125)–(126)
-  (:mod:`vibroadhesion.exact_harmonic_balance`);
-* ``exact_averaging``: the exact high-frequency limit (:mod:`vibroadhesion.exact_averaging`).
+  (:mod:`vibroadhesion.models.exact_harmonic_balance`);
+* ``exact_averaging``: the exact high-frequency limit (:mod:`vibroadhesion.models.exact_averaging`).
 
 Every row carries a ``status``: ``ok`` for a solution, the simulation's own status
 (``contact_loss``, ``not_converged``, ...) or ``no_solution`` when a model level has no steady
 state there. Numbers of rows without a solution are NaN, never a fill-in value.
 
 Mean force of the J-integral levels: Eq. (52), P_m/|P_JKR| = (4/3) [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)]
-(:func:`vibroadhesion.leading_order.mean_force_over_pulloff`).
+(:func:`vibroadhesion.models.leading_order.mean_force_over_pulloff`).
 """
 
 from __future__ import annotations
@@ -28,14 +28,16 @@ from collections.abc import Sequence
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import exact_averaging, exact_harmonic_balance, simulate
-from vibroadhesion.compliant import CompliantFixation, trace_response_curve
-from vibroadhesion.groups import contact_radius_amplitude_ratio
-from vibroadhesion.leading_order import mean_force_over_pulloff
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.progress import ProgressBar
-from vibroadhesion.refined import nominal_point_contact
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.models import exact_averaging, exact_harmonic_balance
+
+from vibroadhesion.simulation import simulate
+from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
+from vibroadhesion.core.groups import contact_radius_amplitude_ratio
+from vibroadhesion.models.leading_order import mean_force_over_pulloff
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.numerics.progress import ProgressBar
+from vibroadhesion.models.refined import nominal_point_contact
+from vibroadhesion.numerics.roots import NoRootError
 
 MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
 QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")

@@ -1,4 +1,4 @@
-"""Command-line entry points called by the Snakemake rules (``python -m vibroadhesion.cli STEP ...``).
+"""Command-line entry points called by the Snakemake rules (``python -m vibroadhesion.pipeline.cli STEP ...``).
 
 Each step reads artefacts, calls the package and writes artefacts atomically; a failure
 prints one line to stderr and exits with status 1, leaving no output behind.
@@ -16,15 +16,21 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion import data, figures, groups, identifiability, simulate, validation, virtual_pulloff
-from vibroadhesion.compliant import CompliantFixation
-from vibroadhesion.continuation import ContinuationError
-from vibroadhesion.artefacts import save_figure, write_csv, write_json
-from vibroadhesion.fitting import FitError, fit_gent_schultz, parameters_from_fit
-from vibroadhesion.jkr import pulloff_force
-from vibroadhesion.progress import ProgressBar
-from vibroadhesion.pulloff import MODELS, GentSchultzParameters
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.pipeline import data, figures
+
+from vibroadhesion.core import groups
+
+from vibroadhesion.experiments import identifiability, validation, virtual_pulloff
+
+from vibroadhesion.simulation import simulate
+from vibroadhesion.models.compliant import CompliantFixation
+from vibroadhesion.numerics.continuation import ContinuationError
+from vibroadhesion.pipeline.artefacts import save_figure, write_csv, write_json
+from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz, parameters_from_fit
+from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.numerics.progress import ProgressBar
+from vibroadhesion.experiments.pulloff import MODELS, GentSchultzParameters
+from vibroadhesion.numerics.roots import NoRootError
 
 
 def _fit(args: argparse.Namespace) -> None:
@@ -290,7 +296,7 @@ def _rigid_fixation_plot(args: argparse.Namespace) -> None:
 
 
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="python -m vibroadhesion.cli", description=__doc__)
+    parser = argparse.ArgumentParser(prog="python -m vibroadhesion.pipeline.cli", description=__doc__)
     steps = parser.add_subparsers(dest="step", required=True)
 
     p = steps.add_parser("fit", help="Gent–Schultz fit with every model level")

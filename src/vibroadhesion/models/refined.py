@@ -18,7 +18,7 @@ delta_c^2 + delta_s^2 = eta1^2 (Eqs. 100, 103). Two closures fix abar_m:
 As omega_check -> infinity delta_s vanishes and both reduce to the leading order (Eqs. 72, 55).
 
 Uniqueness (Gent–Schultz law). With abar_m = c J0^(2/3) (c > 0), delta_c^2 = const J0^(2/3) Jc1^2
-is strictly increasing (J0 and |Jc1| are, :mod:`vibroadhesion.leading_order`). delta_s is
+is strictly increasing (J0 and |Jc1| are, :mod:`vibroadhesion.models.leading_order`). delta_s is
 proportional to Abar J0^(2/3) (1 - J1/(4 c^(3/2) J0)) = Abar J0^(-1/3) (J0 - J1/(4 c^(3/2))).
 For both closures 4 c^(3/2) >= 3, so J0 - J1/(4c^(3/2)) = 1/pi int S(u) (1 - 2 cos^2 t/(4 c^(3/2))) dt
 has a positive weight and an increasing S: it increases. And d ln J0 / d ln Abar
@@ -36,11 +36,11 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from vibroadhesion.groups import contact_radius_amplitude_ratio
-from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.leading_order import PulloffEstimate, pulloff_closure
-from vibroadhesion.ratelaw import RateLaw
-from vibroadhesion.roots import solve_log_increasing
+from vibroadhesion.core.groups import contact_radius_amplitude_ratio
+from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.models.leading_order import PulloffEstimate, pulloff_closure
+from vibroadhesion.core.ratelaw import RateLaw
+from vibroadhesion.numerics.roots import solve_log_increasing
 
 Array = NDArray[np.float64]
 

@@ -49,13 +49,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-from vibroadhesion.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
-from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.ratelaw import RateLaw
-from vibroadhesion.groups import contact_radius_amplitude_ratio
-from vibroadhesion.leading_order import pulloff_closure
-from vibroadhesion.refined import displacement_harmonics
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
+from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.core.ratelaw import RateLaw
+from vibroadhesion.core.groups import contact_radius_amplitude_ratio
+from vibroadhesion.models.leading_order import pulloff_closure
+from vibroadhesion.models.refined import displacement_harmonics
+from vibroadhesion.numerics.roots import NoRootError
 
 Array = NDArray[np.float64]
 

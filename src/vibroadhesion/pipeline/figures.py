@@ -15,14 +15,15 @@ import matplotlib.pyplot as plt
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.compliant import CompliantFixation, ResponseCurve, static_abar_m, trace_response_curve
-from vibroadhesion.integrals import j_integrals, j_integrals_large_abar
-from vibroadhesion import exact_averaging, groups
-from vibroadhesion.jkr import pulloff_force
-from vibroadhesion.pulloff import GentSchultzParameters, Model, PulloffPrediction, predict_pulloff
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import nominal_point_contact, pulloff_refined
-from vibroadhesion.stiffness import dynamic_stiffness
+from vibroadhesion.models.compliant import CompliantFixation, ResponseCurve, static_abar_m, trace_response_curve
+from vibroadhesion.core.integrals import j_integrals, j_integrals_large_abar
+from vibroadhesion.models import exact_averaging
+from vibroadhesion.core import groups
+from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model, PulloffPrediction, predict_pulloff
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
+from vibroadhesion.models.stiffness import dynamic_stiffness
 
 FIG3_COLUMNS = ["n", "Abar", "J0", "Jc1", "J1"]
 FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
@@ -79,7 +80,7 @@ def fig4_table(
 ) -> pd.DataFrame:
     """Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
     exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
-    :func:`vibroadhesion.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0))."""
+    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0))."""
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frames = []
     lead = predict_pulloff("leading", params["leading"], np.nan, h1_um, **geometry)

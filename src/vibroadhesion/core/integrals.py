@@ -38,7 +38,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.special import beta, gammaln
 
-from vibroadhesion.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
 
 #: Panels of the fixed rule in y = -ln(2t/pi): (start, end, number of Gauss–Legendre nodes).
 _PANEL_WIDTH = 2.0

@@ -3,9 +3,9 @@
 * ``leading``: Abar_cr from Eq. (72), frequency independent;
 * ``refined``: Abar_cr from Eq. (106), through omega_check = omega R / v0;
 * ``exact_averaging``: the paper's criterion a_m = a_cr (Eqs. 60–61) with the exact
-  high-frequency w_eff (:func:`vibroadhesion.exact_averaging.pulloff_at_critical_radius`);
+  high-frequency w_eff (:func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`);
 * ``exact_averaging_force_minimum``: force-controlled detachment of the exact averaged model,
-  the most tensile mean force over a_m (:func:`vibroadhesion.exact_averaging.pulloff_at_force_minimum`),
+  the most tensile mean force over a_m (:func:`vibroadhesion.models.exact_averaging.pulloff_at_force_minimum`),
   which the simulated pull-off approaches as omega_check -> infinity.
 
 The first three give P_cr = P_cr^JKR w_eff/w0 with |P_cr^JKR| = (3 pi / 2) R w0 (Eqs. 70–71); the
@@ -21,11 +21,13 @@ from typing import Literal, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from vibroadhesion import exact_averaging, groups
-from vibroadhesion.jkr import pulloff_force
-from vibroadhesion.leading_order import PulloffEstimate, pulloff_leading
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.refined import pulloff_refined
+from vibroadhesion.models import exact_averaging
+
+from vibroadhesion.core import groups
+from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.models.leading_order import PulloffEstimate, pulloff_leading
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.refined import pulloff_refined
 
 Model = Literal["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]
 MODELS: tuple[Model, ...] = ("leading", "refined", "exact_averaging", "exact_averaging_force_minimum")

@@ -1,9 +1,9 @@
 """Can pull-off data determine w0, n and v0? Two answers from the virtual experiment.
 
 No measured pull-off numbers behind Fig. 4 are published, so the question is asked of the simulated
-(virtual) pull-off rows of :mod:`vibroadhesion.virtual_pulloff`, whose true parameters are known:
+(virtual) pull-off rows of :mod:`vibroadhesion.experiments.virtual_pulloff`, whose true parameters are known:
 
-1. **What each model level recovers.** The pipeline's own fit (:func:`vibroadhesion.fitting.fit_gent_schultz`)
+1. **What each model level recovers.** The pipeline's own fit (:func:`vibroadhesion.experiments.fitting.fit_gent_schultz`)
    is run on the noise-free simulated rows with every model level. Its misfit is pure model error,
    so the distance of the recovered parameters from the true ones is the bias a user would get
    from that level on perfect data.
@@ -31,8 +31,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.fitting import FitError, fit_gent_schultz
-from vibroadhesion.pulloff import GentSchultzParameters, Model
+from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model
 
 PARAMETERS = ("w0", "n", "v0")
 

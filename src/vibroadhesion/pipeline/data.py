@@ -1,6 +1,6 @@
 """Ingest and validate the two user-edited inputs, ``data/setup.yaml`` and ``data/pulloff.csv``.
 
-Both are checked against JSON schemas (draft 2020-12) shipped in ``vibroadhesion/schemas/``:
+Both are checked against JSON schemas (draft 2020-12) shipped in ``vibroadhesion/pipeline/schemas/``:
 ``setup.schema.json`` describes the whole YAML document, ``pulloff.schema.json`` ONE row of the
 CSV (each row is validated against it). Every problem raises :class:`DataError` whose message is
 a single line ``"<file>, row <r>, column <c>: <what is wrong>"``:
@@ -9,7 +9,7 @@ a single line ``"<file>, row <r>, column <c>: <what is wrong>"``:
 * YAML: ``row`` is the 1-based line of the offending node, ``column`` the dotted key path, e.g.
   ``sample.poisson_ratio.value`` (list items as ``...value[1]``).
 
-Row 0 means the file as a whole (it cannot be read). ``python -m vibroadhesion.data SETUP PULLOFF
+Row 0 means the file as a whole (it cannot be read). ``python -m vibroadhesion.pipeline.data SETUP PULLOFF
 OUT_JSON OUT_CSV`` validates both files and writes canonical copies atomically (see :func:`main`).
 """
 
@@ -100,7 +100,7 @@ class Setup:
 @lru_cache(maxsize=None)
 def schema(name: str) -> dict[str, Any]:
     """The packaged JSON schema ``name`` (``"setup"`` or ``"pulloff"``)."""
-    text = resources.files("vibroadhesion").joinpath("schemas", f"{name}.schema.json").read_text(encoding="utf-8")
+    text = resources.files("vibroadhesion.pipeline").joinpath("schemas", f"{name}.schema.json").read_text(encoding="utf-8")
     return json.loads(text)
 
 
@@ -521,14 +521,14 @@ def _write_atomically(outputs: list[tuple[Path, str]]) -> None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m vibroadhesion.data SETUP PULLOFF OUT_JSON OUT_CSV``.
+    """``python -m vibroadhesion.pipeline.data SETUP PULLOFF OUT_JSON OUT_CSV``.
 
     Validates both inputs; on success writes the canonical setup JSON (values, units, sources)
     and the canonical pull-off CSV (no comments; columns frequency_hz, h1_um, pulloff_mN,
     source; floats written with repr) atomically and returns 0. On a :class:`DataError` prints
     its one-line message to stderr, writes nothing and returns 1.
     """
-    parser = argparse.ArgumentParser(prog="python -m vibroadhesion.data", description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(prog="python -m vibroadhesion.pipeline.data", description=__doc__.splitlines()[0])
     parser.add_argument("setup", help="data/setup.yaml")
     parser.add_argument("pulloff", help="data/pulloff.csv")
     parser.add_argument("out_json", help="canonical setup (JSON)")

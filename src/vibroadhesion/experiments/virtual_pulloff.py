@@ -2,7 +2,7 @@
 
 No measured pull-off forces behind the paper's Fig. 4 are published; this module generates the
 simulated counterpart. The base is withdrawn quasi-statically: a family of periodic steady states
-of the full model (:mod:`vibroadhesion.simulate`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
+of the full model (:mod:`vibroadhesion.simulation.simulate`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
 (Eq. 11 with h0 growing), each orbit started from a prediction extrapolated from the previous two.
 Along the family the mean contact force P_m first grows more tensile, passes an extremum and then
 relaxes; the pull-off force is the most tensile mean force of the family, located by a bounded
@@ -48,9 +48,9 @@ Predictions next to the simulation (:func:`pulloff_table`). Rigid rows: Eq. (72)
 Eq. (106) (``refined``), the exact high-frequency averaging with the paper's criterion a_m = a_cr
 (``exact_averaging``) and its force-controlled detachment, the minimum of the mean force over a_m
 (``exact_averaging_force_minimum``). Compliant rows: Eqs. (67)–(69) with (71) (``leading``,
-:func:`vibroadhesion.leading_order.pulloff_leading` with the spring's fixation) and Eq. (90) at
-a_m = a_cr (``refined``, :func:`vibroadhesion.compliant.pulloff_by_scan`), both the smallest root
-(the first reached as the base is withdrawn, :mod:`vibroadhesion.leading_order`). There is no exact
+:func:`vibroadhesion.models.leading_order.pulloff_leading` with the spring's fixation) and Eq. (90) at
+a_m = a_cr (``refined``, :func:`vibroadhesion.models.compliant.pulloff_by_scan`), both the smallest root
+(the first reached as the base is withdrawn, :mod:`vibroadhesion.models.leading_order`). There is no exact
 averaging row for the compliant fixation: the exact averaging is a model of the rigidly fixed contact.
 
 Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_eff/w0)^(1/3) (Eq. 61).
@@ -65,16 +65,20 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
-from vibroadhesion import exact_averaging, groups, simulate
-from vibroadhesion.compliant import CompliantFixation, pulloff_by_scan
-from vibroadhesion.groups import PHAT_JKR, contact_radius_ratio
-from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.jkr import pulloff_force
-from vibroadhesion.leading_order import PULLOFF_SCAN, Fixation, pulloff_closure, pulloff_leading
-from vibroadhesion.progress import ProgressBar
-from vibroadhesion.pulloff import GentSchultzParameters, predict_pulloff
-from vibroadhesion.ratelaw import GentSchultz
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.models import exact_averaging
+
+from vibroadhesion.core import groups
+
+from vibroadhesion.simulation import simulate
+from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
+from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
+from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.models.leading_order import PULLOFF_SCAN, Fixation, pulloff_closure, pulloff_leading
+from vibroadhesion.numerics.progress import ProgressBar
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.numerics.roots import NoRootError
 
 Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
 

@@ -45,7 +45,7 @@ pull-off. (A start above the contact resonance would meet the resonance first; t
 not cover it, and :func:`critical_abars` returns every root for a caller who needs the others.)
 
 Uniqueness of Eq. (72) (Gent–Schultz law). With u = (Abar sin t)^n the integrands of J0 and -Jc1 are
-S(u) = (2+u)/sqrt(1+u) and u/sqrt(1+u) (see :mod:`vibroadhesion.integrals`), whose
+S(u) = (2+u)/sqrt(1+u) and u/sqrt(1+u) (see :mod:`vibroadhesion.core.integrals`), whose
 u-derivatives u/(2(1+u)^{3/2}) and (2+u)/(2(1+u)^{3/2}) are positive; u increases with Abar,
 so J0 and |Jc1| are strictly increasing, the left-hand side of Eq. (72) rises strictly from 0
 (Abar = 0) to infinity, and Eq. (72) has exactly one root for every eta1 > 0. The tests check
@@ -100,10 +100,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq, minimize_scalar
 
-from vibroadhesion.groups import contact_radius_amplitude_ratio, contact_radius_ratio
-from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.ratelaw import GentSchultz, RateLaw
-from vibroadhesion.roots import NoRootError, solve_log_increasing
+from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 
 
 class PulloffEstimate(NamedTuple):

@@ -1,6 +1,6 @@
 """Exact harmonic balance of the single-harmonic ansatz: the Discussion's recommendation (Eqs. 125–126).
 
-Notation as in :mod:`vibroadhesion.exact_averaging`: abar = a/a_o, deltabar = delta R/a_o^2,
+Notation as in :mod:`vibroadhesion.models.exact_averaging`: abar = a/a_o, deltabar = delta R/a_o^2,
 Phat = P R/(E* a_o^3) (JKR pull-off -3/4), c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, s = sqrt(w/w0),
 etahat = eta1/c_o^2, and tau' = omega t' the phase-shifted time of Eq. (25).
 
@@ -29,7 +29,7 @@ against g(abar) for g = sqrt and g = (.)^(3/2):
     Phat_s = 4 abar_m^2 epsilon + epsilon^3 - 2 Ks[3/2].
 
 Folding tau' -> -tau' (s even, sin odd) and tau' -> pi - tau', and writing t = pi/2 - tau' (the distance
-from the reversal of the contact front) as in :mod:`vibroadhesion.integrals`, with
+from the reversal of the contact front) as in :mod:`vibroadhesion.core.integrals`, with
 S(v) = s(v) + s(-v), D(v) = s(v) - s(-v), v = Abar sin t and g+- = g(abar_m +- epsilon cos t):
 
     K0 = (1/2pi) int_0^(pi/2) S (g+ + g-) dt,   Kc = (1/pi) int D sin t (g+ + g-) dt,
@@ -37,7 +37,7 @@ S(v) = s(v) + s(-v), D(v) = s(v) - s(-v), v = Abar sin t and g+- = g(abar_m +- e
 
 where g+ - g- is formed without cancellation: sqrt: 2 e/(sqrt(a+) + sqrt(a-)); 3/2:
 (6 a^2 e + 2 e^3)/(a+^(3/2) + a-^(3/2)), e = epsilon cos t. The quadrature is the fixed rule of the
-J-integrals (:mod:`vibroadhesion.integrals`), which resolves the |sin t|^n behaviour of S and D at the
+J-integrals (:mod:`vibroadhesion.core.integrals`), which resolves the |sin t|^n behaviour of S and D at the
 turning point and their boundary layer t ~ 1/Abar; the g factors are smooth for epsilon < abar_m
 (A < a_m, required for abar(tau') > 0). Measured against 25-digit mpmath: relative error below 2e-13
 for epsilon/abar_m up to 0.99, Abar up to 1e8 and n in [0.05, 4] (tests/test_exact_harmonic_balance.py;
@@ -75,7 +75,7 @@ High-frequency limit (rigid fixation). As omega_check -> infinity at fixed eta1,
 Abar/(omega_check c_o) -> 0 with Abar bounded, so the exact balance tends to the leading order
 (Eq. 55 with abar_m^(3/2) = J0, Eq. 123); the first corrections are the O(epsilon^2) terms above (the
 truncated system is solved in the tests and agrees with the exact balance to O(epsilon^4)). It
-does *not* tend to the exact high-frequency limit of :mod:`vibroadhesion.exact_averaging`: the ansatz
+does *not* tend to the exact high-frequency limit of :mod:`vibroadhesion.models.exact_averaging`: the ansatz
 keeps a sinusoidal contact-front speed however fast the excitation (see that module's docstring).
 As eta1 -> 0 at fixed omega_check the exact balance and the refined model (Eqs. 122–123) differ by
 O(epsilon^2), with limits that follow from the expansions above at J -> (1, 0, 1), int S cos^4/pi -> 3/8:
@@ -108,13 +108,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-from vibroadhesion.compliant import CompliantFixation, amplitude_log_residual
-from vibroadhesion.exact_averaging import NoSteadyStateError
-from vibroadhesion.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
-from vibroadhesion.integrals import folded_rule
-from vibroadhesion.ratelaw import GentSchultz, RateLaw
-from vibroadhesion.refined import nominal_point_contact as refined_nominal_point_contact
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.models.compliant import CompliantFixation, amplitude_log_residual
+from vibroadhesion.models.exact_averaging import NoSteadyStateError
+from vibroadhesion.core.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.core.integrals import folded_rule
+from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
+from vibroadhesion.numerics.roots import NoRootError
 
 Array = NDArray[np.float64]
 
@@ -359,7 +359,7 @@ def rigid_fixation(
 
 
 def compliant_residual(x: ArrayLike, p: CompliantFixation, law: RateLaw, deltabar0: float = 0.0) -> Array:
-    """Exact counterpart of :func:`vibroadhesion.compliant.residual`.
+    """Exact counterpart of :func:`vibroadhesion.models.compliant.residual`.
 
     Rows x = (ln omega_bar, ln abar_m, ln Abar) of an (m, 3) array -> (m, 2) residuals.
 

@@ -24,8 +24,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from vibroadhesion.integrals import j_integrals_for_law
-from vibroadhesion.ratelaw import RateLaw
+from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.core.ratelaw import RateLaw
 
 Array = NDArray[np.float64]
 

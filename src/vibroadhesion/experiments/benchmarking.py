@@ -2,7 +2,7 @@
 
 Two methods are measured on the same machine in one run:
 
-* ``fixed rule``: :func:`vibroadhesion.integrals.j_integrals`, vectorised;
+* ``fixed rule``: :func:`vibroadhesion.core.integrals.j_integrals`, vectorised;
 * ``scipy quad``: :func:`scipy.integrate.quad` on Eqs. (28), (29), (36) over (0, pi) with
   ``points=[pi/2]`` and ``epsrel=1e-12``, one Abar at a time (three integrals per Abar).
 
@@ -24,8 +24,8 @@ import numpy as np
 import pandas as pd
 from scipy.integrate import IntegrationWarning, quad
 
-from vibroadhesion.integrals import j_integrals
-from vibroadhesion.ratelaw import GentSchultz
+from vibroadhesion.core.integrals import j_integrals
+from vibroadhesion.core.ratelaw import GentSchultz
 
 Reference = Callable[[float, float], Sequence[float]]
 

@@ -6,9 +6,9 @@ f(x) > 1 for x < 0, f(x) < 1 for x > 0 and f(0) = 1.
 
 Any object with a vectorised method ``f(x)`` is a rate law (:class:`RateLaw`); the
 J-integrals of Eqs. (28), (29) and (36) are defined for all of them
-(:func:`vibroadhesion.integrals.j_integrals_general`). The Gent–Schultz law of
+(:func:`vibroadhesion.core.integrals.j_integrals_general`). The Gent–Schultz law of
 Eqs. (73)–(75) is the one the paper fits, and its structure (the speed enters only as
-|x|^n) gives the fast path :func:`vibroadhesion.integrals.j_integrals`.
+|x|^n) gives the fast path :func:`vibroadhesion.core.integrals.j_integrals`.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """Least-squares fit of the Gent–Schultz parameters to pull-off measurements (Sec. 3.4).
 
 Each row is (frequency f, base amplitude h1, |P_cr| in mN). The model is the pull-off
-estimate of one level (:func:`vibroadhesion.pulloff.predict_pulloff`):
+estimate of one level (:func:`vibroadhesion.experiments.pulloff.predict_pulloff`):
 
 * ``leading`` (Eqs. 71–72) and the two exact-averaging levels are frequency independent, so v0
   does not enter: w0 and n are fitted, v0 keeps its published value;
@@ -32,8 +32,8 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import least_squares
 
-from vibroadhesion.pulloff import MODELS, GentSchultzParameters, Model, predict_pulloff
-from vibroadhesion.roots import NoRootError
+from vibroadhesion.experiments.pulloff import MODELS, GentSchultzParameters, Model, predict_pulloff
+from vibroadhesion.numerics.roots import NoRootError
 
 UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
 

@@ -1,0 +1,8 @@
+"""The asymptotic model levels: leading order (Eqs. 43, 50–59, 71–72), refined rigid (Eqs. 93–94, 106,
+122–123), refined compliant (Eqs. 87, 90–96), dynamic stiffness (Eqs. 117–121), exact harmonic
+balance (Eqs. 125–126) and the exact high-frequency averaging.
+
+Layer 2: imports from :mod:`vibroadhesion.numerics` and :mod:`vibroadhesion.core`.
+"""
+
+__all__ = ["leading_order", "refined", "compliant", "stiffness", "exact_harmonic_balance", "exact_averaging"]
