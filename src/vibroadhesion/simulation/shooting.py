@@ -116,6 +116,85 @@ def _psi(run: Run, integrators: Integrators) -> Array:
     return psi
 
 
+# --- Rigid fixation: bracketed Newton–secant on the scalar map -----------------------------------
+
+
+@dataclass
+class _Bracket:
+    """Bracket of the fixed point of the rigid one-period map that the iterates approach.
+
+    ``lower`` is the largest a0 known to have r > 0 or to lose contact (the fixed point lies
+    above it; ``lower_is_loss`` says which), ``upper`` the smallest a0 known to have r < 0.
+    """
+
+    lower: float = 0.0
+    lower_is_loss: bool = True
+    upper: float = math.inf
+
+    def record(self, a: float, drift: float) -> None:
+        """A period from ``a`` ended with r = ``drift`` (any quantity with the sign of r)."""
+        if drift > 0:
+            self.lower, self.lower_is_loss = a, False
+        elif drift < 0:
+            self.upper = a
+
+    def record_loss(self, a: float) -> None:
+        """A period from ``a`` lost the contact."""
+        self.lower, self.lower_is_loss = a, True
+
+    def contains(self, a: float) -> bool:
+        """Whether ``a`` lies strictly inside the bracket (False for NaN)."""
+        return self.lower < a < self.upper
+
+    def fallback(self, a: float, a_next: float) -> float:
+        """``a_next`` if inside; else the midpoint, or (no upper end yet) a doubling of the step from ``lower``."""
+        if self.contains(a_next):
+            return a_next
+        if math.isfinite(self.upper):
+            return 0.5 * (self.lower + self.upper)
+        if self.lower_is_loss or a <= self.lower:
+            return 2.0 * max(a, self.lower)
+        return a + 2.0 * max(a - self.lower, 1e-3 * a)
+
+    def collapsed(self) -> bool:
+        """Whether the bracket has shrunk to rounding level."""
+        return math.isfinite(self.upper) and self.upper - self.lower <= 4e-16 * self.upper
+
+
+def _rigid_drift_and_slope(model: Model, run: Run, integrators: Integrators) -> tuple[float, float, float]:
+    """(r, r'(a0), ln multiplier) of a rigid period: r = abar(2pi) - abar(0), r' = multiplier - 1.
+
+    From the variational equation lambda = ln(d abar/d a0) (n <= 1: r' = expm1(lambda)), or from
+    the finite-difference Psi (n > 1).
+    """
+    u_end = float(run.y_end[0])
+    drift = run.period.v_scale * u_end / model.rate  # r = abar(2pi) - abar(0)
+    if model.variational:
+        log_multiplier = float(run.y_end[1])
+        slope = math.expm1(log_multiplier)  # r'(a0) = multiplier - 1
+    else:
+        slope = float(_psi(run, integrators)[0, 0])
+        log_multiplier = math.log1p(slope) if slope > -1 else -math.inf
+    return drift, slope, log_multiplier
+
+
+def _secant_step(model: Model, run: Run, integrators: Integrators, a: float, drift: float, slope: float,
+                 previous: tuple[float, float] | None) -> tuple[float, float, tuple[float, float]]:
+    """(step, noise, (a0, g)): secant step on the Newton correction g = r/r' (slope 1 to start).
+
+    ``noise`` is the uncertainty of the fixed point caused by the integration error of v(2pi);
+    ``previous`` is the (a0, g) of the last evaluation with r' < 0.
+    """
+    g = drift / slope
+    g_slope = 1.0
+    if previous is not None and previous[0] != a:
+        secant = (g - previous[1]) / (a - previous[0])
+        g_slope = secant if secant > 0 else 1.0
+    step = -g / g_slope
+    noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run) * run.period.v_scale
+             / (model.rate * abs(slope) * g_slope))
+    return step, noise, (a, g)
+
 
 def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_iterations: int,
                  speed_range: tuple[float, float] | None, guess: float | None) -> SteadyState:
@@ -133,24 +212,19 @@ def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_itera
     """
     a = float(start[0])
     v_scale = v_scale_estimate(model, a)
-    lower = 0.0  # largest a0 known to have r > 0 or to lose contact: the fixed point lies above
-    lower_is_loss = True
-    upper = math.inf  # smallest a0 known to have r < 0
+    bracket = _Bracket()
     if guess is not None:
         # The physical first period from the static state (core only, stiff integrator): contact
         # loss there is the answer; otherwise it tells on which side of the start the state lies.
         first = run_period(Period(model, start, v_scale, 1.0), integrators, full=False, transient=True)
         if not math.isnan(first.lost_at):
             return failure_record("contact_loss", f"contact lost at tau = {first.lost_at:.6g} in the first period "
-                            f"from the static state abar = {a:.6g}", model, start, 1, integrators, first.lost_at)
+                                  f"from the static state abar = {a:.6g}", model, start, 1, integrators, first.lost_at)
         v_scale = observed_v_scale(first)
-        if first.y_end[0] > 0:
-            lower, lower_is_loss = a, False
-        elif first.y_end[0] < 0:
-            upper = a
+        bracket.record(a, float(first.y_end[0]))
         # A static state that is already periodic to rounding (a contact that does not move) is
         # the state reached; otherwise the iteration starts from the guess.
-        if lower < guess < upper and not periodic_to_rounding(first, integrators):
+        if bracket.contains(guess) and not periodic_to_rounding(first, integrators):
             a = guess
     periods = 0 if guess is None else 1
     previous: tuple[float, float] | None = None  # (a0, g) of the last evaluation with r' < 0
@@ -159,54 +233,100 @@ def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_itera
         periods += 1
         a_next = math.nan
         if not math.isnan(run.lost_at):
-            lower, lower_is_loss = a, True
+            bracket.record_loss(a)
         else:
             v_scale = observed_v_scale(run)
-            u_end = float(run.y_end[0])
-            drift = run.period.v_scale * u_end / model.rate  # r = abar(2pi) - abar(0)
-            if model.variational:
-                log_multiplier = float(run.y_end[1])
-                slope = math.expm1(log_multiplier)  # r'(a0) = multiplier - 1
-            else:
-                slope = float(_psi(run, integrators)[0, 0])
-                log_multiplier = math.log1p(slope) if slope > -1 else -math.inf
-            if drift > 0:
-                lower, lower_is_loss = a, False
-            elif drift < 0:
-                upper = a
+            drift, slope, log_multiplier = _rigid_drift_and_slope(model, run, integrators)
+            bracket.record(a, drift)
             if slope < 0:
-                g = drift / slope
-                g_slope = 1.0
-                if previous is not None and previous[0] != a:
-                    secant = (g - previous[1]) / (a - previous[0])
-                    g_slope = secant if secant > 0 else 1.0
-                previous = (a, g)
-                step = -g / g_slope
-                # uncertainty of the fixed point caused by the integration error of v(2pi)
-                noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run) * run.period.v_scale
-                         / (model.rate * abs(slope) * g_slope))
+                step, noise, previous = _secant_step(model, run, integrators, a, drift, slope, previous)
                 if periodic_to_rounding(run, integrators) or abs(step) <= max(_NEWTON_XTOL * a, noise):
                     multiplier = np.array([math.exp(log_multiplier)], dtype=complex)
                     return summarise(model, run, integrators, multiplier, abs(drift) / a, periods, speed_range)
                 a_next = a + step
-        if not (lower < a_next < upper):  # also catches NaN
-            if math.isfinite(upper):
-                a_next = 0.5 * (lower + upper)
-            elif lower_is_loss or a <= lower:
-                a_next = 2.0 * max(a, lower)
-            else:
-                a_next = a + 2.0 * max(a - lower, 1e-3 * a)
-        if math.isfinite(upper) and upper - lower <= 4e-16 * upper:
-            if lower_is_loss:
+        a_next = bracket.fallback(a, a_next)
+        if bracket.collapsed():
+            if bracket.lower_is_loss:
                 return failure_record("contact_loss", "the transient from the start state drifts to contact loss: "
-                                "no periodic state between the start and the loss boundary", model,
-                                np.array([a]), periods, integrators)
+                                      "no periodic state between the start and the loss boundary", model,
+                                      np.array([a]), periods, integrators)
             break
         if a_next > MAX_ABAR:
             break
         a = a_next
     return failure_record("not_converged", f"shooting did not converge in {periods} periods",
-                    model, np.array([a]), periods, integrators)
+                          model, np.array([a]), periods, integrators)
+
+
+# --- Compliant fixation: damped Newton–Broyden on the 3-D map ------------------------------------
+
+#: (g and the residual in absolute units, noise of g in scaled units, residual at rounding level).
+_Correction = tuple[Array, Array, float, bool]
+
+
+def _correction(model: Model, run: Run, integrators: Integrators) -> _Correction | None:
+    """The Newton correction g = Psi^{-1} r of a compliant period (None where Psi is singular).
+
+    Returns g and the residual r in absolute units, the noise of g in scaled units (the
+    uncertainty that an integration error of 10 rtol in r causes) and whether r is at rounding level.
+    """
+    period = run.period
+    residual = run.y_end[:3] - np.array(period.core_start())
+    psi = _psi(run, integrators)
+    try:
+        g_scaled = np.linalg.solve(psi, residual)
+        noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run)
+                 * np.linalg.norm(np.linalg.inv(psi), np.inf))
+    except np.linalg.LinAlgError:
+        return None
+    unscale = np.array([period.x_scale, period.x_scale, period.v_scale / model.rate])
+    return g_scaled * unscale, residual * unscale, noise, periodic_to_rounding(run, integrators)
+
+
+def _broyden_step(broyden: Array, z: Array, g: Array, previous: tuple[Array, Array] | None,
+                  scales: Array) -> tuple[Array, Array]:
+    """(B, dz): the Broyden update of B (dg/dz, in the metric of ``scales``) and the step B dz = -g.
+
+    ``previous`` is the (z, g) of the last iterate; a singular B is reset to the identity.
+    """
+    weight = 1.0 / scales**2
+    if previous is not None:
+        s_k, y_k = z - previous[0], g - previous[1]
+        denominator = float(s_k @ (weight * s_k))
+        if denominator > 0:
+            broyden = broyden + np.outer(y_k - broyden @ s_k, weight * s_k) / denominator
+    try:
+        step = -np.linalg.solve(broyden, g)
+    except np.linalg.LinAlgError:
+        broyden = np.eye(3)
+        step = -g
+    return broyden, step
+
+
+def _damped_step(model: Model, z: Array, step: Array, v_scale: float, scales: Array, merit: float,
+                 integrators: Integrators, periods: int, max_iterations: int,
+                 ) -> tuple[tuple[Array, Run, _Correction] | None, int, bool]:
+    """Halve the step (at most 5 times) while the trial orbit loses the contact or its |g| grows.
+
+    Returns (the accepted (z, run, correction) or None, periods used so far, whether every
+    halving failed); None without exhaustion means the period budget ran out.
+    """
+    for halving in range(6):
+        trial = z + 0.5**halving * step
+        if trial[2] <= 0:
+            continue
+        periods += 1
+        try:
+            trial_run = _evaluate(model, trial, v_scale, integrators)
+        except IntegrationFailure:
+            continue
+        trial_correction = _correction(model, trial_run, integrators) if math.isnan(trial_run.lost_at) else None
+        if trial_correction is not None and (
+                float(np.max(np.abs(trial_correction[0]) / scales)) < merit or halving == 5):
+            return (trial, trial_run, trial_correction), periods, False
+        if periods >= max_iterations:
+            return None, periods, False
+    return None, periods, True
 
 
 def _shoot_compliant(model: Model, start: Array, integrators: Integrators, max_iterations: int,
@@ -229,48 +349,23 @@ def _shoot_compliant(model: Model, start: Array, integrators: Integrators, max_i
         first = run_period(Period(model, z, v_scale, x_scale(model, z)), integrators, full=False, transient=True)
         periods += 1
         if not math.isnan(first.lost_at):
-            return failure_record("contact_loss", f"contact lost at tau = {first.lost_at:.6g} in the first period from "
-                            f"the static state {z.tolist()}", model, z, 1, integrators, first.lost_at)
+            return failure_record("contact_loss", f"contact lost at tau = {first.lost_at:.6g} in the first period "
+                                  f"from the static state {z.tolist()}", model, z, 1, integrators, first.lost_at)
         if not periodic_to_rounding(first, integrators):
             z = guess.copy()
     run = _evaluate(model, z, v_scale, integrators)
     periods += 1
     if not math.isnan(run.lost_at):
         return failure_record("contact_loss", f"contact lost at tau = {run.lost_at:.6g} in the first period from "
-                        f"{z.tolist()}", model, z, periods, integrators, run.lost_at)
-
-    def correction(run: Run) -> tuple[Array, Array, float, bool] | None:
-        """(g and the residual in absolute units, noise of g in scaled units, residual at rounding level)."""
-        period = run.period
-        residual = run.y_end[:3] - np.array(period.core_start())
-        psi = _psi(run, integrators)
-        try:
-            g_scaled = np.linalg.solve(psi, residual)
-            noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run)
-                     * np.linalg.norm(np.linalg.inv(psi), np.inf))
-        except np.linalg.LinAlgError:
-            return None
-        unscale = np.array([period.x_scale, period.x_scale, period.v_scale / model.rate])
-        return g_scaled * unscale, residual * unscale, noise, periodic_to_rounding(run, integrators)
-
+                              f"{z.tolist()}", model, z, periods, integrators, run.lost_at)
     broyden = np.eye(3)
     previous: tuple[Array, Array] | None = None
-    current = correction(run)
+    current = _correction(model, run, integrators)
     while current is not None and periods < max_iterations:
         v_scale = observed_v_scale(run)
         g, residual, noise, at_rounding = current
         scales = np.array([run.period.x_scale, run.period.x_scale, max(v_scale / model.rate, 1e-14 * z[2])])
-        weight = 1.0 / scales**2
-        if previous is not None:
-            s_k, y_k = z - previous[0], g - previous[1]
-            denominator = float(s_k @ (weight * s_k))
-            if denominator > 0:
-                broyden = broyden + np.outer(y_k - broyden @ s_k, weight * s_k) / denominator
-        try:
-            step = -np.linalg.solve(broyden, g)
-        except np.linalg.LinAlgError:
-            broyden = np.eye(3)
-            step = -g
+        broyden, step = _broyden_step(broyden, z, g, previous, scales)
         converged = np.all(np.abs(step) <= _NEWTON_XTOL * np.array([scales[0], scales[1], z[2]]))
         if converged or at_rounding or float(np.max(np.abs(step) / scales)) <= noise:
             relative = np.abs(residual) / np.array([scales[0], scales[1], z[2]])
@@ -278,30 +373,18 @@ def _shoot_compliant(model: Model, start: Array, integrators: Integrators, max_i
             return summarise(model, run, integrators, multipliers, float(np.max(relative)), periods, speed_range)
         merit = float(np.max(np.abs(g) / scales))
         previous = (z.copy(), g)
-        for halving in range(6):
-            trial = z + 0.5**halving * step
-            if trial[2] <= 0:
-                continue
-            periods += 1
-            try:
-                trial_run = _evaluate(model, trial, v_scale, integrators)
-            except IntegrationFailure:
-                continue
-            trial_correction = correction(trial_run) if math.isnan(trial_run.lost_at) else None
-            if trial_correction is not None and (
-                    float(np.max(np.abs(trial_correction[0]) / scales)) < merit or halving == 5):
-                z, run, current = trial, trial_run, trial_correction
-                break
-            if periods >= max_iterations:
-                break
-        else:
+        accepted, periods, exhausted = _damped_step(model, z, step, v_scale, scales, merit, integrators, periods,
+                                                    max_iterations)
+        if exhausted:
             return failure_record("not_converged", "every damped step lost the contact or had a singular Jacobian",
-                            model, z, periods, integrators)
+                                  model, z, periods, integrators)
+        if accepted is not None:
+            z, run, current = accepted
     if current is None:
         return failure_record("not_converged", "singular monodromy matrix minus identity", model, z, periods,
-                        integrators)
+                              integrators)
     return failure_record("not_converged", f"shooting did not converge in {periods} periods", model, z, periods,
-                    integrators)
+                          integrators)
 
 
 def steady_state(
