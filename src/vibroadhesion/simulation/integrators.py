@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable, Sequence
+from functools import partial
 from typing import Literal, NamedTuple
 
 import numpy as np
@@ -229,6 +230,11 @@ class IntegrationFailure(RuntimeError):
     """An integrator gave up (step size underflow, step budget, stiffness detected)."""
 
 
+def _fortran_solout(on_step: Callable[[float, Array], bool], tau: float, y: Array) -> int:
+    """``on_step`` in the convention of the Fortran DOP853's solout: -1 stops the integration."""
+    return -1 if on_step(tau, y) else 0
+
+
 def _integrate(
     fun: Callable[[float, Array], list[float]],
     jac: Callable[[float, Array], Array],
@@ -248,7 +254,7 @@ def _integrate(
     if integrator == _FORTRAN:
         solver = ode(fun).set_integrator("dop853", rtol=rtol, atol=rtol, nsteps=_FORTRAN_MAX_STEPS)
         if on_step is not None:
-            solver.set_solout(lambda t, y: -1 if on_step(t, y) else 0)
+            solver.set_solout(partial(_fortran_solout, on_step))
         solver.set_initial_value(list(y0), tau0)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)  # failures are read from the return code
@@ -325,27 +331,38 @@ class Integrators:
         return "+".join(self.used)
 
 
-def run_period(period: Period, integrators: Integrators, full: bool, transient: bool = False) -> Run:
-    """Integrate one period, stopping at contact loss; records accepted steps and the range of u."""
-    steps: list[tuple[float, list[float]]] = []
-    dim, loss = period.dim, period.m.contact_loss_abar
-    lost = [math.nan]
+class _StepRecorder:
+    """The ``on_step`` of a period: records accepted steps (tau, scaled core), stops at contact loss.
 
-    def on_step(tau: float, y: Array) -> bool:
-        core = y[:dim].tolist()
-        if period.abar(core[-1]) < loss:
-            lost[0] = tau
+    Contact is lost when abar falls below ``contact_loss_abar`` (model docstring). One recorder
+    serves a period's attempts: after a retry with Radau, steps are appended only past the last
+    one recorded.
+    """
+
+    def __init__(self, period: Period):
+        self.period = period
+        self.dim, self.loss = period.dim, period.m.contact_loss_abar
+        self.steps: list[tuple[float, list[float]]] = []
+        self.lost_at = math.nan
+
+    def __call__(self, tau: float, y: Array) -> bool:
+        core = y[: self.dim].tolist()
+        if self.period.abar(core[-1]) < self.loss:
+            self.lost_at = tau
             return True
-        if not steps or tau > steps[-1][0]:
-            steps.append((tau, core))
+        if not self.steps or tau > self.steps[-1][0]:
+            self.steps.append((tau, core))
         return False
 
+
+def run_period(period: Period, integrators: Integrators, full: bool, transient: bool = False) -> Run:
+    """Integrate one period, stopping at contact loss; records accepted steps and the range of u."""
+    recorder = _StepRecorder(period)
     fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
     y0 = period.full_start() if full else period.core_start()
-    _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, on_step, transient)
-    u = [core[-1] for _, core in steps]
-    return Run(period, lost[0], y_end, steps, (min(u), max(u)))
-
+    _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)
+    u = [core[-1] for _, core in recorder.steps]
+    return Run(period, recorder.lost_at, y_end, recorder.steps, (min(u), max(u)))
 
 
 # --- Scales ----------------------------------------------------------------------------------------

@@ -82,7 +82,7 @@ collapse is a finite-time blow-up (tested: 1e-3 and 1e-4 give the same loss time
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -274,6 +274,19 @@ def _jkr_force(abar: float) -> float:
     return (4.0 / 3.0) * abar**3 - 2.0 * abar**1.5
 
 
+def _rigid_static_excess(abar: float, d0: float) -> float:
+    """g(a) of the rigid fixation: s(a) - deltabar0 (Eq. A.7 with kappa -> infinity)."""
+    return _jkr_displacement(abar) - d0
+
+
+def _spring_static_excess(abar: float, d0: float, stiffness: float, cube: float, mu: float) -> float:
+    """g(a) = kappa c_o^2 (s(a) - deltabar0) + c_o^3 p(a) - mu (Eqs. 80, 82, A.7).
+
+    ``stiffness`` = kappa c_o^2, ``cube`` = c_o^3 (model docstring, "Static state").
+    """
+    return stiffness * (_jkr_displacement(abar) - d0) + cube * _jkr_force(abar) - mu
+
+
 def static_state(excitation: BaseExcitation, fixation: SpringFixation | None = None) -> StaticState:
     """Static equilibrium (Eqs. A.4–A.7): the largest root of g(a) = 0 (module docstring).
 
@@ -281,25 +294,21 @@ def static_state(excitation: BaseExcitation, fixation: SpringFixation | None = N
     beyond the JKR pull-off of the displacement-controlled assembly).
     """
     d0 = excitation.deltabar0
+    excess: Callable[..., float]
     if fixation is None:
-        def excess(a: float) -> float:
-            return _jkr_displacement(a) - d0
+        excess, args = _rigid_static_excess, (d0,)
     else:
         c_o = excitation.contact_scale
-        stiffness, cube = fixation.kappa * c_o**2, c_o**3
-
-        def excess(a: float) -> float:
-            return stiffness * (_jkr_displacement(a) - d0) + cube * _jkr_force(a) - fixation.mu
-
+        excess, args = _spring_static_excess, (d0, fixation.kappa * c_o**2, c_o**3, fixation.mu)
     hi = 2.0
-    while excess(hi) <= 0:
+    while excess(hi, *args) <= 0:
         hi *= 2.0
     lo = hi
-    while excess(lo) > 0:
+    while excess(lo, *args) > 0:
         lo *= 0.9
         if lo < 1e-9:
             raise NoStaticContactError(f"no static contact for deltabar0 = {d0} (Eqs. A.4–A.7)")
-    abar = brentq(excess, lo, lo / 0.9, xtol=1e-15, rtol=4 * np.finfo(float).eps)
+    abar = brentq(excess, lo, lo / 0.9, args=args, xtol=1e-15, rtol=4 * np.finfo(float).eps)
     if fixation is None:
         # The stable branch of displacement control is a > 4^(-2/3) where s is increasing.
         if abar < 4.0 ** (-2.0 / 3.0):

@@ -113,7 +113,7 @@ class Transient(NamedTuple):
 
 
 def _refine_roots(
-    run: Run, integrators: Integrators, g: Callable[[float, list[float]], float]
+    run: Run, integrators: Integrators, g: Callable[[Period, float, list[float]], float]
 ) -> list[tuple[float, list[float]]]:
     """Points (tau, scaled core) where g changes sign between accepted steps, by Brent + re-integration.
 
@@ -122,7 +122,7 @@ def _refine_roots(
     does not reproduce (g at rounding level, as for a contact that does not move) is dropped.
     """
     period = run.period
-    values = [g(t, core) for t, core in run.steps]
+    values = [g(period, t, core) for t, core in run.steps]
     roots = []
     for k in range(len(run.steps) - 1):
         if values[k] == 0.0:
@@ -131,18 +131,42 @@ def _refine_roots(
         if values[k] * values[k + 1] >= 0.0:
             continue
         tau_k, core_k = run.steps[k]
-
-        def state(tau: float) -> list[float]:
-            if tau == tau_k:
-                return core_k
-            return integrators.run(period.core_rhs, period.core_jacobian, tau_k, core_k, tau)[1].tolist()
-
+        in_step = (period, integrators, tau_k, core_k)
         tau_end = run.steps[k + 1][0]
-        if values[k] * g(tau_end, state(tau_end)) >= 0.0:
+        if values[k] * g(period, tau_end, _state_in_step(tau_end, *in_step)) >= 0.0:
             continue
-        tau_root = brentq(lambda t: g(t, state(t)), tau_k, tau_end, xtol=1e-14, rtol=1e-15)
-        roots.append((tau_root, state(tau_root)))
+        tau_root = brentq(_g_in_step, tau_k, tau_end, args=(g, *in_step), xtol=1e-14, rtol=1e-15)
+        roots.append((tau_root, _state_in_step(tau_root, *in_step)))
     return roots
+
+
+def _state_in_step(
+    tau: float, period: Period, integrators: Integrators, tau_k: float, core_k: list[float]
+) -> list[float]:
+    """Scaled core at ``tau`` inside the accepted step that starts at (tau_k, core_k), re-integrated."""
+    if tau == tau_k:
+        return core_k
+    return integrators.run(period.core_rhs, period.core_jacobian, tau_k, core_k, tau)[1].tolist()
+
+
+def _g_in_step(tau: float, g: Callable[[Period, float, list[float]], float], period: Period, integrators: Integrators,
+               tau_k: float, core_k: list[float]) -> float:
+    """g at ``tau`` on the re-integrated solution inside a step (:func:`_state_in_step`)."""
+    return g(period, tau, _state_in_step(tau, period, integrators, tau_k, core_k))
+
+
+def _turning(period: Period, tau: float, core: list[float]) -> float:
+    """abar (Phi - 1) = gap^2 - abar: zero where x = 0, i.e. at the extremes of a (Eqs. 5', 6')."""
+    abar, d, _ = period.contact_at(tau, core)
+    return (abar * abar - d) ** 2 - abar
+
+
+def _dphi_dtau(period: Period, tau: float, core: list[float]) -> float:
+    """dPhi/dtau = Phi_a a' + Phi_d deltabar': zero at the extremes of Phi, hence of the speed (Eq. 6')."""
+    abar, d, contact = period.contact_at(tau, core)
+    gap = abar * abar - d
+    phi_a, phi_d = gap * (3 * abar * abar + d) / (abar * abar), -2.0 * gap / abar
+    return phi_a * contact[0] / period.m.rate + phi_d * period.deltabar_rate(tau, core)
 
 
 def summarise(
@@ -154,23 +178,11 @@ def summarise(
     dim, rate, v_scale = model.dim, model.rate, period.v_scale
     quad = run.y_end[dim + period.n_var :]
     a0 = float(period.start[-1])
-
-    # Extremes of a: where x = 0, i.e. Phi = 1, i.e. gap^2 = abar.
-    def turning(tau: float, core: list[float]) -> float:
-        abar, d, _ = period.contact_at(tau, core)
-        return (abar * abar - d) ** 2 - abar
-
-    # Extremes of Phi (of the speed, which decreases with Phi): dPhi/dtau = Phi_a a' + Phi_d deltabar' = 0.
-    def dphi_dtau(tau: float, core: list[float]) -> float:
-        abar, d, contact = period.contact_at(tau, core)
-        gap = abar * abar - d
-        phi_a, phi_d = gap * (3 * abar * abar + d) / (abar * abar), -2.0 * gap / abar
-        return phi_a * contact[0] / rate + phi_d * period.deltabar_rate(tau, core)
-
-    u_values = [0.0, *(core[-1] for _, core in _refine_roots(run, integrators, turning))]
+    # Extremes of a (x = 0) and of Phi (of the speed, which decreases with Phi).
+    u_values = [0.0, *(core[-1] for _, core in _refine_roots(run, integrators, _turning))]
     u_values.append(float(run.y_end[dim - 1]))
     half_range = 0.5 * (max(u_values) - min(u_values)) * v_scale  # in v units: = Abar
-    candidates = [*run.steps, *_refine_roots(run, integrators, dphi_dtau)]
+    candidates = [*run.steps, *_refine_roots(run, integrators, _dphi_dtau)]
     peak_speed = max(abs(period.contact_at(t, core)[2][0]) for t, core in candidates)
 
     abar_m = a0 + quad[0] * v_scale / (TWO_PI * rate)
@@ -250,6 +262,16 @@ def _frozen_excitation(model: Model, abar: float) -> tuple[float, complex]:
     return x_mean + model.deltabar0, 2.0 * abar * sigma * model.eps / denominator
 
 
+def _frozen_orbit_drift(abar: float, model: Model) -> float:
+    """Mean front speed of the frozen contact ``abar`` under its frozen excitation (rigid or spring).
+
+    :func:`_frozen_drift` with the contact displacement deltabar = mean + Im((X - eps) e^{i tau})
+    of :func:`_frozen_excitation` (limit omega_check -> infinity of Eqs. 3', 6').
+    """
+    d_mean, x_hat = _frozen_excitation(model, abar)
+    return _frozen_drift(model, abar, d_mean, abs(x_hat - model.eps))
+
+
 def frozen_start(model: Model) -> Array | None:
     """Start of the periodic orbit in the limit omega_check -> infinity (a guess for the shooting).
 
@@ -257,21 +279,17 @@ def frozen_start(model: Model) -> Array | None:
     contact displacement deltabar = mean + Im((X - eps) e^{i tau}) of :func:`_frozen_excitation`;
     None when no root is bracketed.
     """
-    def drift(abar: float) -> float:
-        d_mean, x_hat = _frozen_excitation(model, abar)
-        return _frozen_drift(model, abar, d_mean, abs(x_hat - model.eps))
-
     hi = 1.0
-    while drift(hi) > 0:
+    while _frozen_orbit_drift(hi, model) > 0:
         hi *= 2.0
         if hi > MAX_ABAR:
             return None
     lo = 0.5 * hi
-    while drift(lo) <= 0:
+    while _frozen_orbit_drift(lo, model) <= 0:
         lo, hi = 0.5 * lo, lo
         if lo < 1e-3:
             return None
-    abar = brentq(drift, lo, hi, xtol=1e-12)
+    abar = brentq(_frozen_orbit_drift, lo, hi, args=(model,), xtol=1e-12)
     if not model.compliant:
         return np.array([abar])
     d_mean, x_hat = _frozen_excitation(model, abar)
