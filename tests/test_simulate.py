@@ -27,6 +27,7 @@ import pytest
 
 from vibroadhesion import simulation as sim
 from vibroadhesion.simulation.model import contact_kernel
+from vibroadhesion.simulation.shooting import _Bracket
 from vibroadhesion.core.groups import contact_radius_scale
 from vibroadhesion.core.jkr import contact_force, indentation
 from vibroadhesion.core.ratelaw import GentSchultz
@@ -361,6 +362,24 @@ def test_speed_range_flag() -> None:
     assert r.peak_speed_in_range is None
     assert sim.steady_state(ex, speed_range=(0.0, 2 * r.peak_speed)).peak_speed_in_range is True
     assert sim.steady_state(ex, speed_range=(0.0, 0.5 * r.peak_speed)).peak_speed_in_range is False
+
+
+def test_rigid_bracket_keeps_the_fixed_point_and_bisects_steps_that_leave_it() -> None:
+    """Reference: the rule of the shooting module's docstring. r > 0 at a0 puts the fixed point
+    above a0, r < 0 below; a step leaving the bracket is replaced by its midpoint, or, before an
+    upper end is known, by a doubling (of a0 after a contact loss, else of the last step from the
+    lower end); the bracket is exhausted at 4e-16 relative width."""
+    bracket = _Bracket()
+    bracket.record_loss(0.5)
+    assert bracket.fallback(0.5, math.nan) == 1.0
+    bracket.record(1.0, 1e-3)
+    assert (bracket.lower, bracket.lower_is_loss, bracket.upper) == (1.0, False, math.inf)
+    assert bracket.fallback(1.0, 1.5) == 1.5
+    assert bracket.fallback(1.2, 0.5) == pytest.approx(1.6, rel=1e-15)
+    bracket.record(3.0, -1e-3)
+    assert bracket.fallback(2.0, 7.0) == 2.0 and bracket.fallback(2.0, math.nan) == 2.0
+    assert not bracket.collapsed()
+    assert _Bracket(1.0, False, 1.0 + 2.0**-52).collapsed()
 
 
 # --------------------------------------------------------------------------- compliant fixation
