@@ -16,7 +16,7 @@ import pytest
 from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.leading_order import Fixation, pulloff_leading
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.simulation.simulate import SpringFixation
+from vibroadhesion.simulation import SpringFixation
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 
 CHI0, RADIUS = 2.589e-2, 51.5e-3

@@ -17,7 +17,7 @@ rule benchmark_simulate:
     """Speed against error of the direct simulation: shooting vs brute-force transients, rtol self-consistency."""
     input:
         script="benchmarks/simulate.py",
-        code=code("ratelaw", "groups", "simulate", "benchmarking"),
+        code=code("ratelaw", "groups", *SIMULATION, "benchmarking"),
     output:
         "results/benchmarks/simulate.txt",
     log:
@@ -33,7 +33,7 @@ rule benchmark_speed_vs_error:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         errors="results/validation/rigid_errors.csv",
-        code=code(*NUMERICS, "simulate", "exact_averaging", "exact_harmonic_balance", "validation", "benchmarking",
+        code=code(*NUMERICS, *SIMULATION, "exact_averaging", "exact_harmonic_balance", "validation", "benchmarking",
                   "data", "artefacts"),
     output:
         csv="results/benchmarks/speed_vs_error.csv",

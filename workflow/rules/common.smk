@@ -19,3 +19,5 @@ def code(*modules):
 
 
 NUMERICS = ["ratelaw", "integrals", "roots", "groups", "jkr", "leading_order", "refined", "pulloff"]
+#: The simulation sub-package, module by module (model -> integrators -> orbits -> shooting).
+SIMULATION = ["model", "integrators", "orbits", "shooting"]

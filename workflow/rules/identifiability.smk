@@ -10,7 +10,7 @@ rule pulloff_sensitivity:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
+        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
                   "identifiability", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/identifiability/sensitivity/{parameter}_{sign}.csv",

@@ -9,7 +9,7 @@ rule validation_rigid:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "exact_harmonic_balance", "compliant", "continuation",
+        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "exact_harmonic_balance", "compliant", "continuation",
                   "validation", "figures", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/rigid/h1_{h1}.csv",
@@ -65,7 +65,7 @@ rule validation_compliant:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "progress", "compliant", "continuation", "validation", "figures", "fitting", "data", "cli",
+        code=code(*NUMERICS, *SIMULATION, "progress", "compliant", "continuation", "validation", "figures", "fitting", "data", "cli",
                   "artefacts"),
     output:
         "results/validation/compliant_sweep.csv",
@@ -117,7 +117,7 @@ rule virtual_pulloff:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "simulate", "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
+        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
                   "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv",

@@ -4,7 +4,7 @@ For each base amplitude h1 and frequency omega_check the steady state of the rig
 nominal point contact (h0 = hhat, Eq. 78) is computed five ways:
 
 * ``simulation``: periodic orbit of Eqs. (4), (5) with w = w0 f(adot/v0), shooting on the
-  one-period map (:mod:`vibroadhesion.simulation.simulate`), the ground truth;
+  one-period map (:mod:`vibroadhesion.simulation`), the ground truth;
 * ``leading``: Eq. (55) with abar_m^(3/2) = J0 (Eqs. 99, 123), frequency independent (the
   omega_check -> infinity limit of the refined model); A/a_m from its Abar at the given omega_check;
 * ``refined``: Eqs. (122)–(123);
@@ -30,7 +30,7 @@ import pandas as pd
 
 from vibroadhesion.models import exact_averaging, exact_harmonic_balance
 
-from vibroadhesion.simulation import simulate
+from vibroadhesion.simulation import BaseExcitation, SpringFixation, steady_state
 from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.models.leading_order import mean_force_over_pulloff
@@ -57,7 +57,7 @@ def _j_model_values(sol) -> tuple[float, ...]:
 
 
 def _simulation(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
-    sim = simulate.steady_state(simulate.BaseExcitation(law, chi0, eta1, omega_check))
+    sim = steady_state(BaseExcitation(law, chi0, eta1, omega_check))
     if sim.status != "converged":
         return sim.status, None
     return "ok", (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)
@@ -174,17 +174,17 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
     not provide one). ``progress`` advances once per simulated frequency.
     """
     law = GentSchultz(n)
-    fixation = simulate.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
+    fixation = SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
     curve = trace_response_curve(p, law, (min(omega_bar), max(omega_bar)))
     rows = []
     for direction, grid in (("up", list(omega_bar)), ("down", list(omega_bar)[::-1])):
         state = None
         for w in grid:
-            excitation = simulate.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
-            sim = simulate.steady_state(excitation, fixation, initial_state=state)
+            excitation = BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
+            sim = steady_state(excitation, fixation, initial_state=state)
             status, solved = "ok", 1
             if sim.status != "converged" and state is not None:
-                sim = simulate.steady_state(excitation, fixation)
+                sim = steady_state(excitation, fixation)
                 status, solved = "ok, restarted from the static state", 2
             if progress is not None:
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")

@@ -2,7 +2,7 @@
 
 No measured pull-off forces behind the paper's Fig. 4 are published; this module generates the
 simulated counterpart. The base is withdrawn quasi-statically: a family of periodic steady states
-of the full model (:mod:`vibroadhesion.simulation.simulate`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
+of the full model (:mod:`vibroadhesion.simulation`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
 (Eq. 11 with h0 growing), each orbit started from a prediction extrapolated from the previous two.
 Along the family the mean contact force P_m first grows more tensile, passes an extremum and then
 relaxes; the pull-off force is the most tensile mean force of the family, located by a bounded
@@ -69,7 +69,7 @@ from vibroadhesion.models import exact_averaging
 
 from vibroadhesion.core import groups
 
-from vibroadhesion.simulation import simulate
+from vibroadhesion import simulation
 from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
@@ -103,21 +103,21 @@ def _ended(failure: str, solved: int) -> VirtualPulloff:
     return VirtualPulloff(status, *(math.nan,) * 6, solved)
 
 
-def _end_of_family(excitation: simulate.BaseExcitation, fixation: simulate.SpringFixation | None,
-                   last: simulate.SteadyState, failure: str) -> str:
+def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.SpringFixation | None,
+                   last: simulation.SteadyState, failure: str) -> str:
     """Why the family ends: the shooting's own ``contact_loss``, or else the transient from the last orbit at
     the nearest failed deltabar0 over END_TRANSIENT_PERIODS periods (``contact_loss`` if it loses contact)."""
     if failure == "contact_loss":
         return failure
     try:
-        run = simulate.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
+        run = simulation.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
     except RuntimeError:
         return failure
     return "contact_loss" if run.status == "contact_loss" else failure
 
 
 def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz,
-                      fixation: simulate.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
+                      fixation: simulation.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
                       halvings: int = 6, iterations: int = 15) -> VirtualPulloff:
     """Pull-off from the family of steady states in deltabar0 (module docstring); ``fixation=None`` is rigid.
 
@@ -128,22 +128,22 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
     family is declared ended if it fails again.
     An orbit started from a predicted state gets ``iterations`` shooting periods (3–6 suffice along the
     families computed here; beyond the fold the shooting cannot converge, and the cap keeps those
-    attempts cheap); the first, from the static state, the default of :func:`simulate.steady_state`.
+    attempts cheap); the first, from the static state, the default of :func:`simulation.steady_state`.
     The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
     """
     sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
     solved = 0
 
-    def excitation(d0: float) -> simulate.BaseExcitation:
-        return simulate.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0)
+    def excitation(d0: float) -> simulation.BaseExcitation:
+        return simulation.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0)
 
-    def orbit(d0: float, state) -> simulate.SteadyState:
+    def orbit(d0: float, state) -> simulation.SteadyState:
         nonlocal solved
         solved += 1
-        return simulate.steady_state(excitation(d0), fixation, initial_state=state,
+        return simulation.steady_state(excitation(d0), fixation, initial_state=state,
                                      **({} if state is None else {"max_iterations": iterations}))
 
-    family: list[tuple[float, simulate.SteadyState]] = []
+    family: list[tuple[float, simulation.SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
     d0, state = 0.0, None
     for _ in range(max_steps):
@@ -177,7 +177,7 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
         return _ended("not_converged", solved)
     bracket = family[-3:]  # (hi, mid, lo): the middle orbit is the most tensile so far
     (hi, _), (mid, middle), (lo, _) = bracket
-    cache: dict[float, simulate.SteadyState] = {mid: middle}
+    cache: dict[float, simulation.SteadyState] = {mid: middle}
 
     def mean_force(d: float) -> float:
         if d not in cache:
@@ -192,7 +192,7 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
                           float(at.a_over_am), solved)
 
 
-def _predicted_state(family: list[tuple[float, simulate.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
+def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
     """Start state for the orbit at ``d0``: linear extrapolation from the last two orbits of the family;
     from one orbit, its state with the spring's mean shifted by d xbar_m = -sigma S/(1 + sigma S) d deltabar0."""
     d_last, last = family[-1]
@@ -205,7 +205,7 @@ def _predicted_state(family: list[tuple[float, simulate.SteadyState]], d0: float
     return state
 
 
-def _interpolated_state(bracket: list[tuple[float, simulate.SteadyState]], d0: float) -> np.ndarray:
+def _interpolated_state(bracket: list[tuple[float, simulation.SteadyState]], d0: float) -> np.ndarray:
     """Start state inside the bracket of the extremum: piecewise-linear in deltabar0 between its orbits."""
     ds = np.array([d for d, _ in bracket])[::-1]  # ascending
     states = np.array([o.start_state for _, o in bracket])[::-1]
@@ -233,7 +233,7 @@ COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "statu
 
 
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
-                  reduced_modulus: float, fixation: simulate.SpringFixation | None = None,
+                  reduced_modulus: float, fixation: simulation.SpringFixation | None = None,
                   progress: ProgressBar | None = None, predictions: bool = True) -> pd.DataFrame:
     """results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv rows: the simulated (virtual)
     experiment and, unless ``predictions`` is false, the predictions of the module docstring, for the
@@ -263,7 +263,7 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
 
 
 def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray,
-                    fixation: simulate.SpringFixation | None, *, radius: float, reduced_modulus: float) -> list[dict]:
+                    fixation: simulation.SpringFixation | None, *, radius: float, reduced_modulus: float) -> list[dict]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)

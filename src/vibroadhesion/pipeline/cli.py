@@ -22,7 +22,7 @@ from vibroadhesion.core import groups
 
 from vibroadhesion.experiments import identifiability, validation, virtual_pulloff
 
-from vibroadhesion.simulation import simulate
+from vibroadhesion.simulation import SpringFixation
 from vibroadhesion.models.compliant import CompliantFixation
 from vibroadhesion.numerics.continuation import ContinuationError
 from vibroadhesion.pipeline.artefacts import save_figure, write_csv, write_json
@@ -208,7 +208,7 @@ def _virtual_pulloff(args: argparse.Namespace) -> None:
             raise ValueError("the compliant virtual pull-off needs --kappa and --zeta")
         setup, params, _, fixation = _rig_and_fixation(args)  # weight and natural frequency: data/setup.yaml
         nu0 = groups.nu0(params.v0, float(fixation["natural_frequency"]), setup.radius)
-        spring = simulate.SpringFixation(args.kappa, args.zeta, nu0, float(fixation["weight_ratio_mu"]))
+        spring = SpringFixation(args.kappa, args.zeta, nu0, float(fixation["weight_ratio_mu"]))
     h1 = np.asarray(setup.amplitudes_um, dtype=float)
     table = virtual_pulloff.pulloff_table(params, args.frequency_hz, h1, radius=setup.radius,
                                           reduced_modulus=setup.reduced_modulus, fixation=spring,
