@@ -2,25 +2,24 @@
 
 Same inputs give the same bytes: CSVs use a fixed float format and line ending, figures are
 saved without timestamps or software versions in their metadata, and every file is written
-to a temporary name in its folder and moved into place, so a failed step leaves no partial
-output behind.
+to a temporary name in its folder and moved into place (:func:`~vibroadhesion.pipeline.atomic.atomic_path`:
+mode 0o666 & ~umask, like any file the user creates), so a failed step leaves no partial output behind.
 """
 
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from collections.abc import Callable
-from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
+
+from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402  (re-exported for report and benchmarks)
 
 STYLE = {
     "font.size": 9,
@@ -36,21 +35,6 @@ plt.rcParams.update(STYLE)
 
 _PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
 _PNG_METADATA = {"Software": None}
-
-
-@contextmanager
-def atomic_path(path: str | Path) -> Iterator[Path]:
-    """Yield a temporary path beside ``path``; move it onto ``path`` only if the block succeeds."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=path.suffix)
-    os.close(fd)
-    try:
-        yield Path(tmp)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
 
 
 def _write_with(path: str | Path, writer: Callable[[Path], None]) -> None:
