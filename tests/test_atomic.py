@@ -55,7 +55,8 @@ def test_artefact_writers_respect_the_umask(tmp_path: Path, umask: int) -> None:
 
 def test_data_main_outputs_respect_the_umask(tmp_path: Path, umask: int) -> None:
     out_json, out_csv = tmp_path / "canon" / "setup.json", tmp_path / "canon" / "pulloff.csv"
-    assert data_main([str(ROOT / "data" / "setup.yaml"), str(ROOT / "data" / "pulloff.csv"), str(out_json), str(out_csv)]) == 0
+    inputs = [str(ROOT / "data" / "setup.yaml"), str(ROOT / "data" / "pulloff.csv")]
+    assert data_main([*inputs, str(out_json), str(out_csv)]) == 0
     assert (_mode(out_json), _mode(out_csv)) == (UMASKS[umask], UMASKS[umask])
     assert _hidden(out_json.parent) == []
 

@@ -9,9 +9,8 @@ mode 0o666 & ~umask, like any file the user creates), so a failed step leaves no
 from __future__ import annotations
 
 import json
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
@@ -19,9 +18,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import pandas as pd  # noqa: E402
 
-from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402  (re-exported for report and benchmarks)
+from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
-STYLE = {
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+    from matplotlib.typing import RcKeyType
+
+__all__ = ["STYLE", "atomic_path", "save_figure", "write_csv", "write_json"]  # atomic_path: for report, benchmarks
+
+STYLE: dict[RcKeyType, Any] = {
     "font.size": 9,
     "axes.grid": True,
     "grid.alpha": 0.3,
@@ -37,23 +42,22 @@ _PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
 _PNG_METADATA = {"Software": None}
 
 
-def _write_with(path: str | Path, writer: Callable[[Path], None]) -> None:
-    with atomic_path(path) as tmp:
-        writer(tmp)
-
-
 def write_csv(table: pd.DataFrame, path: str | Path) -> None:
-    """CSV with 17 significant digits (round-trips doubles), '\\n' line ends, no index."""
-    _write_with(path, lambda tmp: table.to_csv(tmp, index=False, float_format="%.17g", lineterminator="\n"))
+    r"""CSV with 17 significant digits (round-trips doubles), '\n' line ends, no index."""
+    with atomic_path(path) as tmp:
+        table.to_csv(tmp, index=False, float_format="%.17g", lineterminator="\n")
 
 
 def write_json(data: Any, path: str | Path) -> None:
     """Indented JSON with sorted keys and a final newline."""
-    _write_with(path, lambda tmp: tmp.write_text(json.dumps(data, indent=2, sort_keys=True, allow_nan=False) + "\n"))
+    with atomic_path(path) as tmp:
+        tmp.write_text(json.dumps(data, indent=2, sort_keys=True, allow_nan=False) + "\n")
 
 
-def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
+def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
     """Save ``fig`` as PDF and PNG without time stamps, then close it."""
-    _write_with(pdf, lambda tmp: fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight"))
-    _write_with(png, lambda tmp: fig.savefig(tmp, format="png", metadata=_PNG_METADATA, bbox_inches="tight"))
+    with atomic_path(pdf) as tmp:
+        fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight")
+    with atomic_path(png) as tmp:
+        fig.savefig(tmp, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
     plt.close(fig)
