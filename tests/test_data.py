@@ -115,7 +115,7 @@ def test_main_on_shipped_files_writes_canonical_copies(tmp_path: Path) -> None:
     out_json, out_csv = tmp_path / "setup.json", tmp_path / "pulloff.csv"
     assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
     canonical = json.loads(out_json.read_text())
-    assert canonical["indenter"]["radius"] == {"value": 0.0515, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
+    assert canonical["indenter"]["radius"] == {"value": RADIUS, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
     assert out_csv.read_text() == HEADER + "\n"
     assert data.read_canonical_setup(out_json) == load_setup(SETUP_YAML)
     assert data.read_canonical_pulloff(out_csv).empty

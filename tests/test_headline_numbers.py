@@ -70,7 +70,10 @@ def rounds_to(value: float, printed: str) -> bool:
 
 
 def satisfies(mode: str | None, values: np.ndarray, printed: str) -> bool:
-    """The comparison of the module docstring for one marked number and the values it stands for."""
+    """The comparison of the module docstring for one marked number and the values it stands for.
+
+    ``about`` is used with numbers in fixed notation only (its unit is that of the last printed decimal).
+    """
     target = float(printed.replace("−", "-"))
     if mode == "bound":
         return bool(np.all(values <= target) and np.max(values) > target / 10)
@@ -89,7 +92,7 @@ def check(phrase: str, values: Sequence[Values]) -> None:
     for (mode, printed), value in zip(marks, values, strict=True):
         array = np.atleast_1d(np.asarray(value, dtype=float))
         assert array.size and np.all(np.isfinite(array)), (printed, array)
-        assert satisfies(mode or None, array, printed), f"README says {printed} ({mode or 'rounds'}), artefact: {array}"
+        assert satisfies(mode or None, array, printed), f"README: {printed} ({mode or 'rounds'}), artefact: {array}"
 
 
 def test_the_comparison_follows_the_printed_digits() -> None:
@@ -111,7 +114,7 @@ def read(results: Path, name: str) -> pd.DataFrame:
 
 
 def experimental_grid(results: Path) -> pd.DataFrame:
-    """Rigid validation grid at the paper's test frequencies (omega_check = 2 pi f R/v0, Eq. 105), one column per model."""
+    """Rows of the rigid validation grid at the paper's test frequencies (omega_check = 2 pi f R/v0, Eq. 105)."""
     grid = read(results, "rigid_grid")
     wanted = [2 * math.pi * f * RADIUS / V0 for f in FREQUENCIES_HZ]
     rows = grid[[any(math.isclose(w, x, rel_tol=1e-9) for x in wanted) for w in grid["omega_check"]]]
