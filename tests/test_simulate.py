@@ -24,6 +24,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import C_O, CHI0, N_PUBLISHED, NU0, RADIUS
 
 from vibroadhesion import simulation as sim
 from vibroadhesion.simulation.model import contact_kernel
@@ -31,12 +32,6 @@ from vibroadhesion.simulation.shooting import _Bracket
 from vibroadhesion.core.groups import contact_radius_scale
 from vibroadhesion.core.jkr import contact_force, indentation
 from vibroadhesion.core.ratelaw import GentSchultz
-
-CHI0 = 2.589e-2
-RADIUS = 51.5e-3
-NU0 = 1.227e-5
-N_PUBLISHED = 0.531
-C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R below Eq. (86)
 
 
 def excitation(h1_um: float, omega_check: float, n: float = N_PUBLISHED, **kw) -> sim.BaseExcitation:
