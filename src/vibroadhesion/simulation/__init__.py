@@ -1,5 +1,6 @@
-"""The full model, Eqs. (4)–(6), integrated in time: periodic steady states by shooting, transients,
-Floquet multipliers, contact loss reported.
+"""The full model, Eqs. (4)–(6), integrated in time: periodic steady states by shooting, transients.
+
+Floquet multipliers and contact loss are reported with every steady state.
 
 Modules, each importing only from those before it:
 

@@ -43,6 +43,11 @@ from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau, ode
 from vibroadhesion.simulation.model import SPEED_CAP, TWO_PI, Array, Model, contact_kernel
 
 Integrator = Literal["auto", "fortran-dop853", "Radau", "BDF", "LSODA", "DOP853", "RK45"]
+#: A right-hand side f(tau, y) of the scaled problem, and the Jacobian df/dy of one.
+RightHandSide = Callable[[float, Array], list[float]]
+Jacobian = Callable[[float, Array], Array]
+#: Called after every accepted step with (tau, y); True stops the integration.
+StepCallback = Callable[[float, Array], bool]
 
 _FORTRAN = "fortran-dop853"
 _IVP_SOLVERS = {"Radau": Radau, "BDF": BDF, "LSODA": LSODA, "DOP853": DOP853, "RK45": RK45}
@@ -72,6 +77,7 @@ class Period:
     """
 
     def __init__(self, model: Model, start: Array, v_scale: float, x_scale: float):
+        """The period of ``model`` from the absolute ``start`` with the scales V = ``v_scale``, S = ``x_scale``."""
         self.m = model
         self.start = np.asarray(start, dtype=float)
         self.b0 = model.rate * float(self.start[-1])
@@ -84,14 +90,17 @@ class Period:
     # -- conversions
 
     def abar(self, u: float) -> float:
+        """The contact radius at the scaled front displacement u, from V u = v = rate (abar - a0) (Eq. 6')."""
         return (self.b0 + self.v_scale * u) / self.m.rate
 
     def core_start(self) -> list[float]:
+        """Scaled core at tau = 0: (xbar/S, xbar'/S, 0) or (0,) (v starts at 0)."""
         if self.m.compliant:
             return [self.start[0] / self.x_scale, self.start[1] / self.x_scale, 0.0]
         return [0.0]
 
     def full_start(self) -> list[float]:
+        """Scaled core, Psi = 0 and the quadratures (all 0) at tau = 0 (shooting module, Psi(0) = 0)."""
         n_quad = _N_QUAD_COMPLIANT if self.m.compliant else _N_QUAD_RIGID
         return self.core_start() + [0.0] * (self.n_var + n_quad)
 
@@ -163,7 +172,7 @@ class Period:
 
     # -- right-hand sides
 
-    def _rigid_rhs(self) -> tuple[Callable, Callable]:
+    def _rigid_rhs(self) -> tuple[RightHandSide, RightHandSide]:
         b0, v_scale, m = self.b0, self.v_scale, self.m
         inv_rate, inv_v, d0, eps, inv_n, log_cap = 1.0 / m.rate, 1.0 / v_scale, m.deltabar0, m.eps, m.inv_n, m.log_cap
         sin, cos, contact = math.sin, math.cos, contact_kernel
@@ -183,7 +192,7 @@ class Period:
 
         return core, full
 
-    def _compliant_rhs(self) -> tuple[Callable, Callable]:
+    def _compliant_rhs(self) -> tuple[RightHandSide, RightHandSide]:
         b0, v_scale, x_scale, m = self.b0, self.v_scale, self.x_scale, self.m
         inv_rate, inv_v, d0, eps, inv_n, log_cap = 1.0 / m.rate, 1.0 / v_scale, m.deltabar0, m.eps, m.inv_n, m.log_cap
         # eta' = (offset - compliance Phat - S xi - 2 zeta omega_bar S eta) / (omega_bar^2 S), Eq. (3')
@@ -226,30 +235,30 @@ class Period:
 # --- Integration drivers --------------------------------------------------------------------------
 
 
-class IntegrationFailure(RuntimeError):
+class IntegrationError(RuntimeError):
     """An integrator gave up (step size underflow, step budget, stiffness detected)."""
 
 
-def _fortran_solout(on_step: Callable[[float, Array], bool], tau: float, y: Array) -> int:
+def _fortran_solout(on_step: StepCallback, tau: float, y: Array) -> int:
     """``on_step`` in the convention of the Fortran DOP853's solout: -1 stops the integration."""
     return -1 if on_step(tau, y) else 0
 
 
 def _integrate(
-    fun: Callable[[float, Array], list[float]],
-    jac: Callable[[float, Array], Array],
+    fun: RightHandSide,
+    jac: Jacobian,
     tau0: float,
     y0: Sequence[float],
     tau1: float,
     integrator: str,
     rtol: float,
-    on_step: Callable[[float, Array], bool] | None = None,
+    on_step: StepCallback | None = None,
 ) -> tuple[float, Array, bool]:
     """Integrate from tau0 to tau1; ``on_step(tau, y)`` after every accepted step may stop it.
 
     The state is scaled to O(1), so one absolute tolerance equal to ``rtol`` serves all
     components. ``jac`` is given to the implicit methods. Returns (tau reached, y there, stopped
-    by on_step); raises :class:`IntegrationFailure` when the integrator gives up.
+    by on_step); raises :class:`IntegrationError` when the integrator gives up.
     """
     if integrator == _FORTRAN:
         solver = ode(fun).set_integrator("dop853", rtol=rtol, atol=rtol, nsteps=_FORTRAN_MAX_STEPS)
@@ -261,7 +270,7 @@ def _integrate(
             y = solver.integrate(tau1)
         code = solver.get_return_code()
         if code < 0:
-            raise IntegrationFailure(f"Fortran DOP853 return code {code}")
+            raise IntegrationError(f"Fortran DOP853 return code {code}")
         return float(solver.t), np.array(y), code == 2
     solver_class = _IVP_SOLVERS[integrator]
     options = {"jac": jac} if integrator in _IMPLICIT else {}
@@ -275,11 +284,11 @@ def _integrate(
             warnings.simplefilter("ignore", UserWarning)  # LSODA's messages: failures are read from the status
             message = solver.step()
         if solver.status == "failed":
-            raise IntegrationFailure(f"{integrator}: {message}")
+            raise IntegrationError(f"{integrator}: {message}")
         if on_step is not None and on_step(solver.t, solver.y):
             return float(solver.t), solver.y.copy(), True
     else:
-        raise IntegrationFailure(f"{integrator}: more than {_IVP_MAX_STEPS} steps")
+        raise IntegrationError(f"{integrator}: more than {_IVP_MAX_STEPS} steps")
     return float(solver.t), solver.y.copy(), False
 
 
@@ -304,6 +313,7 @@ class Integrators:
     """
 
     def __init__(self, integrator: Integrator, rtol: float):
+        """Checks the name and ``rtol`` (in [1e-13, 1e-3]); records the methods that ran in ``used``."""
         if integrator != "auto" and integrator != _FORTRAN and integrator not in _IVP_SOLVERS:
             raise ValueError(f"unknown integrator {integrator!r}")
         if not (1e-13 <= rtol <= 1e-3):
@@ -314,11 +324,25 @@ class Integrators:
         self.rtol = rtol
         self.used: list[str] = []
 
-    def run(self, fun, jac, tau0, y0, tau1, on_step=None, transient: bool = False):
+    def run(
+        self,
+        fun: RightHandSide,
+        jac: Jacobian,
+        tau0: float,
+        y0: Sequence[float],
+        tau1: float,
+        on_step: StepCallback | None = None,
+        transient: bool = False,
+    ) -> tuple[float, Array, bool]:
+        """:func:`_integrate` with the orbit's (or, ``transient``, the transient's) method; "auto" retries with Radau.
+
+        Returns (tau reached, y there, stopped by ``on_step``) and raises :class:`IntegrationError`
+        when the (last) method gives up.
+        """
         method = self.transient if transient else self.orbit
         try:
             result = _integrate(fun, jac, tau0, y0, tau1, method, self.rtol, on_step)
-        except IntegrationFailure:
+        except IntegrationError:
             if not self.auto or method == "Radau":
                 raise
             method = "Radau"
@@ -328,6 +352,7 @@ class Integrators:
         return result
 
     def description(self) -> str:
+        """The methods that ran, in order of first use, joined by "+" (e.g. "LSODA+fortran-dop853")."""
         return "+".join(self.used)
 
 
@@ -391,6 +416,7 @@ def _v_scale_floor(model: Model, abar: float) -> float:
 
 
 def x_scale(model: Model, start: Array) -> float:
+    """S = max(eps, |xbar|, |xbar'|) of the compliant start (floored at 1e-280), 1 for the rigid fixation."""
     return max(model.eps, abs(float(start[0])), abs(float(start[1])), 1e-280) if model.compliant else 1.0
 
 

@@ -82,12 +82,12 @@ collapse is a finite-time blow-up (tested: 1e-3 and 1e-4 give the same loss time
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from vibroadhesion.core.groups import contact_radius_ratio
@@ -120,6 +120,7 @@ class BaseExcitation:
     deltabar0: float = 0.0
 
     def __post_init__(self) -> None:
+        """Reject a law other than Gent–Schultz (Eqs. 73–75) and non-finite or non-positive scales."""
         if not isinstance(self.law, GentSchultz):
             raise TypeError("the simulation implements the Gent–Schultz law (Eqs. 73–75)")
         if not (math.isfinite(self.chi0) and self.chi0 > 0):
@@ -160,6 +161,7 @@ class SpringFixation:
     mu: float = 0.0
 
     def __post_init__(self) -> None:
+        """Reject kappa, nu0 <= 0 and zeta, mu < 0 (Eqs. 65, 66, 97), and non-finite values."""
         for name in ("kappa", "nu0"):
             value = getattr(self, name)
             if not (math.isfinite(value) and value > 0):
@@ -239,6 +241,10 @@ class Model:
     """Constants of the nondimensional model (module docstring) for one parameter point."""
 
     def __init__(self, excitation: BaseExcitation, fixation: SpringFixation | None, contact_loss_abar: float):
+        """The constants of Eqs. (3'), (6') and (7); ``fixation=None`` is the rigid fixation.
+
+        ``contact_loss_abar``: the abar below which the contact counts as lost (module docstring).
+        """
         if not (0 < contact_loss_abar < 1):
             raise ValueError(f"contact_loss_abar must lie in (0, 1), got {contact_loss_abar}")
         self.excitation, self.fixation = excitation, fixation
@@ -295,6 +301,7 @@ def static_state(excitation: BaseExcitation, fixation: SpringFixation | None = N
     """
     d0 = excitation.deltabar0
     excess: Callable[..., float]
+    args: tuple[float, ...]
     if fixation is None:
         excess, args = _rigid_static_excess, (d0,)
     else:
@@ -317,7 +324,11 @@ def static_state(excitation: BaseExcitation, fixation: SpringFixation | None = N
     return StaticState(abar, _jkr_displacement(abar) - d0, _jkr_force(abar))
 
 
-def absolute_start(model: Model, state: Sequence[float] | None) -> Array:
+def absolute_start(model: Model, state: ArrayLike | None) -> Array:
+    """Absolute start state (abar,) or (xbar, xbar', abar): ``state`` checked, or the static state (Eq. 10).
+
+    Raises :class:`ValueError` unless ``state`` holds ``model.dim`` finite numbers with abar > 0.
+    """
     if state is None:
         st = static_state(model.excitation, model.fixation)
         return np.array([st.xbar, 0.0, st.abar] if model.compliant else [st.abar])

@@ -24,17 +24,17 @@ extremes of Phi, located the same way.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
-from typing import Literal, NamedTuple
+from collections.abc import Callable
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from vibroadhesion.core.groups import PHAT_JKR
 from vibroadhesion.simulation.integrators import (
+    IntegrationError,
     Integrator,
-    IntegrationFailure,
     Integrators,
     Period,
     Run,
@@ -54,6 +54,9 @@ from vibroadhesion.simulation.model import (
 )
 
 Status = Literal["converged", "contact_loss", "not_converged", "integration_failure", "speed_unresolved"]
+#: Floquet multipliers: complex, except that :func:`numpy.linalg.eigvals` returns them as real
+#: numbers when all of them are real (compliant fixation).
+Multipliers = NDArray[np.inexact[Any]]
 
 #: A periodic orbit is trusted only if its peak speed stays below this fraction of the cap.
 _RESOLVED_SPEED_FRACTION = 1e-3
@@ -93,7 +96,7 @@ class SteadyState(NamedTuple):
     deltabar_s: float
     peak_speed: float  # max |adot| / v0 over the period
     peak_speed_in_range: bool | None  # inside ``speed_range`` (None when no range is given)
-    floquet_multipliers: NDArray[np.complex128]
+    floquet_multipliers: Multipliers
     stable: bool  # all |multipliers| < 1
     periodicity_residual: float  # max_i |y_i(2pi) - y_i(0)| / scale_i (abar: relative to abar(0))
     iterations: int  # one-period integrations of the shooting (finite-difference ones not counted)
@@ -170,7 +173,7 @@ def _dphi_dtau(period: Period, tau: float, core: list[float]) -> float:
 
 
 def summarise(
-    model: Model, run: Run, integrators: Integrators, multipliers: NDArray[np.complex128],
+    model: Model, run: Run, integrators: Integrators, multipliers: Multipliers,
     residual: float, iterations: int, speed_range: tuple[float, float] | None,
 ) -> SteadyState:
     """The record of a converged period: quadratures, refined extremes of a and of Phi."""
@@ -211,7 +214,12 @@ def summarise(
 
 
 def failure_record(status: Status, message: str, model: Model, start: Array, iterations: int,
-             integrators: Integrators, tau_loss: float = math.nan) -> SteadyState:
+                   integrators: Integrators, tau_loss: float = math.nan) -> SteadyState:
+    """The record of a failure: ``status`` and ``message``, the last state tried, every number NaN.
+
+    ``tau_loss`` is the tau of contact loss (``contact_loss`` only); the multipliers are NaN too
+    and ``stable`` is False.
+    """
     nan = math.nan
     return SteadyState(
         status, message, np.asarray(start, dtype=float).copy(), nan, nan, nan, nan, nan, nan, nan, nan, nan,
@@ -305,7 +313,7 @@ def transient(
     fixation: SpringFixation | None = None,
     *,
     periods: int,
-    initial_state: Sequence[float] | None = None,
+    initial_state: ArrayLike | None = None,
     rtol: float = 1e-12,
     integrator: Integrator = "auto",
     contact_loss_abar: float = 1e-3,
@@ -327,7 +335,7 @@ def transient(
         period = Period(model, state, v_scale, x_scale(model, state))
         try:
             run = run_period(period, integrators, full=False, transient=True)
-        except IntegrationFailure as error:
+        except IntegrationError as error:
             raise RuntimeError(f"transient integration failed in period {k + 1}: {error}") from error
         if not math.isnan(run.lost_at):
             return Transient("contact_loss", np.array(states), TWO_PI * k + run.lost_at)

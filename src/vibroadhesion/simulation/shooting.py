@@ -51,14 +51,15 @@ the orbit found is known (it need not be the one the transient reaches).
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from vibroadhesion.simulation.integrators import (
+    IntegrationError,
     Integrator,
-    IntegrationFailure,
     Integrators,
     Period,
     Run,
@@ -110,7 +111,7 @@ def _psi(run: Run, integrators: Integrators) -> Array:
             neighbour = Period(period.m, shifted, period.v_scale, period.x_scale)
             neighbour_run = run_period(neighbour, integrators, full=False)
             if not math.isnan(neighbour_run.lost_at):
-                raise IntegrationFailure("contact lost next to the orbit: no finite-difference monodromy")
+                raise IntegrationError("contact lost next to the orbit: no finite-difference monodromy")
             residuals.append(neighbour_run.y_end[:dim] - np.array(neighbour.core_start()))
         psi[:, j] = (residuals[0] - residuals[1]) / (2.0 * _FD_STEP)
     return psi
@@ -275,8 +276,8 @@ def _correction(model: Model, run: Run, integrators: Integrators) -> _Correction
     psi = _psi(run, integrators)
     try:
         g_scaled = np.linalg.solve(psi, residual)
-        noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run)
-                 * np.linalg.norm(np.linalg.inv(psi), np.inf))
+        noise = float(_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run)
+                      * np.linalg.norm(np.linalg.inv(psi), np.inf))
     except np.linalg.LinAlgError:
         return None
     unscale = np.array([period.x_scale, period.x_scale, period.v_scale / model.rate])
@@ -296,7 +297,8 @@ def _broyden_step(broyden: Array, z: Array, g: Array, previous: tuple[Array, Arr
         if denominator > 0:
             broyden = broyden + np.outer(y_k - broyden @ s_k, weight * s_k) / denominator
     try:
-        step = -np.linalg.solve(broyden, g)
+        # numpy's stubs type solve() of any real operands as floating[Any]; float64 ones give float64.
+        step = -cast(Array, np.linalg.solve(broyden, g))
     except np.linalg.LinAlgError:
         broyden = np.eye(3)
         step = -g
@@ -318,7 +320,7 @@ def _damped_step(model: Model, z: Array, step: Array, v_scale: float, scales: Ar
         periods += 1
         try:
             trial_run = _evaluate(model, trial, v_scale, integrators)
-        except IntegrationFailure:
+        except IntegrationError:
             continue
         trial_correction = _correction(model, trial_run, integrators) if math.isnan(trial_run.lost_at) else None
         if trial_correction is not None and (
@@ -391,7 +393,7 @@ def steady_state(
     excitation: BaseExcitation,
     fixation: SpringFixation | None = None,
     *,
-    initial_state: Sequence[float] | None = None,
+    initial_state: ArrayLike | None = None,
     speed_range: tuple[float, float] | None = None,
     rtol: float = 1e-12,
     integrator: Integrator = "auto",
@@ -417,7 +419,7 @@ def steady_state(
             return _shoot_compliant(model, start, integrators, max_iterations, speed_range, guess)
         return _shoot_rigid(model, start, integrators, max_iterations, speed_range,
                             None if guess is None else float(guess[0]))
-    except IntegrationFailure as error:
+    except IntegrationError as error:
         return failure_record("integration_failure", str(error), model, start, 0, integrators)
 
 
