@@ -33,15 +33,23 @@ from mpmath_reference import j_integrals_mp
 from vibroadhesion.core.integrals import j_integrals
 from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.models.leading_order import (
+    SCAN_STEP,
     Fixation,
-    critical_abars,
+    MeanBalance,
+    approach_resonance,
+    balance_state,
+    bracket_tail_root,
     fixation_transmissibility,
+    in_monotone_tail,
     indentation_amplitude,
     internal_variable,
     mean_balance_residual,
-    pulloff_leading,
+    monotone_tail_start,
+    roots_in_segment,
+    scan_segments,
     steady_states,
 )
+from vibroadhesion.models.leading_pulloff import critical_abars, critical_log_excess, pulloff_leading
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
@@ -204,21 +212,34 @@ def test_compliant_roots_satisfy_printed_eq_87_and_eq_43_with_eqs_50_51(kappa, o
     the two roots next to the contact resonance (kappa = 0.1, omega_bar = 2, zeta = 0)."""
     n = 0.531
     fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
-    chi, d = mp.mpf(CHI0), mp.mpc(complex(fixation.dynamic_stiffness))
+    d = mp.mpc(complex(fixation.dynamic_stiffness))
     for sol in steady_states(ETA1, fixation, CHI0, GentSchultz(n), mu=mu):
         j0, jc1, _ = j_integrals_mp(sol.abar, n)
-        x = mp.mpf(sol.abar_m)
-        terms = [(2 ** (mp.mpf(7) / 3) * chi / 3 ** (mp.mpf(5) / 3)) * x**3, kappa * x**2,
-                 -j0 * (2 ** (mp.mpf(4) / 3) * chi / 3 ** (mp.mpf(2) / 3)) * x**1.5, -j0 * kappa * mp.sqrt(x),
-                 -(3 ** (mp.mpf(4) / 3)) * mu / (2 ** (mp.mpf(2) / 3) * chi**2)]
-        a_m = x * A_O
+        terms = printed_eq_87_terms(sol.abar_m, j0, kappa, mu)
+        a_m = mp.mpf(sol.abar_m) * A_O
         condition = 1 + 2 * a_m / abs(d + 2 * a_m)
         assert abs(sum(terms)) < 1e-13 * condition * max(abs(t) for t in terms), sol
-        k, m_omega2, c_omega = mp.mpf(kappa), mp.mpf(kappa) * omega_bar**2, 2 * zeta * mp.mpf(kappa) * omega_bar
-        xi_c = -mp.sqrt(2 * mp.pi * W0 * a_m) * (k - m_omega2) * jc1 - mp.sqrt(8 * mp.pi * W0 * a_m**3) * jc1
-        xi_s = mp.sqrt(2 * mp.pi * W0 * a_m) * c_omega * jc1
-        rhs = ((k - m_omega2) ** 2 + c_omega**2) * mp.mpf(ETA1) ** 2
-        assert abs((xi_c**2 + xi_s**2) / rhs - 1) < 1e-13 * condition, sol
+        assert abs(printed_eq_43_ratio(sol.abar_m, jc1, kappa, omega_bar, zeta) - 1) < 1e-13 * condition, sol
+
+
+def printed_eq_87_terms(abar_m: float, j0: mp.mpf, kappa: float, mu: float) -> list[mp.mpf]:
+    """The five terms of Eq. (87) as printed (h0 = hhat), at abar_m = a_m/a_o and J0."""
+    chi, x = mp.mpf(CHI0), mp.mpf(abar_m)
+    return [(2 ** (mp.mpf(7) / 3) * chi / 3 ** (mp.mpf(5) / 3)) * x**3, kappa * x**2,
+            -j0 * (2 ** (mp.mpf(4) / 3) * chi / 3 ** (mp.mpf(2) / 3)) * x**1.5, -j0 * kappa * mp.sqrt(x),
+            -(3 ** (mp.mpf(4) / 3)) * mu / (2 ** (mp.mpf(2) / 3) * chi**2)]
+
+
+def printed_eq_43_ratio(abar_m: float, jc1: mp.mpf, kappa: float, omega_bar: float, zeta: float) -> mp.mpf:
+    """Xi_c^2 + Xi_s^2 over [(k - m omega^2)^2 + c^2 omega^2] h1^2: Eq. (43) with Eqs. (50)-(51) (E* = R = 1),
+    1 on a solution, for the spring-mass-dashpot k = kappa, m omega^2 = kappa omega_bar^2, c omega = 2 zeta kappa
+    omega_bar (Eqs. 65-66)."""
+    a_m = mp.mpf(abar_m) * A_O
+    k, m_omega2, c_omega = mp.mpf(kappa), mp.mpf(kappa) * omega_bar**2, 2 * zeta * mp.mpf(kappa) * omega_bar
+    xi_c = -mp.sqrt(2 * mp.pi * W0 * a_m) * (k - m_omega2) * jc1 - mp.sqrt(8 * mp.pi * W0 * a_m**3) * jc1
+    xi_s = mp.sqrt(2 * mp.pi * W0 * a_m) * c_omega * jc1
+    rhs = ((k - m_omega2) ** 2 + c_omega**2) * mp.mpf(ETA1) ** 2
+    return (xi_c**2 + xi_s**2) / rhs
 
 
 # ----------------------------------------------------------------- static limit and anti-resonance, Eq. (82)
@@ -348,6 +369,23 @@ def printed_eq_67_log_excess(abar: float, kappa: float, omega_bar: float, zeta: 
     return float(mp.log((xi_c**2 + xi_s**2) / ((1 - omega_bar**2) ** 2 + 4 * zeta**2 * omega_bar**2)) - 2 * mp.log(eta1))
 
 
+@pytest.mark.parametrize(("kappa", "omega_bar", "zeta"), [(1e-3, 17.85, 0.01), (1e-2, 0.5, 0.05), (1e-2, 3.0, 0.0)])
+def test_critical_log_excess_is_half_the_log_of_printed_eq_67(kappa: float, omega_bar: float, zeta: float) -> None:
+    """critical_log_excess(ln Abar) is (IV) in logarithms: half ln of the printed Eq. (67) (Eqs. 68-69) over eta1^2,
+    with 30-digit J's on the printed side, from Abar = 0.01 to 1e7; for a rigid fixation ln of Eq. (72)'s left-hand
+    side over 3 eta1/chi0^2. Tolerance 1e-12 absolute in the logarithm: the J-integral quadrature agrees with
+    mpmath to 1e-12 relative (test_integrals)."""
+    n = 0.531
+    law = GentSchultz(n)
+    fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
+    for abar in (0.01, 3.0, 1e4, 1e7):
+        j0, jc1, _ = j_integrals_mp(abar, n)
+        ours = critical_log_excess(np.array([math.log(abar)]), ETA1, fixation, CHI0, law)[0]
+        assert abs(2 * ours - printed_eq_67_log_excess(abar, kappa, omega_bar, zeta, ETA1, (j0, jc1))) < 1e-12
+        rigid = critical_log_excess(np.array([math.log(abar)]), ETA1, Fixation.rigid(), CHI0, law)[0]
+        assert abs(rigid - float(mp.log(mp.cbrt(j0) * abs(jc1) / (3 * mp.mpf(ETA1) / mp.mpf(CHI0) ** 2)))) < 1e-12
+
+
 @pytest.mark.parametrize(("kappa", "omega_bar", "zeta", "count"),
                          [(1e-3, 17.85, 0.01, 3), (1e-3, 17.85, 0.0, 3), (1e-2, 0.5, 0.05, 1), (1e-2, 3.0, 0.0, 3)])
 def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, omega_bar, zeta, count) -> None:
@@ -452,6 +490,145 @@ def test_residual_increases_beyond_the_tail_criterion(n: float) -> None:
             x *= 1.05
         residual = [residual_and_j0(x * 1.05**i, fixation)[0] for i in range(150)]
         assert np.all(np.diff(residual) > 0), fixation
+
+
+# ----------------------------------------------------------------- the pieces of steady_states
+
+
+@pytest.mark.parametrize(("kappa", "omega_bar", "zeta"), [(0.1, 2.0, 0.05), (0.01, 0.5, 0.0), (0.1, 50.0, 0.05)])
+def test_balance_state_solves_printed_eq_43_and_returns_the_printed_eq_87_residual(kappa, omega_bar, zeta) -> None:
+    """At given abar_m (h0 = hhat, so base offset 0): the returned Abar satisfies Eq. (43) with Eqs. (50)-(51)
+    as printed, J0 is J0(Abar), and F is the printed Eq. (87), with 30-digit J's at the returned Abar.
+    Tolerance 1e-12: the J-integral quadrature agrees with mpmath to 1e-12 (test_integrals), the root in
+    ln Abar is polished to 1e-14, and F is a sum of a few rounded terms (relative to the largest)."""
+    n = 0.531
+    fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
+    balance = MeanBalance(ETA1, fixation, CHI0, GentSchultz(n), MU_SMALL, 0.0)
+    for abar_m in (0.3, 1.0, 4.0):
+        f, abar, j0 = balance_state(math.log(abar_m), balance)
+        j0_mp, jc1_mp, _ = j_integrals_mp(abar, n)
+        assert abs(printed_eq_43_ratio(abar_m, jc1_mp, kappa, omega_bar, zeta) - 1) < 1e-12
+        assert abs(j0 / j0_mp - 1) < 1e-12
+        terms = printed_eq_87_terms(abar_m, j0_mp, kappa, MU_SMALL)
+        assert abs(f - sum(terms)) < 1e-12 * max(abs(t) for t in terms)
+
+
+def test_balance_state_for_rigid_fixation_is_eq_55_and_eq_56() -> None:
+    """Rigid fixation: Abar solves Eq. (55), c_o^2 abar_m^(1/2) |Jc1(Abar)| = eta1 (a_o/R = c_o, Eq. 86), and F is
+    Eq. (56) as a residual, deltabar_m - deltabar_base = abar_m^2 - J0 abar_m^(1/2) - base_offset; 30-digit J's,
+    tolerance 1e-12 as above."""
+    n, base_offset = 4.0, 0.2
+    balance = MeanBalance(ETA1, Fixation.rigid(), CHI0, GentSchultz(n), MU_SMALL, base_offset)
+    for abar_m in (0.3, 1.0, 4.0):
+        f, abar, j0 = balance_state(math.log(abar_m), balance)
+        j0_mp, jc1_mp, _ = j_integrals_mp(abar, n)
+        assert abs(A_O**2 * mp.sqrt(abar_m) * abs(jc1_mp) / ETA1 - 1) < 1e-12
+        assert abs(f - (abar_m**2 - j0_mp * mp.sqrt(abar_m) - base_offset)) < 1e-12 * abar_m**2
+
+
+def test_monotone_tail_start_and_criterion_follow_the_closed_forms() -> None:
+    """abar_turn = max(0, -Re d/(2 c_o)) with c_o = a_o/R = (2 pi w0)^(1/3) (Eq. 86): 0 for a rigid fixation and
+    below the fixation's resonance, beta/(2 c_o) for a free indenter, kappa (omega_bar^2 - 1)/(2 c_o) above the
+    resonance (Eqs. 65-66); relative 1e-14 (a few roundings). The tail criterion abar_m > abar_turn and
+    abar_m^(3/2) >= (3/4) J0 switches at the JKR radius (3/4)^(2/3) for J0 = 1 and at abar_turn."""
+    c_o = float(A_O)
+    assert monotone_tail_start(Fixation.rigid(), CHI0) == 0.0
+    assert monotone_tail_start(Fixation.spring_mass_dashpot(0.1, 0.5, 0.05), CHI0) == 0.0
+    assert monotone_tail_start(Fixation.free(0.3), CHI0) == pytest.approx(0.3 / (2 * c_o), rel=1e-14)
+    above = monotone_tail_start(Fixation.spring_mass_dashpot(0.1, 2.0, 0.05), CHI0)
+    assert above == pytest.approx(0.1 * (2.0**2 - 1) / (2 * c_o), rel=1e-14)
+    z_jkr = math.log(0.75 ** (2 / 3))
+    assert in_monotone_tail(z_jkr + 1e-12, 1.0, 0.0) and not in_monotone_tail(z_jkr - 1e-12, 1.0, 0.0)
+    assert not in_monotone_tail(math.log(above) - 1e-12, 1.0, above) and in_monotone_tail(math.log(above) + 1e-12, 1.0, above)
+
+
+def test_approach_resonance_halves_towards_a_pole_until_the_residual_falls() -> None:
+    """Closed form F(z) = 1 - 1e-4/(z - z_res)^2, a pole with F -> -infinity: the nodes are z_res + side h 2^-j,
+    h = SCAN_STEP = 0.05, and the first with F < min(F(previous), 0) is j = 3 (h 2^-j < 0.01 first for j = 3),
+    from either side. A residual that never falls (F = 1) raises NoRootError."""
+    z_res = 0.7
+
+    def pole(z: float) -> float:
+        return 1.0 - 1e-4 / (z - z_res) ** 2
+
+    assert SCAN_STEP == 0.05
+    for side in (-1.0, 1.0):
+        nodes = approach_resonance(pole, z_res, side, "pole")
+        assert [z for z, _ in nodes] == [z_res + side * 0.05 * 2.0**-j for j in (1, 2, 3)]
+        assert [f for _, f in nodes] == pytest.approx([1.0 - 1e-4 / (0.05 * 2.0**-j) ** 2 for j in (1, 2, 3)], rel=1e-12)
+    with pytest.raises(NoRootError, match="does not fall"):
+        approach_resonance(lambda z: 1.0, z_res, 1.0, "flat")
+
+
+def test_bracket_tail_root_doubles_the_step_until_the_residual_is_non_negative() -> None:
+    """Closed form F(z) = z - 3 from z = 0: the bracket ends are 0.05 (2^k - 1); the first hi >= 3 is
+    0.05 * 63 = 3.15 with lo = 0.05 * 31 = 1.55 (relative 1e-14: sums of a few binary fractions of 0.05).
+    F(z) >= 0 at the start gives None; a residual that stays negative raises NoRootError."""
+    lo, hi = bracket_tail_root(lambda z: z - 3.0, 0.0, -3.0, "line")
+    assert lo == pytest.approx(1.55, rel=1e-14) and hi == pytest.approx(3.15, rel=1e-14)
+    assert bracket_tail_root(lambda z: z - 3.0, 3.0, 0.0, "line") is None
+    with pytest.raises(NoRootError, match="representable"):
+        bracket_tail_root(lambda z: -1.0, 0.0, -1.0, "negative")
+
+
+@pytest.mark.parametrize(
+    ("residual", "expected"),
+    [
+        (lambda z: (z - 0.51) * (z - 0.52), [(0.51, False), (0.52, True)]),  # two roots hidden in one cell
+        (lambda z: z - 0.33, [(0.33, True)]),
+        (lambda z: 0.33 - z, [(0.33, False)]),
+        (lambda z: (z - 0.51) * (z - 0.52) + 1e-3, []),  # a minimum of |F| without roots
+        (lambda z: (z - 0.2) * (z - 0.51) * (z - 0.52), [(0.2, True), (0.51, False), (0.52, True)]),
+    ],
+)
+def test_roots_in_segment_finds_sign_changes_and_pairs_hidden_in_one_cell(residual, expected) -> None:
+    """Closed-form residuals on the nodes z = 0, 0.05, ..., 1: every root e^z0 with its stability (F increasing
+    through it), including the pair 0.51, 0.52 that leaves no sign change at the nodes. Tolerance 1e-12 relative
+    in abar_m: Brent's method in z to 1e-14 absolute (numerics.roots)."""
+    nodes = [(z, residual(z)) for z in 0.05 * np.arange(21)]
+    roots = roots_in_segment(residual, nodes, "closed form")
+    assert [stable for _, stable in roots] == [stable for _, stable in expected]
+    for (abar_m, _), (z0, _) in zip(roots, expected):
+        assert abar_m == pytest.approx(math.exp(z0), rel=1e-12)
+
+
+@pytest.mark.parametrize("fixation", [Fixation.rigid(), Fixation.free(0.3), Fixation.spring_mass_dashpot(0.1, 2.0, 0.05)])
+def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_tail(fixation: Fixation) -> None:
+    """The scan of F in ln abar_m starts at ln abar_min in steps of SCAN_STEP; for the free indenter it is split
+    at the pole of Eq. (43), abar_m = beta/(2 c_o) (closed form, c_o = a_o/R), with F < 0 at the nodes next to
+    it on both sides; it ends at the first node of the grid (past the refinement towards the pole) where abar_m > abar_turn and abar_m^(3/2) >= (3/4) J0, J0 from
+    30-digit mpmath at the node's Abar (relative 1e-12 as above, far from the switch at these nodes)."""
+    n = 0.531
+    balance = MeanBalance(ETA1, fixation, CHI0, GentSchultz(n), MU_SMALL, 0.0)
+    resonance = 0.3 / (2 * float(A_O)) if fixation.kappa == 0 else None
+    z_res = math.log(resonance) if resonance is not None else None
+    abar_turn = monotone_tail_start(fixation, CHI0)
+    segments = scan_segments(balance, math.log(1e-4), z_res, abar_turn, "scan")
+    assert len(segments) == (2 if resonance else 1)
+    assert segments[0][0][0] == math.log(1e-4) and segments[0][1][0] == pytest.approx(math.log(1e-4) + SCAN_STEP)
+    if z_res is not None:
+        assert all(z < z_res for z, _ in segments[0]) and all(z > z_res for z, _ in segments[1])
+        assert segments[0][-1][1] < 0 and segments[1][0][1] < 0
+    grid = [z for z, _ in segments[-1] if z_res is None or z > z_res + SCAN_STEP * (1 - 1e-9)]  # not the refinement
+    tail = []
+    for z in grid[-2:]:
+        j0 = j_integrals_mp(balance_state(z, balance)[1], n)[0]
+        tail.append(math.exp(z) > abar_turn and math.exp(1.5 * z) >= 0.75 * float(j0))
+    assert tail == [False, True][2 - len(tail):]
+
+
+@pytest.mark.parametrize(
+    "kwargs", [{"chi0": -1.0}, {"mu": -1e-6}, {"base_offset": math.inf}, {"abar_min": 0.0}, {"omega_check": 0.0}]
+)
+def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
+    """chi0 > 0 (Eq. 64), mu >= 0 (Eq. 81), a finite base offset, abar_min > 0 and omega_check > 0 (Eq. 105):
+    ValueError; a rate law other than Gent-Schultz: TypeError (the proof that ends the scan needs it)."""
+    arguments = {"chi0": CHI0} | kwargs
+    chi0 = arguments.pop("chi0")
+    with pytest.raises(ValueError):
+        steady_states(ETA1, Fixation.rigid(), chi0, GentSchultz(0.531), **arguments)
+    with pytest.raises(TypeError):
+        steady_states(ETA1, Fixation.rigid(), CHI0, object())
 
 
 # ----------------------------------------------------------------- failures are raised, not numbers

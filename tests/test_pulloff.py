@@ -18,7 +18,7 @@ from conftest import CHI0, ETA1, N_PUBLISHED, NU0, RADIUS, REDUCED_MODULUS, V0, 
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core import groups, jkr
-from vibroadhesion.models.leading_order import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
+from vibroadhesion.models.leading_pulloff import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
 from vibroadhesion.numerics.roots import NoRootError

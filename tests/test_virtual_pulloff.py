@@ -15,7 +15,8 @@ import pytest
 from conftest import CHI0, N_PUBLISHED, OMEGA_BAR_200HZ, RADIUS
 
 from vibroadhesion.models import exact_averaging
-from vibroadhesion.models.leading_order import Fixation, pulloff_leading
+from vibroadhesion.models.leading_order import Fixation
+from vibroadhesion.models.leading_pulloff import pulloff_leading
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.simulation import SpringFixation
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff

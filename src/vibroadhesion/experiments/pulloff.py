@@ -25,7 +25,7 @@ from vibroadhesion.core import groups
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models import exact_averaging
-from vibroadhesion.models.leading_order import PulloffEstimate, pulloff_leading
+from vibroadhesion.models.leading_pulloff import PulloffEstimate, pulloff_leading
 from vibroadhesion.models.refined import pulloff_refined
 
 Model = Literal["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]

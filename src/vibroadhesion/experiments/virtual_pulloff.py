@@ -49,9 +49,9 @@ Predictions next to the simulation (:func:`pulloff_table`). Rigid rows: Eq. (72)
 Eq. (106) (``refined``), the exact high-frequency averaging with the paper's criterion a_m = a_cr
 (``exact_averaging``) and its force-controlled detachment, the minimum of the mean force over a_m
 (``exact_averaging_force_minimum``). Compliant rows: Eqs. (67)–(69) with (71) (``leading``,
-:func:`vibroadhesion.models.leading_order.pulloff_leading` with the spring's fixation) and Eq. (90) at
+:func:`vibroadhesion.models.leading_pulloff.pulloff_leading` with the spring's fixation) and Eq. (90) at
 a_m = a_cr (``refined``, :func:`vibroadhesion.models.compliant.pulloff_by_scan`), both the smallest root
-(the first reached as the base is withdrawn, :mod:`vibroadhesion.models.leading_order`). There is no exact
+(the first reached as the base is withdrawn, :mod:`vibroadhesion.models.leading_pulloff`). There is no exact
 averaging row for the compliant fixation: the exact averaging is a model of the rigidly fixed contact.
 
 Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_eff/w0)^(1/3) (Eq. 61).
@@ -75,7 +75,8 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
-from vibroadhesion.models.leading_order import PULLOFF_SCAN, Fixation, pulloff_closure, pulloff_leading
+from vibroadhesion.models.leading_order import Fixation
+from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.numerics.roots import NoRootError
 from vibroadhesion import simulation

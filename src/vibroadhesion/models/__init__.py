@@ -5,4 +5,12 @@ balance (Eqs. 125–126) and the exact high-frequency averaging.
 Layer 2: imports from :mod:`vibroadhesion.numerics` and :mod:`vibroadhesion.core`.
 """
 
-__all__ = ["leading_order", "refined", "compliant", "stiffness", "exact_harmonic_balance", "exact_averaging"]
+__all__ = [
+    "leading_order",
+    "leading_pulloff",
+    "refined",
+    "compliant",
+    "stiffness",
+    "exact_harmonic_balance",
+    "exact_averaging",
+]

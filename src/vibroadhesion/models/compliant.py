@@ -53,7 +53,7 @@ from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, cro
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
-from vibroadhesion.models.leading_order import pulloff_closure
+from vibroadhesion.models.leading_pulloff import pulloff_closure
 from vibroadhesion.models.refined import displacement_harmonics
 from vibroadhesion.numerics.roots import NoRootError
 

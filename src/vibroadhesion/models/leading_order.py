@@ -1,55 +1,13 @@
-"""Leading-order asymptotic model (Sec. 3.1–3.2): the steady state for any fixation of the indenter
-and the quasi-static pull-off estimate.
+"""Leading-order asymptotic model (Sec. 3.1): the steady state for any fixation of the indenter.
 
-Pull-off estimate (Sec. 3.2). Detachment is assumed when the mean contact radius reaches the JKR
-critical value for the effective work of adhesion, a_m = a_cr (Eqs. 60–61), i.e.
-abar_cr = a_cr/a_o = (9/16)^(1/3) J0^(2/3) (Eq. 61 over Eq. 86), and then
+The quasi-static pull-off estimate built on it (Sec. 3.2, Eqs. 60–72) is in
+:mod:`vibroadhesion.models.leading_pulloff`.
 
-    P_cr / P_cr^JKR = J0(Abar_cr)^2.                                               Eq. (71)
-
-For rigid fixation Eq. (55) at a_m = a_cr reads
-
-    J0(Abar)^(1/3) |Jc1(Abar)| = 3 eta1 / chi0^2,                                  Eq. (72)
-
-which fixes Abar_cr independently of the frequency. For any fixation the amplitude equation (II)
-below holds at a_m = a_cr; with c_o^2 abar_cr^(1/2) = (chi0^2/3) J0^(1/3) and 2 c_o abar_cr = chi0 J0^(2/3)
-(c_o^3 = 2 chi0^3/9) it is
-
-    (chi0^2/3) J0^(1/3) |Jc1| |d + chi0 J0^(2/3)| = eta1 |d|.                       (IV)
-
-For the spring-mass-dashpot, d = kappa (1 - omega_bar^2 + 2 i zeta omega_bar), (IV) divided by kappa
-is |xi_c + i xi_s| = eta1 |1 - omega_bar^2 + 2 i zeta omega_bar| with xi_c = (chi0^2/3) J0^(1/3)
-(1 - omega_bar^2) Jc1 + (chi0^3/(3 kappa)) J0 Jc1 and xi_s = -(2 chi0^2/3) zeta omega_bar J0^(1/3) Jc1:
-Eqs. (67)–(69) as printed (they follow from Eqs. 43, 47–48, 50–51 and 62–63 divided by k R, with
-k - m omega^2 = k (1 - omega_bar^2) and c omega/k = 2 zeta omega_bar; docs/errata.md, checked).
-As d -> infinity (kappa -> infinity, rigid) (IV) becomes Eq. (72).
-
-Roots of (IV) (:func:`critical_abars`). In z = ln Abar, g(z) = ln[(chi0^2/3) J0^(1/3) |Jc1|] -
-ln[eta1 T(abar_cr)] with the transmissibility T(a) = |d|/|d + 2 c_o a| (Eq. I). g -> -infinity as
-Abar -> 0 (the left term -> -infinity, T(abar_cr(0)) = |d|/|d + chi0| > 0) and g -> +infinity as
-Abar -> infinity (J0 |Jc1| -> infinity while T J0^(2/3) stays bounded). Below the fixation's resonance
-(Re d >= 0, omega_bar <= 1) T decreases with a_cr, hence with Abar, so g increases strictly and the
-root is unique (as for Eq. 72). Above it (Re d < 0) T rises towards the contact resonance
-a = -Re d/(2 c_o) (a pole when zeta = 0, where g -> -infinity on both sides) and there can be three
-or more roots. d = 0 (zeta = 0, omega_bar = 1, the anti-resonance of Appendix B) gives Abar_cr = 0
-exactly: no oscillation, the static JKR pull-off, ratio 1.
-
-Which root is the pull-off. The withdrawal lowers the mean contact radius. With F(a_m) = a_m -
-a_cr(Abar(a_m)), Abar(a_m) the unique solution of (II) at a_m (:func:`internal_variable`), the
-contact holds while F > 0 and detaches where F first vanishes as a_m decreases; roots in a_m and
-roots of (IV) in Abar are in the same order (a_cr increases with Abar). F < 0 as a_m -> 0 (T -> 1,
-so Abar and a_cr -> infinity) and F > 0 as a_m -> infinity (T -> 0). Further roots come from T rising
-towards the contact resonance, where the amplified oscillation makes F < 0 again; a withdrawal
-that starts attached below them reaches the smallest root first, and that root is reported as the
-pull-off. (A start above the contact resonance would meet the resonance first; this estimate does
-not cover it, and :func:`critical_abars` returns every root for a caller who needs the others.)
-
-Uniqueness of Eq. (72) (Gent–Schultz law). With u = (Abar sin t)^n the integrands of J0 and -Jc1 are
+Monotone J-integrals (Gent–Schultz law). With u = (Abar sin t)^n the integrands of J0 and -Jc1 are
 S(u) = (2+u)/sqrt(1+u) and u/sqrt(1+u) (see :mod:`vibroadhesion.core.integrals`), whose
 u-derivatives u/(2(1+u)^{3/2}) and (2+u)/(2(1+u)^{3/2}) are positive; u increases with Abar,
-so J0 and |Jc1| are strictly increasing, the left-hand side of Eq. (72) rises strictly from 0
-(Abar = 0) to infinity, and Eq. (72) has exactly one root for every eta1 > 0. The tests check
-the monotonicity on a dense grid for n in [0.05, 4].
+so J0 and |Jc1| are strictly increasing, from J0 = 1 and Jc1 = 0 at Abar = 0 to infinity. The
+tests check the monotonicity on a dense grid for n in [0.05, 4].
 
 Steady state for any fixation (Sec. 3.1). The paper prints the system (Eqs. 43, 50–54) but not its
 closed form; derivation:
@@ -93,69 +51,19 @@ from (II) and P_m = m g, Eq. (59).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brentq, minimize_scalar
+from scipy.optimize import minimize_scalar
 
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
-from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
-
-
-class PulloffEstimate(NamedTuple):
-    """Critical internal variable, J0 there, and the amplification P_cr / P_cr^JKR = J0^2 (Eq. 71)."""
-
-    abar_cr: NDArray[np.float64]
-    j0: NDArray[np.float64]
-    ratio: NDArray[np.float64]
-
-    @classmethod
-    def from_abar(cls, abar_cr: NDArray[np.float64], law: RateLaw) -> "PulloffEstimate":
-        j0 = j_integrals_for_law(abar_cr, law)[0]
-        return cls(abar_cr, j0, j0**2)
-
-
-def pulloff_lhs_leading(abar: ArrayLike, law: RateLaw) -> NDArray[np.float64]:
-    """Left-hand side of Eq. (72), J0^(1/3) |Jc1|."""
-    j0, jc1, _ = j_integrals_for_law(abar, law)
-    return np.cbrt(j0) * np.abs(jc1)
-
-
-def pulloff_closure(j0: ArrayLike) -> NDArray[np.float64]:
-    """abar_m = a_cr / a_o = (9/16)^(1/3) J0^(2/3): detachment at the JKR critical radius (Eqs. 61, 86)."""
-    return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
-
-
-def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> float:
-    """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 (0 gives 0).
-
-    Rigid fixation (``None`` or :meth:`Fixation.rigid`): the unique root of Eq. (72). Any other
-    fixation: the smallest root of Eqs. (67)–(69), (IV) of the module docstring (:func:`critical_abars`),
-    the first reached as the base is withdrawn (module docstring).
-    """
-    if eta1 < 0 or not np.isfinite(eta1):
-        raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
-    if eta1 == 0:
-        return 0.0
-    if fixation is not None and not fixation.is_rigid:
-        return critical_abars(eta1, fixation, chi0, law)[0]
-    log_target = np.log(3.0 * eta1 / chi0**2)
-    return solve_log_increasing(
-        lambda z: float(np.log(pulloff_lhs_leading(np.exp(z), law))) - log_target,
-        what=f"Eq. (72) at eta1 = {eta1:.6g}",
-    )
-
-
-def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> PulloffEstimate:
-    """Leading-order pull-off estimate, vectorised over eta1: Eqs. (71)–(72) for rigid fixation (``None``),
-    Eqs. (67)–(69) and (71) for any other (:func:`critical_abar_leading`)."""
-    eta1 = np.asarray(eta1, dtype=float)
-    abar = np.vectorize(lambda e: critical_abar_leading(e, chi0, law, fixation), otypes=[float])(eta1)
-    return PulloffEstimate.from_abar(abar, law)
 
 
 # --- Steady state for any fixation of the indenter, Sec. 3.1 (Eqs. 43, 47–59) -------------------
@@ -236,43 +144,6 @@ def fixation_transmissibility(abar_m: float, fixation: Fixation, chi0: float) ->
     d = complex(fixation.dynamic_stiffness)
     denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
     return math.inf if denominator == 0 else abs(d) / denominator
-
-
-#: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_abars`).
-PULLOFF_SCAN = np.linspace(-40.0, 40.0, 1601)
-
-
-def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw,
-                   log_abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
-    """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending.
-
-    g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)] with abar_cr = :func:`pulloff_closure` (J0),
-    i.e. (IV) of the module docstring in logarithms, is evaluated on the grid ``log_abar``; each sign
-    change is polished by Brent's method (roots closer than the grid spacing can be missed). A contact
-    resonance is no sign change (g -> -infinity on both sides). d = 0 (anti-resonance) gives [0.0].
-    Raises :class:`NoRootError` when g is not negative at the left end of the grid (the smallest root
-    could lie below it) or when there is no sign change.
-    """
-    if not (eta1 > 0 and math.isfinite(eta1)):
-        raise ValueError(f"eta1 must be a positive number, got {eta1!r}")
-    if complex(fixation.dynamic_stiffness) == 0:
-        return [0.0]
-
-    def excess(z: NDArray[np.float64]) -> NDArray[np.float64]:
-        j0, jc1, _ = j_integrals_for_law(np.exp(z), law)
-        abar_cr = pulloff_closure(j0)
-        transmissibility = np.array([fixation_transmissibility(float(a), fixation, chi0) for a in abar_cr])
-        return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(eta1 * transmissibility)
-
-    values = excess(np.asarray(log_abar, dtype=float))
-    what = f"Eqs. (67)-(69) at eta1 = {eta1:.6g}, {fixation}"
-    if not values[0] < 0:
-        raise NoRootError(f"{what}: the left-hand side reaches the target below Abar = {math.exp(log_abar[0]):.3g}")
-    crossings = np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)
-    if crossings.size == 0:
-        raise NoRootError(f"{what}: no root for Abar up to {math.exp(log_abar[-1]):.3g}")
-    return [math.exp(brentq(lambda z: float(excess(np.array([z]))[0]), log_abar[k], log_abar[k + 1],
-                            xtol=1e-14, rtol=4 * np.finfo(float).eps)) for k in crossings]
 
 
 def indentation_amplitude(abar_m: ArrayLike, jc1: ArrayLike, chi0: float) -> NDArray[np.float64]:
@@ -363,6 +234,7 @@ SCAN_STEP = 0.05
 _RESONANCE_REFINEMENTS = 60
 
 
+
 def steady_states(
     eta1: float,
     fixation: Fixation,
@@ -410,6 +282,32 @@ def steady_states(
     criterion under a compliant machine, dP_m/da_m + k d delta_m/da_m > 0, which is dP_m/da_m > 0 under
     load control (kappa = 0) and d delta_m/da_m > 0 under displacement control (rigid).
     """
+    _check_steady_state_inputs(law, chi0, mu, base_offset, abar_min, omega_check)
+    balance = MeanBalance(eta1, fixation, chi0, law, mu, base_offset)
+    vibrating = eta1 > 0 and complex(fixation.dynamic_stiffness) != 0  # else Abar = 0, J0 = 1 throughout
+    resonance = fixation.contact_resonance(chi0) if vibrating else None
+    abar_turn = monotone_tail_start(fixation, chi0) if vibrating else 0.0
+    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
+    z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
+    segments = scan_segments(balance, math.log(abar_min), z_res, abar_turn, what)
+    residual = partial(balance_residual, balance=balance)
+    tail_root_bracket = bracket_tail_root(residual, *segments[-1][-1], what)
+    roots = [root for nodes in segments for root in roots_in_segment(residual, nodes, what)]
+    if tail_root_bracket is not None:
+        roots.append(polish_root(residual, *tail_root_bracket, True, what))
+    if not roots:
+        raise NoRootError(
+            f"{what}: no steady state with abar_m >= {abar_min:.3g} (mu = {mu:.6g}, base offset = {base_offset:.6g}); "
+            "a tensile load beyond the vibroadhesive pull-off has none"
+        )
+    return tuple(steady_state_at(abar_m, stable, balance, omega_check) for abar_m, stable in sorted(roots))
+
+
+def _check_steady_state_inputs(
+    law: GentSchultz, chi0: float, mu: float, base_offset: float, abar_min: float, omega_check: float
+) -> None:
+    """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 81, 105) with a ValueError
+    (a TypeError for a law other than Gent–Schultz, Eqs. 73–75)."""
     if not isinstance(law, GentSchultz):
         raise TypeError("steady_states needs the Gent–Schultz law: the scan's end rests on its monotone J0 and |Jc1|")
     if not (math.isfinite(chi0) and chi0 > 0):
@@ -420,107 +318,156 @@ def steady_states(
         raise ValueError(f"abar_min must be a positive number, got {abar_min!r}")
     if not omega_check > 0:
         raise ValueError(f"omega_check must be positive, got {omega_check!r}")
-    c_o = contact_radius_ratio(chi0)
-    vibrating = eta1 > 0 and complex(fixation.dynamic_stiffness) != 0  # else Abar = 0, J0 = 1 throughout
-    resonance = fixation.contact_resonance(chi0) if vibrating else None
-    d = complex(fixation.dynamic_stiffness)
-    abar_turn = max(0.0, -d.real / (2.0 * c_o)) if vibrating and not fixation.is_rigid else 0.0
 
-    def state(z: float) -> tuple[float, float, float]:
-        """(F, Abar, J0) at abar_m = e^z."""
-        abar_m = math.exp(z)
-        abar = internal_variable(abar_m, eta1, fixation, chi0, law)
-        j0 = float(j_integrals_for_law(abar, law)[0])
-        return mean_balance_residual(abar_m, j0, fixation, chi0, mu, base_offset), abar, j0
 
-    def residual(z: float) -> float:
-        return state(z)[0]
+class MeanBalance(NamedTuple):
+    """Everything but abar_m in the mean balance (III) along the amplitude equation (II) (Eqs. 43, 54)."""
 
-    def tail_is_monotone(z: float, j0: float) -> bool:
-        return math.exp(z) > abar_turn and math.exp(1.5 * z) >= 0.75 * j0
+    eta1: float  # h1 / R
+    fixation: Fixation
+    chi0: float  # Eq. (64)
+    law: GentSchultz
+    mu: float  # m g / (E* R^2), Eq. (81)
+    base_offset: float  # (hhat - h0) R / a_o^2
 
-    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
-    z_min = math.log(abar_min)
-    z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
 
-    def approach_resonance(side: float) -> list[tuple[float, float]]:
-        """Nodes z_res + side h 2^-j, j = 1, 2, ..., until F < 0 and decreasing towards the pole."""
-        assert z_res is not None
-        nodes: list[tuple[float, float]] = []
-        previous = residual(z_res + side * SCAN_STEP)
-        for j in range(1, _RESONANCE_REFINEMENTS + 1):
-            z = z_res + side * SCAN_STEP * 2.0**-j
-            nodes.append((z, residual(z)))
-            if nodes[-1][1] < min(previous, 0.0):
-                return nodes
-            previous = nodes[-1][1]
-        raise NoRootError(f"{what}: residual does not fall towards the contact resonance abar_m = {resonance:.6g}")
+def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
+    """(F, Abar, J0) at abar_m = e^z: Abar solves the amplitude equation (II) (Eq. 43, :func:`internal_variable`),
+    J0 = J0(Abar) (Eq. 28) and F is the mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`)."""
+    abar_m = math.exp(z)
+    abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law)
+    j0 = float(j_integrals_for_law(abar, balance.law)[0])
+    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.mu, balance.base_offset), abar, j0
 
-    segments: list[list[tuple[float, float]]] = []  # nodes (z, F), ascending, of each pole-free segment
+
+def balance_residual(z: float, balance: MeanBalance) -> float:
+    """F(e^z), the residual of the mean balance (III) along the amplitude equation (II) (Eqs. 43, 54)."""
+    return balance_state(z, balance)[0]
+
+
+def monotone_tail_start(fixation: Fixation, chi0: float) -> float:
+    """abar_turn = max(0, -Re d/(2 c_o)) (0 for a rigid fixation): beyond it the target of the amplitude
+    equation (II) decreases strictly with abar_m (Eqs. 43, 86; proof in :func:`steady_states`)."""
+    if fixation.is_rigid:
+        return 0.0
+    return max(0.0, -complex(fixation.dynamic_stiffness).real / (2.0 * contact_radius_ratio(chi0)))
+
+
+def in_monotone_tail(z: float, j0: float, abar_turn: float) -> bool:
+    """abar_m = e^z > abar_turn and abar_m^(3/2) >= (3/4) J0: from here on the residual of the mean balance (III)
+    increases strictly along (II) (Eqs. 43, 54; proof in :func:`steady_states`)."""
+    return math.exp(z) > abar_turn and math.exp(1.5 * z) >= 0.75 * j0
+
+
+def approach_resonance(
+    residual: Callable[[float], float], z_res: float, side: float, what: str
+) -> list[tuple[float, float]]:
+    """Nodes (z, F) at z = z_res + side SCAN_STEP 2^-j, j = 1, 2, ..., until F < 0 and decreasing towards z_res.
+
+    z_res = ln abar_m at the contact resonance, the pole of the amplitude equation (II) (Eq. 43 with
+    d + 2 c_o abar_m = 0, :meth:`Fixation.contact_resonance`), where Abar and J0 -> infinity and the residual
+    of the mean balance (III) -> -infinity; ``side`` is -1 (from below) or +1 (from above). Raises
+    :class:`NoRootError` when F has not fallen after ``_RESONANCE_REFINEMENTS`` halvings.
+    """
+    nodes: list[tuple[float, float]] = []
+    previous = residual(z_res + side * SCAN_STEP)
+    for j in range(1, _RESONANCE_REFINEMENTS + 1):
+        z = z_res + side * SCAN_STEP * 2.0**-j
+        nodes.append((z, residual(z)))
+        if nodes[-1][1] < min(previous, 0.0):
+            return nodes
+        previous = nodes[-1][1]
+    raise NoRootError(f"{what}: residual does not fall towards the contact resonance abar_m = {math.exp(z_res):.6g}")
+
+
+def scan_segments(
+    balance: MeanBalance, z_min: float, z_res: float | None, abar_turn: float, what: str
+) -> list[list[tuple[float, float]]]:
+    """Nodes (z, F), ascending, of each pole-free segment of the residual F of the mean balance (III) along the
+    amplitude equation (II) (Eqs. 43, 54) in z = ln abar_m.
+
+    From ``z_min`` in steps of ``SCAN_STEP``; split at the contact resonance ``z_res`` (``None``: none above
+    z_min) and refined towards it from both sides (:func:`approach_resonance`); ended at the first node in the
+    monotone tail (:func:`in_monotone_tail`), which is the last node of the last segment.
+    """
+    residual = partial(balance_residual, balance=balance)
+    segments: list[list[tuple[float, float]]] = []
     z = z_min
     if z_res is not None:
         grid = z_min + SCAN_STEP * np.arange(max(0, math.ceil((z_res - z_min) / SCAN_STEP) - 1))
         below = [(float(node), residual(float(node))) for node in grid]
-        segments.append([node for node in below + approach_resonance(-1.0) if node[0] >= z_min])
+        segments.append([node for node in below + approach_resonance(residual, z_res, -1.0, what) if node[0] >= z_min])
         z = z_res + SCAN_STEP
-    above = approach_resonance(+1.0)[::-1] if z_res is not None else []
+    above = approach_resonance(residual, z_res, +1.0, what)[::-1] if z_res is not None else []
     while True:
-        f, _, j0 = state(z)
+        f, _, j0 = balance_state(z, balance)
         above.append((z, f))
-        if tail_is_monotone(z, j0):
+        if in_monotone_tail(z, j0, abar_turn):
             break
         z += SCAN_STEP
     segments.append(above)
-    tail_root_bracket: tuple[float, float] | None = None
-    if above[-1][1] < 0:  # F increases strictly from here on: exactly one more root; bracket it
-        lo, step = above[-1][0], SCAN_STEP
-        while residual(lo + step) < 0:
-            lo, step = lo + step, 2.0 * step
-            if lo > math.log(np.finfo(float).max) / 3:
-                raise NoRootError(f"{what}: mean balance not reached for any representable abar_m")
-        tail_root_bracket = (lo, lo + step)
+    return segments
 
-    def polish(lo: float, hi: float, increasing: bool) -> tuple[float, bool]:
-        """(abar_m, stable) of the root of F in ln abar_m in (lo, hi], F changing sign there."""
-        sign = 1.0 if increasing else -1.0
-        return solve_log_increasing(lambda t: sign * residual(t), what=what, z_start=lo, z_min=lo, z_max=hi), increasing
 
+def bracket_tail_root(residual: Callable[[float], float], z: float, f: float, what: str) -> tuple[float, float] | None:
+    """(lo, hi) with F(lo) < 0 <= F(hi), hi - lo doubling from SCAN_STEP, or ``None`` when f = F(z) >= 0.
+
+    z is the start of the monotone tail (:func:`in_monotone_tail`), where the residual of the mean balance
+    (III) along (II) (Eqs. 43, 54) increases strictly: one root beyond z if f < 0, none otherwise.
+    """
+    if not f < 0:
+        return None
+    lo, step = z, SCAN_STEP
+    while residual(lo + step) < 0:
+        lo, step = lo + step, 2.0 * step
+        if lo > math.log(np.finfo(float).max) / 3:
+            raise NoRootError(f"{what}: mean balance not reached for any representable abar_m")
+    return lo, lo + step
+
+
+def polish_root(
+    residual: Callable[[float], float], lo: float, hi: float, increasing: bool, what: str
+) -> tuple[float, bool]:
+    """(abar_m, stable) of the root of F in z = ln abar_m in (lo, hi], F changing sign there (Brent's method,
+    :func:`solve_log_increasing`); stable = ``increasing``, F of the mean balance (III) (Eq. 54) rising through it."""
+    sign = 1.0 if increasing else -1.0
+    return solve_log_increasing(lambda t: sign * residual(t), what=what, z_start=lo, z_min=lo, z_max=hi), increasing
+
+
+def roots_in_segment(
+    residual: Callable[[float], float], nodes: list[tuple[float, float]], what: str
+) -> list[tuple[float, bool]]:
+    """(abar_m, stable) of the roots of F (the mean balance (III) along (II), Eqs. 43, 54) on the nodes (z, F)
+    of one pole-free segment, ascending: each sign change is polished (:func:`polish_root`), and at each discrete
+    minimum of |F| without a sign change F is driven towards zero by a bounded minimisation; if it crosses zero,
+    the two roots inside the two cells are polished as well."""
+    zs = [node[0] for node in nodes]
+    fs = [node[1] for node in nodes]
     roots: list[tuple[float, bool]] = []
-    for nodes in segments:
-        zs = [node[0] for node in nodes]
-        fs = [node[1] for node in nodes]
-        for i in range(len(nodes) - 1):
-            if (fs[i] >= 0) != (fs[i + 1] >= 0):
-                roots.append(polish(zs[i], zs[i + 1], fs[i] < 0))
-            elif 0 < i and (fs[i - 1] >= 0) == (fs[i] >= 0) and abs(fs[i]) < min(abs(fs[i - 1]), abs(fs[i + 1])):
-                # |F| has a discrete minimum without a sign change: two roots may hide in the two cells
-                sign = 1.0 if fs[i] >= 0 else -1.0
-                extremum = minimize_scalar(lambda t: sign * residual(t), bounds=(zs[i - 1], zs[i + 1]),
-                                           method="bounded", options={"xatol": 1e-10})
-                if extremum.fun < 0:
-                    roots.append(polish(zs[i - 1], extremum.x, fs[i] < 0))
-                    roots.append(polish(extremum.x, zs[i + 1], fs[i] >= 0))
-    if tail_root_bracket is not None:
-        roots.append(polish(*tail_root_bracket, True))
-    if not roots:
-        raise NoRootError(
-            f"{what}: no steady state with abar_m >= {abar_min:.3g} (mu = {mu:.6g}, base offset = {base_offset:.6g}); "
-            "a tensile load beyond the vibroadhesive pull-off has none"
-        )
+    for i in range(len(nodes) - 1):
+        if (fs[i] >= 0) != (fs[i + 1] >= 0):
+            roots.append(polish_root(residual, zs[i], zs[i + 1], fs[i] < 0, what))
+        elif 0 < i and (fs[i - 1] >= 0) == (fs[i] >= 0) and abs(fs[i]) < min(abs(fs[i - 1]), abs(fs[i + 1])):
+            sign = 1.0 if fs[i] >= 0 else -1.0
+            extremum = minimize_scalar(lambda t: sign * residual(t), bounds=(zs[i - 1], zs[i + 1]),
+                                       method="bounded", options={"xatol": 1e-10})
+            if extremum.fun < 0:
+                roots.append(polish_root(residual, zs[i - 1], extremum.x, fs[i] < 0, what))
+                roots.append(polish_root(residual, extremum.x, zs[i + 1], fs[i] >= 0, what))
+    return roots
 
-    states = []
-    for abar_m, stable in sorted(roots):
-        _, abar, j0 = state(math.log(abar_m))
-        states.append(
-            SteadyState(
-                abar_m=abar_m,
-                abar=abar,
-                j0=j0,
-                w_eff_ratio=j0**2,
-                a_over_am=float(contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check)),
-                pm_over_pjkr=float(mean_force_over_pulloff(abar_m, j0)),
-                deltabar_m=float(mean_indentation(abar_m, j0)),
-                stable=stable,
-            )
-        )
-    return tuple(states)
+
+def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_check: float) -> SteadyState:
+    """The steady state at a root abar_m of the mean balance: Abar (Eq. 43), J0 (Eq. 28), w_eff/w0 = J0^2
+    (Eq. 49), A/a_m (Eq. 45, docs/errata.md E1), P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86)."""
+    _, abar, j0 = balance_state(math.log(abar_m), balance)
+    return SteadyState(
+        abar_m=abar_m,
+        abar=abar,
+        j0=j0,
+        w_eff_ratio=j0**2,
+        a_over_am=float(contact_radius_amplitude_ratio(abar, abar_m, balance.chi0, omega_check)),
+        pm_over_pjkr=float(mean_force_over_pulloff(abar_m, j0)),
+        deltabar_m=float(mean_indentation(abar_m, j0)),
+        stable=stable,
+    )

@@ -38,7 +38,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
-from vibroadhesion.models.leading_order import PulloffEstimate, pulloff_closure
+from vibroadhesion.models.leading_pulloff import PulloffEstimate, pulloff_closure
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.numerics.roots import solve_log_increasing
 

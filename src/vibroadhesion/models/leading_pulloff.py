@@ -1,0 +1,167 @@
+"""Leading-order pull-off estimate (Sec. 3.2, Eqs. 60–72) for any fixation of the indenter.
+
+The steady state it rests on, the amplitude equation (II) with the transmissibility T of (I), is
+derived in the docstring of :mod:`vibroadhesion.models.leading_order` (Eqs. 43, 50–59).
+
+Detachment is assumed when the mean contact radius reaches the JKR
+critical value for the effective work of adhesion, a_m = a_cr (Eqs. 60–61), i.e.
+abar_cr = a_cr/a_o = (9/16)^(1/3) J0^(2/3) (Eq. 61 over Eq. 86), and then
+
+    P_cr / P_cr^JKR = J0(Abar_cr)^2.                                               Eq. (71)
+
+For rigid fixation Eq. (55) at a_m = a_cr reads
+
+    J0(Abar)^(1/3) |Jc1(Abar)| = 3 eta1 / chi0^2,                                  Eq. (72)
+
+which fixes Abar_cr independently of the frequency. For any fixation the amplitude equation (II)
+holds at a_m = a_cr; with c_o^2 abar_cr^(1/2) = (chi0^2/3) J0^(1/3) and 2 c_o abar_cr = chi0 J0^(2/3)
+(c_o^3 = 2 chi0^3/9) it is
+
+    (chi0^2/3) J0^(1/3) |Jc1| |d + chi0 J0^(2/3)| = eta1 |d|.                       (IV)
+
+For the spring-mass-dashpot, d = kappa (1 - omega_bar^2 + 2 i zeta omega_bar), (IV) divided by kappa
+is |xi_c + i xi_s| = eta1 |1 - omega_bar^2 + 2 i zeta omega_bar| with xi_c = (chi0^2/3) J0^(1/3)
+(1 - omega_bar^2) Jc1 + (chi0^3/(3 kappa)) J0 Jc1 and xi_s = -(2 chi0^2/3) zeta omega_bar J0^(1/3) Jc1:
+Eqs. (67)–(69) as printed (they follow from Eqs. 43, 47–48, 50–51 and 62–63 divided by k R, with
+k - m omega^2 = k (1 - omega_bar^2) and c omega/k = 2 zeta omega_bar; docs/errata.md, checked).
+As d -> infinity (kappa -> infinity, rigid) (IV) becomes Eq. (72).
+
+Roots of (IV) (:func:`critical_abars`). In z = ln Abar, g(z) = ln[(chi0^2/3) J0^(1/3) |Jc1|] -
+ln[eta1 T(abar_cr)] with the transmissibility T(a) = |d|/|d + 2 c_o a| (Eq. I). g -> -infinity as
+Abar -> 0 (the left term -> -infinity, T(abar_cr(0)) = |d|/|d + chi0| > 0) and g -> +infinity as
+Abar -> infinity (J0 |Jc1| -> infinity while T J0^(2/3) stays bounded). Below the fixation's resonance
+(Re d >= 0, omega_bar <= 1) T decreases with a_cr, hence with Abar, so g increases strictly and the
+root is unique (as for Eq. 72). Above it (Re d < 0) T rises towards the contact resonance
+a = -Re d/(2 c_o) (a pole when zeta = 0, where g -> -infinity on both sides) and there can be three
+or more roots. d = 0 (zeta = 0, omega_bar = 1, the anti-resonance of Appendix B) gives Abar_cr = 0
+exactly: no oscillation, the static JKR pull-off, ratio 1.
+
+Which root is the pull-off. The withdrawal lowers the mean contact radius. With F(a_m) = a_m -
+a_cr(Abar(a_m)), Abar(a_m) the unique solution of (II) at a_m
+(:func:`vibroadhesion.models.leading_order.internal_variable`), the contact holds while F > 0 and
+detaches where F first vanishes as a_m decreases; roots in a_m and roots of (IV) in Abar are in the
+same order (a_cr increases with Abar). F < 0 as a_m -> 0 (T -> 1,
+so Abar and a_cr -> infinity) and F > 0 as a_m -> infinity (T -> 0). Further roots come from T rising
+towards the contact resonance, where the amplified oscillation makes F < 0 again; a withdrawal
+that starts attached below them reaches the smallest root first, and that root is reported as the
+pull-off. (A start above the contact resonance would meet the resonance first; this estimate does
+not cover it, and :func:`critical_abars` returns every root for a caller who needs the others.)
+
+
+Uniqueness of Eq. (72) (Gent–Schultz law). J0 and |Jc1| are strictly increasing in Abar
+(:mod:`vibroadhesion.models.leading_order`), so the left-hand side of Eq. (72) rises strictly from 0
+(Abar = 0) to infinity, and Eq. (72) has exactly one root for every eta1 > 0.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
+
+from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.core.ratelaw import RateLaw
+from vibroadhesion.models.leading_order import Fixation, fixation_transmissibility, indentation_amplitude
+from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
+
+
+class PulloffEstimate(NamedTuple):
+    """Critical internal variable, J0 there, and the amplification P_cr / P_cr^JKR = J0^2 (Eq. 71)."""
+
+    abar_cr: NDArray[np.float64]
+    j0: NDArray[np.float64]
+    ratio: NDArray[np.float64]
+
+    @classmethod
+    def from_abar(cls, abar_cr: NDArray[np.float64], law: RateLaw) -> "PulloffEstimate":
+        j0 = j_integrals_for_law(abar_cr, law)[0]
+        return cls(abar_cr, j0, j0**2)
+
+
+def pulloff_lhs_leading(abar: ArrayLike, law: RateLaw) -> NDArray[np.float64]:
+    """Left-hand side of Eq. (72), J0^(1/3) |Jc1|."""
+    j0, jc1, _ = j_integrals_for_law(abar, law)
+    return np.cbrt(j0) * np.abs(jc1)
+
+
+def pulloff_closure(j0: ArrayLike) -> NDArray[np.float64]:
+    """abar_m = a_cr / a_o = (9/16)^(1/3) J0^(2/3): detachment at the JKR critical radius (Eqs. 61, 86)."""
+    return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
+
+
+def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> float:
+    """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 (0 gives 0).
+
+    Rigid fixation (``None`` or :meth:`Fixation.rigid`): the unique root of Eq. (72). Any other
+    fixation: the smallest root of Eqs. (67)–(69), (IV) of the module docstring (:func:`critical_abars`),
+    the first reached as the base is withdrawn (module docstring).
+    """
+    if eta1 < 0 or not np.isfinite(eta1):
+        raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
+    if eta1 == 0:
+        return 0.0
+    if fixation is not None and not fixation.is_rigid:
+        return critical_abars(eta1, fixation, chi0, law)[0]
+    log_target = np.log(3.0 * eta1 / chi0**2)
+    return solve_log_increasing(
+        lambda z: float(np.log(pulloff_lhs_leading(np.exp(z), law))) - log_target,
+        what=f"Eq. (72) at eta1 = {eta1:.6g}",
+    )
+
+
+def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> PulloffEstimate:
+    """Leading-order pull-off estimate, vectorised over eta1: Eqs. (71)–(72) for rigid fixation (``None``),
+    Eqs. (67)–(69) and (71) for any other (:func:`critical_abar_leading`)."""
+    eta1 = np.asarray(eta1, dtype=float)
+    abar = np.vectorize(lambda e: critical_abar_leading(e, chi0, law, fixation), otypes=[float])(eta1)
+    return PulloffEstimate.from_abar(abar, law)
+
+
+#: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_abars`).
+PULLOFF_SCAN = np.linspace(-40.0, 40.0, 1601)
+
+
+def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw,
+                   log_abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
+    """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending.
+
+    g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)] with abar_cr = :func:`pulloff_closure` (J0),
+    i.e. (IV) of the module docstring in logarithms, is evaluated on the grid ``log_abar``; each sign
+    change is polished by Brent's method (roots closer than the grid spacing can be missed). A contact
+    resonance is no sign change (g -> -infinity on both sides). d = 0 (anti-resonance) gives [0.0].
+    Raises :class:`NoRootError` when g is not negative at the left end of the grid (the smallest root
+    could lie below it) or when there is no sign change.
+    """
+    if not (eta1 > 0 and math.isfinite(eta1)):
+        raise ValueError(f"eta1 must be a positive number, got {eta1!r}")
+    if complex(fixation.dynamic_stiffness) == 0:
+        return [0.0]
+    values = critical_log_excess(np.asarray(log_abar, dtype=float), eta1, fixation, chi0, law)
+    what = f"Eqs. (67)-(69) at eta1 = {eta1:.6g}, {fixation}"
+    if not values[0] < 0:
+        raise NoRootError(f"{what}: the left-hand side reaches the target below Abar = {math.exp(log_abar[0]):.3g}")
+    crossings = np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)
+    if crossings.size == 0:
+        raise NoRootError(f"{what}: no root for Abar up to {math.exp(log_abar[-1]):.3g}")
+    return [math.exp(brentq(lambda z: float(critical_log_excess(np.array([z]), eta1, fixation, chi0, law)[0]),
+                            log_abar[k], log_abar[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps))
+            for k in crossings]
+
+
+def critical_log_excess(
+    log_abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw
+) -> NDArray[np.float64]:
+    """g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)], z = ln Abar: (IV) of the module docstring
+    in logarithms, i.e. half the logarithm of the printed Eq. (67) (with Eqs. 68–69) over eta1^2; for a
+    rigid fixation (T = 1) ln of the left-hand side of Eq. (72) over its right-hand side.
+
+    abar_cr = :func:`pulloff_closure` (J0) (Eqs. 61, 86). Vectorised over ``log_abar`` (1-d).
+    """
+    j0, jc1, _ = j_integrals_for_law(np.exp(log_abar), law)
+    abar_cr = pulloff_closure(j0)
+    transmissibility = np.array([fixation_transmissibility(float(a), fixation, chi0) for a in abar_cr])
+    return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(eta1 * transmissibility)
+
