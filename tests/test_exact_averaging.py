@@ -1,11 +1,11 @@
-"""Exact averaging in the high-frequency limit (vibroadhesion.models.exact_averaging).
+"""Exact averaging in the high-frequency limit (vibroadhesion.models.frozen_radius, .exact_averaging).
 
 Independent references:
 
 * the drift condition solved again in mpmath (30 digits): I_cl and I_op integrated by tanh-sinh
   over theta with the Gent–Schultz inverse written out here, root found by mp.findroot;
 * closed forms: alpha* = 1 + k1 beta^2 + k2 beta^3 + O(beta^4) and the beta -> infinity
-  asymptote (module docstring), with their constants from mpmath Gamma functions;
+  asymptote (docstring of vibroadhesion.models.frozen_radius), with their constants from mpmath Gamma functions;
 * brute force: the ODE d abar/d tau = f^-1(s^2)/(omega_check c_o) of Eq. (5) integrated by scipy's
   DOP853 at finite omega_check (no averaging), whose periodic state must approach the frozen cycle;
 * the paper's J-integral model (30-digit J-integrals of tests/mpmath_reference.py) at small
@@ -24,13 +24,12 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
 from vibroadhesion.models.exact_averaging import (
-    NoSteadyStateError,
-    frozen_radius_cycle,
     mean_state,
     nominal_point_contact,
     pulloff_at_critical_radius,
     pulloff_at_force_minimum,
 )
+from vibroadhesion.models.frozen_radius import NoSteadyStateError, _exponential_nodes, frozen_radius_cycle
 from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius_ratio
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact as j_model_nominal_point_contact
@@ -170,7 +169,7 @@ def large_beta_floor(beta: float, n: float) -> float:
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0])
 def test_large_beta_asymptote_of_the_minimum_of_sqrt_w(n: float) -> None:
-    """Reference: the beta -> infinity balance of the module docstring. Its relative error falls off
+    """Reference: the beta -> infinity balance of the frozen_radius docstring. Its relative error falls off
     (corrections O(beta^-2) from s^2 - 1 ~ s^2, and from the cut of the closing integral): the ratio
     must approach 1 monotonically, within 1e-5 at beta = 1e4; and alpha*/beta - 1 -> 0."""
     betas = np.array([1e2, 1e3, 1e4])
@@ -289,7 +288,7 @@ def _cos_power_integral(q: float) -> mp.mpf:
 @pytest.mark.parametrize("n", [N_PUBLISHED, 1.0, 2.0])
 def test_small_amplitude_agrees_with_the_j_integral_model_in_order_not_constant(n: float) -> None:
     """Both models reduce to the static JKR state as etahat -> 0 with w_eff/w0 - 1 = O(etahat^2) and
-    Abar ~ etahat^(1/n); the constants differ (module docstring) unless n = 1:
+    Abar ~ etahat^(1/n); the constants differ (exact_averaging's docstring) unless n = 1:
 
         (w_eff - 1)_exact/(w_eff - 1)_J -> 8 W(n+1)^2/(pi (1+n) W(2n)),
         Abar_exact/Abar_J -> W(1/n) (4 W(n+1)/pi)^(1/n),
@@ -361,3 +360,15 @@ def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
     assert abs(float(state.deltabar0[0])) < 1e-13 * float(sol.abar_m) ** 2
     assert abs(contact_radius_ratio(CHI0) / C_O - 1) < 1e-15
     assert abs(float(amplitude_in_contact_units(eta1, CHI0)) / (eta1 / C_O**2) - 1) < 1e-15
+
+
+@pytest.mark.parametrize("p", [0.25, 1.883, 20.0])
+@pytest.mark.parametrize("half", [1e-6, 0.4, 1.5])
+def test_exponential_nodes_integrate_a_kink_and_a_smooth_end_exactly(p: float, half: float) -> None:
+    """The distance variable d = half exp(-y/rate) of the drift quadrature: with rate = 1 + p the weights
+    integrate the kink d^p over (0, half] to half^(p+1)/(p+1) (closed form), with rate 1 the smooth
+    end d^0 to half. The integrand is e^-y times a polynomial of degree 0 in y on panels of width 2 with
+    >= 8 Gauss nodes (error < 1e-15 per panel) and the cut at y = 40 drops e^-40 = 4e-18: relative 1e-13."""
+    for rate, power, exact in ((1.0 + p, p, half ** (p + 1) / (p + 1)), (1.0, 0.0, half)):
+        d, log_w = _exponential_nodes(np.array([[half]]), rate)
+        assert abs(float(np.sum(np.exp(log_w) * d**power)) / exact - 1) < 1e-13

@@ -28,7 +28,7 @@ from scipy.integrate import quad
 from scipy.optimize import fsolve
 
 from vibroadhesion.models.compliant import CompliantFixation, residual
-from vibroadhesion.models.exact_averaging import NoSteadyStateError
+from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.models.exact_harmonic_balance import compliant_residual, exact_harmonics, rigid_fixation
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact

@@ -33,7 +33,7 @@ rule benchmark_speed_vs_error:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         errors="results/validation/rigid_errors.csv",
-        code=code(*NUMERICS, *SIMULATION, "exact_averaging", "exact_harmonic_balance", "validation", "benchmarking",
+        code=code(*NUMERICS, *SIMULATION, "exact_averaging", "frozen_radius", "exact_harmonic_balance", "validation", "benchmarking",
                   "data", "artefacts"),
     output:
         csv="results/benchmarks/speed_vs_error.csv",

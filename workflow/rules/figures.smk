@@ -45,7 +45,7 @@ rule fig4_data:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, "exact_averaging", "figures", "fitting", "data", "cli", "artefacts"),
+        code=code(*NUMERICS, "exact_averaging", "frozen_radius", "figures", "fitting", "data", "cli", "artefacts"),
     output:
         "results/fig4/fig4.csv",
     params:

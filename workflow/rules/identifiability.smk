@@ -10,7 +10,7 @@ rule pulloff_sensitivity:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
+        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "frozen_radius", "compliant", "continuation", "virtual_pulloff",
                   "identifiability", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/identifiability/sensitivity/{parameter}_{sign}.csv",
@@ -35,7 +35,7 @@ rule identifiability_fit:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
         virtual="results/validation/virtual_pulloff_rigid.csv",
-        code=code(*NUMERICS, "exact_averaging", "identifiability", "fitting", "data", "cli", "artefacts"),
+        code=code(*NUMERICS, "exact_averaging", "frozen_radius", "identifiability", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/identifiability/fits/{model}.csv",
     wildcard_constraints:

@@ -9,7 +9,7 @@ rule validation_rigid:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "exact_harmonic_balance", "compliant", "continuation",
+        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "frozen_radius", "exact_harmonic_balance", "compliant", "continuation",
                   "validation", "figures", "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/rigid/h1_{h1}.csv",
@@ -117,7 +117,7 @@ rule virtual_pulloff:
     input:
         setup="results/data/setup.json",
         fit="results/fit/gent_schultz.json",
-        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "compliant", "continuation", "virtual_pulloff",
+        code=code(*NUMERICS, *SIMULATION, "progress", "exact_averaging", "frozen_radius", "compliant", "continuation", "virtual_pulloff",
                   "fitting", "data", "cli", "artefacts"),
     output:
         "results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv",

@@ -12,5 +12,6 @@ __all__ = [
     "compliant",
     "stiffness",
     "exact_harmonic_balance",
+    "frozen_radius",
     "exact_averaging",
 ]

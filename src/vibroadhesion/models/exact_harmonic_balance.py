@@ -1,6 +1,6 @@
 """Exact harmonic balance of the single-harmonic ansatz: the Discussion's recommendation (Eqs. 125–126).
 
-Notation as in :mod:`vibroadhesion.models.exact_averaging`: abar = a/a_o, deltabar = delta R/a_o^2,
+Notation as in :mod:`vibroadhesion.models.frozen_radius`: abar = a/a_o, deltabar = delta R/a_o^2,
 Phat = P R/(E* a_o^3) (JKR pull-off -3/4), c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, s = sqrt(w/w0),
 etahat = eta1/c_o^2, and tau' = omega t' the phase-shifted time of Eq. (25).
 
@@ -109,7 +109,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from vibroadhesion.models.compliant import CompliantFixation, amplitude_log_residual
-from vibroadhesion.models.exact_averaging import NoSteadyStateError
+from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.core.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.core.integrals import folded_rule
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
