@@ -22,6 +22,8 @@ from vibroadhesion.pipeline import figures
 from vibroadhesion.models.compliant import (
     NOTCH_FLOOR,
     CompliantFixation,
+    amplitude_residual_on_closure,
+    mean_balance_excess,
     newton_at_frequency,
     pulloff_by_scan,
     residual,
@@ -30,9 +32,18 @@ from vibroadhesion.models.compliant import (
     static_abar_m,
     trace_response_curve,
 )
-from vibroadhesion.numerics.continuation import Curve, crossings, locate_folds, trace
+from vibroadhesion.numerics.continuation import (
+    ContinuationSettings,
+    Curve,
+    _corrected_at,
+    crossings,
+    locate_folds,
+    trace,
+)
+from test_leading_order_steady_state import printed_eq_67_log_excess, printed_eq_87_terms
 from vibroadhesion.core.integrals import j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.leading_pulloff import pulloff_closure
 from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 
 LAW = GentSchultz(N_PUBLISHED)
@@ -69,6 +80,17 @@ def test_continuation_follows_the_unit_circle_through_both_folds_of_x() -> None:
 @pytest.fixture(scope="module")
 def folded() -> tuple:
     return trace_response_curve(FOLDING, LAW)
+
+
+def test_corrected_point_lies_on_the_circle_in_the_arclength_hyperplane() -> None:
+    """From x0 = (0, -1) along t0 = (1, 0), sigma = 0.6: the point of the unit circle with x = 0.6 is
+    (0.6, -0.8) and its unit tangent oriented along t0 is (0.8, 0.6) (closed forms). Point to 1e-12 (the
+    corrector's tolerance on F), tangent to 1e-8 (central differences with step 1e-7: rounding ~1e-9)."""
+    circle = lambda p: (p[:, 0] ** 2 + p[:, 1] ** 2 - 1.0)[:, None]  # noqa: E731
+    x0, t0, settings = np.array([0.0, -1.0]), np.array([1.0, 0.0]), ContinuationSettings()
+    jac0 = np.array([[0.0, -2.0]])  # F'(x0), exact
+    x, t = _corrected_at(0.6, circle, x0, t0, jac0, settings)
+    assert np.max(np.abs(x - [0.6, -0.8])) < 1e-12 and np.max(np.abs(t - [0.8, 0.6])) < 1e-8
 
 
 def test_continuation_passes_both_folds_and_reaches_the_end_of_the_range(folded) -> None:
@@ -132,6 +154,32 @@ def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -
     exact = curves[curves["branch"] == "anti-resonance"]
     assert len(exact) == 1 and exact["omega_bar"].iloc[0] == 1.0 and exact["Abar"].iloc[0] == 0.0
     assert exact["abar_m"].iloc[0] == static
+
+
+@pytest.mark.parametrize(("abar_m", "j0", "mu"), [(0.3, 1.0, 1e-6), (1.0, 2.5, 0.0), (4.0, 1.3, 1e-6)])
+def test_mean_balance_excess_is_printed_eq_87_over_its_j0_part(abar_m: float, j0: float, mu: float) -> None:
+    """positive/negative - 1 of Eq. (87) = (sum of the printed terms) / (minus its J0 terms), 30 digits;
+    tolerance 1e-13 times the largest term over the J0 part (a few roundings per term)."""
+    kappa = 0.1
+    with mp.workdps(30):
+        terms = printed_eq_87_terms(abar_m, mp.mpf(j0), kappa, mu)
+        j0_part = -(terms[2] + terms[3])
+        ours = mean_balance_excess(math.log(abar_m), j0, CompliantFixation(CHI0, ETA1, NU0, kappa, mu, 0.0))
+        assert abs(float(ours - sum(terms) / j0_part)) < 1e-13 * float(max(abs(t) for t in terms) / j0_part)
+
+
+@pytest.mark.parametrize(("kappa", "omega_bar", "zeta"), [(1e-3, 17.85, 0.01), (1e-2, 0.5, 0.05), (1e-2, 3.0, 0.0)])
+def test_amplitude_residual_at_a_cr_tends_to_half_the_log_of_printed_eq_67(kappa, omega_bar, zeta) -> None:
+    """Eq. (90) along a_m = a_cr (Eq. 61) in logarithms becomes Eqs. (67)-(69) as omega_check -> infinity: with
+    nu0 = 1e-15 it equals half ln of the printed Eq. (67) over eta1^2 (30-digit J's) up to the refined terms
+    of Eqs. (94), (96), O(Abar nu0/omega_bar); tolerance 1e-12 + 10 Abar nu0/omega_bar."""
+    nu0 = 1e-15
+    p = CompliantFixation(CHI0, ETA1, nu0, kappa, 0.0, zeta)
+    for abar in (0.01, 3.0, 1e4):
+        ours = amplitude_residual_on_closure(np.log([abar]), math.log(omega_bar), p, LAW, pulloff_closure)[0]
+        with mp.workdps(30):
+            printed = printed_eq_67_log_excess(abar, kappa, omega_bar, zeta, ETA1, j_integrals_mp(abar, LAW.n)[:2])
+        assert abs(ours - 0.5 * printed) < 1e-12 + 10 * abar * nu0 / omega_bar
 
 
 def test_static_contact_radius_solves_eq_82() -> None:

@@ -29,7 +29,13 @@ from scipy.optimize import fsolve
 
 from vibroadhesion.models.compliant import CompliantFixation, residual
 from vibroadhesion.models.frozen_radius import NoSteadyStateError
-from vibroadhesion.models.exact_harmonic_balance import compliant_residual, exact_harmonics, rigid_fixation
+from vibroadhesion.core.integrals import folded_rule
+from vibroadhesion.models.exact_harmonic_balance import (
+    _k_integrals,
+    compliant_residual,
+    exact_harmonics,
+    rigid_fixation,
+)
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
 
@@ -362,3 +368,14 @@ def test_high_frequency_limit_is_the_leading_order_plus_epsilon_squared_terms(ca
     assert abs(exact.abar / abar - 1) < epsilon**4 and abs(exact.abar_m / abar_m - 1) < epsilon**4
     assert abs(exact.abar / float(leading.abar) - 1) > 0.01 * epsilon**2
     assert abs(exact.abar_m / float(leading.abar_m) - 1) > 0.01 * epsilon**2
+
+
+def test_k_integrals_of_constants_are_the_closed_form_quarter_period_integrals() -> None:
+    """S = D = 1, g+ = g- = 1 (g_sum = 2, g_diff = 0) and g_diff = 1: K0 = (1/2pi) int_0^(pi/2) 2 dt = 1/2,
+    Kc = (1/pi) int_0^(pi/2) 2 sin t dt = 2/pi, Ks = 0 and (1/pi) int_0^(pi/2) cos t dt = 1/pi. The folded
+    rule integrates these smooth functions to rounding: 1e-14."""
+    t, _, weights = folded_rule()
+    ones = np.ones((1, t.size))
+    for g_diff, ks in ((0.0, 0.0), (1.0, 1 / math.pi)):
+        k0, kc, k_s = _k_integrals(2.0 * ones, g_diff * ones, ones, ones, math.pi * weights[:, 0], np.cos(t), np.sin(t))
+        assert abs(k0[0] - 0.5) < 1e-14 and abs(kc[0] - 2 / math.pi) < 1e-14 and abs(k_s[0] - ks) < 1e-14

@@ -44,6 +44,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -96,6 +97,13 @@ def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -
     )
     negative = np.asarray(j0) * ((2.0 ** (4 / 3) * p.chi0 / 3.0 ** (2 / 3)) * abar_m**1.5 + p.kappa * np.sqrt(abar_m))
     return positive, negative
+
+
+def mean_balance_excess(log_abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -> Array:
+    """positive/negative - 1 of Eq. (87) (:func:`mean_balance_parts`) at abar_m = exp(``log_abar_m``): zero on
+    the mean balance, increasing with abar_m (see :func:`static_abar_m`)."""
+    positive, negative = mean_balance_parts(np.exp(log_abar_m), j0, p)
+    return positive / negative - 1.0
 
 
 def static_abar_m(p: CompliantFixation) -> float:
@@ -151,8 +159,8 @@ def residual(x: ArrayLike, p: CompliantFixation, law: RateLaw) -> Array:
     x = np.atleast_2d(np.asarray(x, dtype=float))
     omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
     j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
-    positive, negative = mean_balance_parts(abar_m, j0, p)
-    return np.stack([positive / negative - 1.0, amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, p)], axis=1)
+    amplitude = amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, p)
+    return np.stack([mean_balance_excess(x[:, 1], j0, p), amplitude], axis=1)
 
 
 def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
@@ -185,11 +193,7 @@ def abar_m_from_mean_balance(j0: ArrayLike, p: CompliantFixation) -> Array:
     width-2 bracket reach the spacing of doubles.
     """
     j0 = np.asarray(j0, dtype=float)
-
-    def excess(z: Array) -> Array:
-        positive, negative = mean_balance_parts(np.exp(z), j0, p)
-        return positive / negative - 1.0
-
+    excess = partial(mean_balance_excess, j0=j0, p=p)
     centre = (2.0 / 3.0) * np.log(j0)
     lo, hi = centre - 1.0, centre + 1.0
     for _ in range(200):
@@ -212,11 +216,7 @@ def newton_at_frequency(omega_bar: float, p: CompliantFixation, law: RateLaw, gu
 
     Raises NoRootError when Newton does not converge.
     """
-    s = math.log(omega_bar)
-
-    def at_frequency(z: Array) -> Array:
-        return residual(np.column_stack([np.full(len(z), s), z]), p, law)
-
+    at_frequency = partial(residual_at_frequency, log_omega_bar=math.log(omega_bar), p=p, law=law)
     z = np.log(np.asarray(guess, dtype=float))
     for _ in range(40):
         f = at_frequency(z[None, :])[0]
@@ -227,17 +227,27 @@ def newton_at_frequency(omega_bar: float, p: CompliantFixation, law: RateLaw, gu
     raise NoRootError(f"Eqs. (87), (90): Newton did not converge at omega_bar = {omega_bar:.6g} from {guess}")
 
 
+def residual_at_frequency(z: Array, log_omega_bar: float, p: CompliantFixation, law: RateLaw) -> Array:
+    """:func:`residual` (Eqs. 87, 90) at fixed ln omega_bar for rows z = (ln abar_m, ln Abar) of an (m, 2) array."""
+    return residual(np.column_stack([np.full(len(z), log_omega_bar), z]), p, law)
+
+
+def amplitude_residual_on_closure(
+    log_abar: Array, log_omega_bar: float, p: CompliantFixation, law: RateLaw, abar_m_of_j0: Callable[[Array], Array]
+) -> Array:
+    """Eq. (90) in logarithms (column 1 of :func:`residual`) along abar_m = abar_m_of_j0(J0(Abar)), vectorised over
+    ln Abar: the closure is Eq. (87) (:func:`abar_m_from_mean_balance`) or a_m = a_cr (Eq. 61)."""
+    abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_abar), law)[0])
+    return residual(np.column_stack([np.full(len(log_abar), log_omega_bar), np.log(abar_m), log_abar]), p, law)[:, 1]
+
+
 def _roots_by_scan(
     omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array, abar_m_of_j0: Callable[[Array], Array]
 ) -> list[tuple[float, float]]:
     """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)): sign changes on the
     grid ``log_abar`` polished by Brent's method. Roots closer than the grid spacing can be missed."""
-    s = math.log(omega_bar)
-
-    def g(z: Array) -> Array:
-        abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(z), law)[0])
-        return residual(np.column_stack([np.full(len(z), s), np.log(abar_m), z]), p, law)[:, 1]
-
+    g = partial(amplitude_residual_on_closure, log_omega_bar=math.log(omega_bar), p=p, law=law,
+                abar_m_of_j0=abar_m_of_j0)
     values = g(log_abar)
     roots = []
     for k in np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0):
@@ -313,12 +323,9 @@ def trace_response_curve(
     omega_bar = 1 is added by the caller). Folds are located on every piece.
     """
     lo, hi = (math.log(v) for v in omega_bar_range)
-    res = lambda x: residual(x, p, law)  # noqa: E731
+    res = partial(residual, p=p, law=law)
     split = p.anti_resonance_is_exact and lo < 0.0 < hi
-
-    def into_notch(x: Array) -> bool:  # ln omega_bar -> 0 from either side, Abar -> 0
-        return _a_over_am(x[None, :], p)[0] < NOTCH_FLOOR
-
+    into_notch = partial(_into_notch, p=p)
     if split:
         ends = [(lo, 1.0, into_notch), (hi, -1.0, into_notch)]
     else:
@@ -329,6 +336,12 @@ def trace_response_curve(
         pieces.append(_clip(curve, p, law, lo, hi))
     folds = np.concatenate([locate_folds(res, c, settings) for c in pieces])
     return ResponseCurve(p, tuple(pieces), folds)
+
+
+def _into_notch(x: Array, p: CompliantFixation) -> bool:
+    """A/a_m < NOTCH_FLOOR at x = (ln omega_bar, ln abar_m, ln Abar): a branch approaching the anti-resonance
+    omega_bar = 1, where Eq. (90) has the exact solution Abar = 0 for zeta = 0 (Appendix B)."""
+    return _a_over_am(x[None, :], p)[0] < NOTCH_FLOOR
 
 
 def _clip(curve: Curve, p: CompliantFixation, law: RateLaw, lo: float, hi: float) -> Curve:

@@ -144,6 +144,19 @@ def _even_odd_parts(abar: Array, law: RateLaw) -> tuple[Array, Array]:
     return closing + opening, closing - opening
 
 
+def _k_integrals(
+    g_sum: Array, g_diff: Array, s_even: Array, s_odd: Array, w: Array, cos_t: Array, sin_t: Array
+) -> tuple[Array, Array, Array]:
+    """(K0, Kc, Ks) of g folded onto t in (0, pi/2) (module docstring): K0 = (1/2pi) int S (g+ + g-) dt,
+    Kc = (1/pi) int D sin t (g+ + g-) dt, Ks = (1/pi) int S cos t (g+ - g-) dt, with S = ``s_even``, D = ``s_odd``
+    and the rule's weights ``w`` for int_0^(pi/2) dt at the nodes with cosines ``cos_t`` and sines ``sin_t``."""
+    return (
+        (s_even * g_sum) @ w / (2.0 * np.pi),
+        (s_odd * g_sum) @ (w * sin_t) / np.pi,
+        (s_even * g_diff) @ (w * cos_t) / np.pi,
+    )
+
+
 def _coefficients(a: Array, e: Array, s_even: Array, s_odd: Array) -> ExactHarmonics:
     """The seven coefficients for rows (abar_m, epsilon) and the matching rows of S, D (module docstring)."""
     t, _, weights = folded_rule()
@@ -154,17 +167,10 @@ def _coefficients(a: Array, e: Array, s_even: Array, s_odd: Array) -> ExactHarmo
     plus, minus = a_col + e_c, a_col - e_c
     root_p, root_m = np.sqrt(plus), np.sqrt(minus)
     cube_p, cube_m = plus * root_p, minus * root_m
-
-    def k_integrals(g_sum: Array, g_diff: Array) -> tuple[Array, Array, Array]:
-        """(K0, Kc, Ks) of g from g+ + g- and g+ - g-."""
-        return (
-            (s_even * g_sum) @ w / (2.0 * np.pi),
-            (s_odd * g_sum) @ (w * sin_t) / np.pi,
-            (s_even * g_diff) @ (w * cos_t) / np.pi,
-        )
-
-    k0_half, kc_half, ks_half = k_integrals(root_p + root_m, 2.0 * e_c / (root_p + root_m))
-    k0_32, kc_32, ks_32 = k_integrals(cube_p + cube_m, (6.0 * a_col**2 * e_c + 2.0 * e_c**3) / (cube_p + cube_m))
+    rule = (s_even, s_odd, w, cos_t, sin_t)
+    k0_half, kc_half, ks_half = _k_integrals(root_p + root_m, 2.0 * e_c / (root_p + root_m), *rule)
+    diff_32 = (6.0 * a_col**2 * e_c + 2.0 * e_c**3) / (cube_p + cube_m)
+    k0_32, kc_32, ks_32 = _k_integrals(cube_p + cube_m, diff_32, *rule)
     return ExactHarmonics(
         a**2 + 0.5 * e**2 - k0_half,
         -kc_half,
@@ -231,20 +237,21 @@ class _AtAmplitude:
         contact holds. It is bracketed between the minimum of F (the root of the analytic dF/da,
         by Brent's method) and a radius where F > 0.
         """
-
-        def excess(a: float) -> float:
-            return self.at(a).mean_indentation - deltabar0
-
         lo = self.epsilon + 1e-9 * max(self.epsilon, 1.0)
         hi = 2.0 * lo + 1.0 + math.sqrt(abs(deltabar0))
-        while excess(hi) <= 0 or self.mean_indentation_slope(hi) <= 0:
+        while self.mean_indentation_excess(hi, deltabar0) <= 0 or self.mean_indentation_slope(hi) <= 0:
             hi *= 2.0
         turn = lo
         if self.mean_indentation_slope(lo) < 0:
             turn = brentq(self.mean_indentation_slope, lo, hi, xtol=1e-13 * hi)
-        if excess(turn) > 0:
+        if self.mean_indentation_excess(turn, deltabar0) > 0:
             return None
-        return brentq(excess, turn, hi, xtol=4e-16 * hi, rtol=1e-15)
+        return brentq(self.mean_indentation_excess, turn, hi, args=(deltabar0,), xtol=4e-16 * hi, rtol=1e-15)
+
+    def mean_indentation_excess(self, abar_m: float, deltabar0: float) -> float:
+        """F(abar_m) = mean deltabar - deltabar0 (mean of Eq. 5, module docstring): zero where the base offset
+        deltabar0 holds the mean radius abar_m."""
+        return self.at(abar_m).mean_indentation - deltabar0
 
 
 #: Relative residual of both equations a returned rigid steady state must meet.
