@@ -234,7 +234,6 @@ SCAN_STEP = 0.05
 _RESONANCE_REFINEMENTS = 60
 
 
-
 def steady_states(
     eta1: float,
     fixation: Fixation,
@@ -255,12 +254,14 @@ def steady_states(
     for A/a_m). Raises :class:`NoRootError` if there is none (e.g. a tensile load beyond pull-off).
 
     Method. For given abar_m, (II) fixes Abar uniquely (:func:`internal_variable`), so the
-    solutions are the roots of the one-variable residual F(abar_m) of (III) along that curve. F is
-    scanned on a grid of step ``SCAN_STEP`` in ln abar_m; each sign change is polished by Brent's
-    method, and each interior extremum of |F| without a sign change is maximised to catch two
-    roots inside one cell. Where d is real and negative, (II) has a pole at the contact resonance
+    solutions are the roots of the one-variable residual F(abar_m) of (III) along that curve
+    (:func:`balance_state`). F is scanned on a grid of step ``SCAN_STEP`` in ln abar_m
+    (:func:`scan_segments`); each sign change is polished by Brent's method, and each interior
+    extremum of |F| without a sign change is maximised to catch two roots inside one cell
+    (:func:`roots_in_segment`). Where d is real and negative, (II) has a pole at the contact resonance
     (:meth:`Fixation.contact_resonance`) where Abar and J0 -> infinity, so F -> -infinity: the
-    scan is split there and refined geometrically towards it until F < 0 and decreasing.
+    scan is split there and refined geometrically towards it until F < 0 and decreasing
+    (:func:`approach_resonance`).
 
     End of the scan (a proof, not a cut-off). Beyond abar_turn = max(0, -Re d/(2 c_o)) (0 for rigid
     fixation) the target of (II) decreases strictly with abar_m, since
@@ -269,7 +270,8 @@ def steady_states(
     d/dx [x^2 - J0 x^(1/2)] >= x^(-1/2) (2 x^(3/2) - J0/2), both positive once x^(3/2) >= (3/4) J0,
     a condition that, x^(3/2)/J0 rising, persists. So F increases strictly beyond the first grid
     point past abar_turn where x^(3/2) >= (3/4) J0, and from there at most one root remains; it
-    exists iff F < 0 there and is bracketed by doubling the step. Below ``abar_min`` (a_m far
+    exists iff F < 0 there and is bracketed by doubling the step (:func:`monotone_tail_start`,
+    :func:`in_monotone_tail`, :func:`bracket_tail_root`). Below ``abar_min`` (a_m far
     below the JKR scale a_o, where with vibration Abar -> infinity) roots are not sought.
 
     Multiplicity and stability. In the static limit (J0 = 1) (III) is, in s = abar_m^(1/2),
