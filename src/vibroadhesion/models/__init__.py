@@ -1,6 +1,9 @@
-"""The asymptotic model levels: leading order (Eqs. 43, 50–59, 71–72), refined rigid (Eqs. 93–94, 106,
+"""The asymptotic model levels, one module per level (or per part of a level).
+
+Leading order (steady state Eqs. 43, 50–59; pull-off Eqs. 60–72), refined rigid (Eqs. 93–94, 106,
 122–123), refined compliant (Eqs. 87, 90–96), dynamic stiffness (Eqs. 117–121), exact harmonic
-balance (Eqs. 125–126) and the exact high-frequency averaging.
+balance (Eqs. 125–126) and the exact high-frequency averaging (the frozen-radius cycle and its
+mean state and pull-off).
 
 Layer 2: imports from :mod:`vibroadhesion.numerics` and :mod:`vibroadhesion.core`.
 """

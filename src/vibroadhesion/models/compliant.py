@@ -50,12 +50,12 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
+from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.models.leading_pulloff import pulloff_closure
 from vibroadhesion.models.refined import displacement_harmonics
+from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
 from vibroadhesion.numerics.roots import NoRootError
 
 Array = NDArray[np.float64]
@@ -76,6 +76,7 @@ class CompliantFixation:
     zeta: float  # c / (2 sqrt(k m)), Eq. (65)
 
     def __post_init__(self) -> None:
+        """Reject parameters outside their ranges (Eqs. 64–66, 81, 97): chi0, eta1, nu0, kappa > 0; mu, zeta >= 0."""
         for name in ("chi0", "eta1", "nu0", "kappa"):
             if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0):
                 raise ValueError(f"{name} must be a positive number, got {getattr(self, name)!r}")
@@ -100,8 +101,10 @@ def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -
 
 
 def mean_balance_excess(log_abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -> Array:
-    """positive/negative - 1 of Eq. (87) (:func:`mean_balance_parts`) at abar_m = exp(``log_abar_m``): zero on
-    the mean balance, increasing with abar_m (see :func:`static_abar_m`)."""
+    """positive/negative - 1 of Eq. (87) (:func:`mean_balance_parts`) at abar_m = exp(``log_abar_m``).
+
+    Zero on the mean balance, increasing with abar_m (see :func:`static_abar_m`).
+    """
     positive, negative = mean_balance_parts(np.exp(log_abar_m), j0, p)
     return positive / negative - 1.0
 
@@ -145,8 +148,11 @@ def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
 
 def amplitude_log_residual(log_omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
                            p: CompliantFixation) -> Array:
-    """Eq. (90) in logarithms, ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|), from the harmonic
-    coefficients of any model level (Eqs. 93-96 here, Eqs. 125-126 in exact_harmonic_balance)."""
+    """Eq. (90) in logarithms, ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
+
+    From the harmonic coefficients of any model level (Eqs. 93-96 here, Eqs. 125-126 in
+    exact_harmonic_balance).
+    """
     xi_c, xi_s = xi_coefficients(log_omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
     return np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - np.log(forcing_modulus(log_omega_bar, p.zeta))
 
@@ -172,7 +178,9 @@ def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_
             stiffness * delta_s - 2.0 * zeta * omega_bar * delta_c + p_s)
 
 
-def residual_linear(omega_bar: float, abar_m: float, abar: float, p: CompliantFixation, law: RateLaw) -> tuple[float, float]:
+def residual_linear(
+    omega_bar: float, abar_m: float, abar: float, p: CompliantFixation, law: RateLaw
+) -> tuple[float, float]:
     """Eqs. (87) and (90) in their printed (polynomial) form, relative: for checking a solution.
 
     Returns ((positive - negative)/negative, (xi_c^2 + xi_s^2 - rhs)/rhs) of Eqs. (87) and (90).
@@ -211,7 +219,9 @@ def abar_m_from_mean_balance(j0: ArrayLike, p: CompliantFixation) -> Array:
     return np.exp(0.5 * (lo + hi))
 
 
-def newton_at_frequency(omega_bar: float, p: CompliantFixation, law: RateLaw, guess: tuple[float, float]) -> tuple[float, float]:
+def newton_at_frequency(
+    omega_bar: float, p: CompliantFixation, law: RateLaw, guess: tuple[float, float]
+) -> tuple[float, float]:
     """Newton in (ln abar_m, ln Abar) at fixed omega_bar from ``guess`` = (abar_m, Abar), to 1e-13 in the residual.
 
     Raises NoRootError when Newton does not converge.
@@ -235,8 +245,10 @@ def residual_at_frequency(z: Array, log_omega_bar: float, p: CompliantFixation, 
 def amplitude_residual_on_closure(
     log_abar: Array, log_omega_bar: float, p: CompliantFixation, law: RateLaw, abar_m_of_j0: Callable[[Array], Array]
 ) -> Array:
-    """Eq. (90) in logarithms (column 1 of :func:`residual`) along abar_m = abar_m_of_j0(J0(Abar)), vectorised over
-    ln Abar: the closure is Eq. (87) (:func:`abar_m_from_mean_balance`) or a_m = a_cr (Eq. 61)."""
+    """Eq. (90) in logarithms (column 1 of :func:`residual`) along abar_m = abar_m_of_j0(J0(Abar)).
+
+    Vectorised over ln Abar; the closure is Eq. (87) (:func:`abar_m_from_mean_balance`) or a_m = a_cr (Eq. 61).
+    """
     abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_abar), law)[0])
     return residual(np.column_stack([np.full(len(log_abar), log_omega_bar), np.log(abar_m), log_abar]), p, law)[:, 1]
 
@@ -244,8 +256,11 @@ def amplitude_residual_on_closure(
 def _roots_by_scan(
     omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array, abar_m_of_j0: Callable[[Array], Array]
 ) -> list[tuple[float, float]]:
-    """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)): sign changes on the
-    grid ``log_abar`` polished by Brent's method. Roots closer than the grid spacing can be missed."""
+    """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)).
+
+    Sign changes on the grid ``log_abar`` polished by Brent's method. Roots closer than the grid
+    spacing can be missed.
+    """
     g = partial(amplitude_residual_on_closure, log_omega_bar=math.log(omega_bar), p=p, law=law,
                 abar_m_of_j0=abar_m_of_j0)
     values = g(log_abar)
@@ -256,7 +271,9 @@ def _roots_by_scan(
     return roots
 
 
-def solutions_by_scan(omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array) -> list[tuple[float, float]]:
+def solutions_by_scan(
+    omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array
+) -> list[tuple[float, float]]:
     """All solutions (abar_m, Abar) of Eqs. (87), (90) at one omega_bar with Abar in the scanned range.
 
     Independent of the continuation: Eq. (87) gives abar_m(Abar) uniquely, so Eq. (90) becomes a
@@ -308,7 +325,10 @@ class ResponseCurve:
 def _start(omega_bar: float, p: CompliantFixation, law: RateLaw) -> Array:
     roots = solutions_by_scan(omega_bar, p, law, np.linspace(-60.0, 60.0, 2401))
     if len(roots) != 1:
-        raise NoRootError(f"Eqs. (87), (90): expected one solution at the end omega_bar = {omega_bar:.6g} to start from, found {len(roots)}")
+        raise NoRootError(
+            f"Eqs. (87), (90): expected one solution at the end omega_bar = {omega_bar:.6g} to start from, "
+            f"found {len(roots)}"
+        )
     return np.array([math.log(omega_bar), math.log(roots[0][0]), math.log(roots[0][1])])
 
 
@@ -326,6 +346,7 @@ def trace_response_curve(
     res = partial(residual, p=p, law=law)
     split = p.anti_resonance_is_exact and lo < 0.0 < hi
     into_notch = partial(_into_notch, p=p)
+    ends: list[tuple[float, float, Callable[[Array], bool]]]
     if split:
         ends = [(lo, 1.0, into_notch), (hi, -1.0, into_notch)]
     else:
@@ -339,8 +360,11 @@ def trace_response_curve(
 
 
 def _into_notch(x: Array, p: CompliantFixation) -> bool:
-    """A/a_m < NOTCH_FLOOR at x = (ln omega_bar, ln abar_m, ln Abar): a branch approaching the anti-resonance
-    omega_bar = 1, where Eq. (90) has the exact solution Abar = 0 for zeta = 0 (Appendix B)."""
+    """A/a_m < NOTCH_FLOOR at x = (ln omega_bar, ln abar_m, ln Abar) (Eq. 98 corrected).
+
+    A branch approaching the anti-resonance omega_bar = 1, where Eq. (90) has the exact solution
+    Abar = 0 for zeta = 0 (Appendix B).
+    """
     return _a_over_am(x[None, :], p)[0] < NOTCH_FLOOR
 
 

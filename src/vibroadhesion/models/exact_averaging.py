@@ -1,5 +1,4 @@
-"""Exact averaging in the high-frequency limit, rigid fixation: the mean state, the nominal point contact
-and the pull-off.
+"""Exact averaging in the high-frequency limit, rigid fixation: mean state, nominal point contact, pull-off.
 
 Notation, the frozen contact radius and the drift-free cycle s(tau) = alpha + beta sin tau with
 alpha = alpha*(beta) and Abar: :mod:`vibroadhesion.models.frozen_radius`. By Eqs. (18) and (16)-(17) the
@@ -99,9 +98,11 @@ def _radius_where_alpha_is(etahat: Array, law: GentSchultz, c: float) -> Array:
 
 
 def _log_alpha_excess(u: Array, etahat: Array, law: GentSchultz, c: float) -> Array:
-    """ln alpha*(etahat/u) - ln(c u^3), u = sqrt(abar_m): zero where the drift-free cycle (Eq. * of
-    :mod:`vibroadhesion.models.frozen_radius`) meets the closure abar_m^(3/2) = alpha*/c (deltabar0 = 0,
-    Eqs. 99, 123, for c = 1; a_m = a_cr, Eqs. 60–61, for c = 4/3)."""
+    """ln alpha*(etahat/u) - ln(c u^3), u = sqrt(abar_m) (Eq. * of :mod:`vibroadhesion.models.frozen_radius`).
+
+    Zero where the drift-free cycle meets the closure abar_m^(3/2) = alpha*/c (deltabar0 = 0,
+    Eqs. 99, 123, for c = 1; a_m = a_cr, Eqs. 60–61, for c = 4/3).
+    """
     return np.log(alpha_star(etahat / u, law)) - np.log(c * u**3)
 
 
@@ -179,6 +180,21 @@ _REFINE_POINTS = 9
 _REFINEMENTS = 3
 
 
+def _smallest_mean_force(z: Array, eta1: Array, chi0: float, law: GentSchultz) -> tuple[Array, Array]:
+    """Phat_m on the rows of nodes z = ln abar_m (one row per eta1, a column) and the index of its smallest value.
+
+    Phat_m = (4/3) abar_m^3 - 2 alpha* abar_m^(3/2) (Eqs. 16–18, :func:`mean_state`). Raises
+    :class:`NoRootError` when the smallest value of a row sits at an end of its scan.
+    """
+    force = mean_state(np.exp(z), eta1, chi0, law).mean_force
+    k = np.argmin(force, axis=1)
+    at_end = (k == 0) | (k == z.shape[1] - 1)
+    if np.any(at_end):
+        etahat = amplitude_in_contact_units(eta1[:, 0], chi0)
+        raise NoRootError(f"mean force has no interior minimum on the scan for etahat = {etahat[at_end][0]:.6g}")
+    return force, k
+
+
 def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> PulloffState:
     """Force-controlled detachment: the minimum over abar_m of Phat_m(abar_m) at fixed etahat, vectorised over eta1.
 
@@ -199,14 +215,10 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
     scale = np.maximum(1.0, np.sqrt(etahat))
     rows = np.arange(etahat.size)
     z = np.linspace(np.log(0.05 * scale), np.log(20.0 * scale), _SCAN_POINTS, axis=-1)
-    for refinement in range(_REFINEMENTS + 1):
-        if refinement:
-            z = np.linspace(z[rows, k - 1], z[rows, k + 1], _REFINE_POINTS, axis=-1)
-        force = mean_state(np.exp(z), column, chi0, law).mean_force
-        k = np.argmin(force, axis=1)
-        at_end = (k == 0) | (k == z.shape[1] - 1)
-        if np.any(at_end):
-            raise NoRootError(f"mean force has no interior minimum on the scan for etahat = {etahat[at_end][0]:.6g}")
+    force, k = _smallest_mean_force(z, column, chi0, law)
+    for _ in range(_REFINEMENTS):
+        z = np.linspace(z[rows, k - 1], z[rows, k + 1], _REFINE_POINTS, axis=-1)
+        force, k = _smallest_mean_force(z, column, chi0, law)
     lower, middle, upper = force[rows, k - 1], force[rows, k], force[rows, k + 1]
     vertex = z[rows, k] - 0.5 * (z[:, 1] - z[:, 0]) * (upper - lower) / (upper - 2.0 * middle + lower)
     state = mean_state(np.exp(vertex), column[:, 0], chi0, law)

@@ -108,11 +108,16 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-from vibroadhesion.models.compliant import CompliantFixation, amplitude_log_residual
-from vibroadhesion.models.frozen_radius import NoSteadyStateError
-from vibroadhesion.core.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.core.groups import (
+    PHAT_JKR,
+    amplitude_in_contact_units,
+    contact_radius_amplitude_ratio,
+    contact_radius_ratio,
+)
 from vibroadhesion.core.integrals import folded_rule
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.models.compliant import CompliantFixation, amplitude_log_residual
+from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -147,9 +152,12 @@ def _even_odd_parts(abar: Array, law: RateLaw) -> tuple[Array, Array]:
 def _k_integrals(
     g_sum: Array, g_diff: Array, s_even: Array, s_odd: Array, w: Array, cos_t: Array, sin_t: Array
 ) -> tuple[Array, Array, Array]:
-    """(K0, Kc, Ks) of g folded onto t in (0, pi/2) (module docstring): K0 = (1/2pi) int S (g+ + g-) dt,
-    Kc = (1/pi) int D sin t (g+ + g-) dt, Ks = (1/pi) int S cos t (g+ - g-) dt, with S = ``s_even``, D = ``s_odd``
-    and the rule's weights ``w`` for int_0^(pi/2) dt at the nodes with cosines ``cos_t`` and sines ``sin_t``."""
+    """(K0, Kc, Ks) of g folded onto t in (0, pi/2) (module docstring).
+
+    K0 = (1/2pi) int S (g+ + g-) dt, Kc = (1/pi) int D sin t (g+ + g-) dt, Ks = (1/pi) int S cos t (g+ - g-) dt,
+    with S = ``s_even``, D = ``s_odd`` and the rule's weights ``w`` for int_0^(pi/2) dt at the nodes with
+    cosines ``cos_t`` and sines ``sin_t``.
+    """
     return (
         (s_even * g_sum) @ w / (2.0 * np.pi),
         (s_odd * g_sum) @ (w * sin_t) / np.pi,
@@ -249,8 +257,10 @@ class _AtAmplitude:
         return brentq(self.mean_indentation_excess, turn, hi, args=(deltabar0,), xtol=4e-16 * hi, rtol=1e-15)
 
     def mean_indentation_excess(self, abar_m: float, deltabar0: float) -> float:
-        """F(abar_m) = mean deltabar - deltabar0 (mean of Eq. 5, module docstring): zero where the base offset
-        deltabar0 holds the mean radius abar_m."""
+        """F(abar_m) = mean deltabar - deltabar0 (mean of Eq. 5, module docstring).
+
+        Zero where the base offset deltabar0 holds the mean radius abar_m.
+        """
         return self.at(abar_m).mean_indentation - deltabar0
 
 
@@ -319,8 +329,9 @@ def _bracket_lowest_root(branch: _RigidBranch, z: float, what: str) -> tuple[flo
 def rigid_fixation(
     eta1: float, omega_check: float, chi0: float, law: RateLaw, deltabar0: float = 0.0
 ) -> RigidSteadyState:
-    """Exact harmonic balance of a rigidly fixed indenter: mean deltabar = deltabar0 and
-    deltabar_c^2 + deltabar_s^2 = etahat^2 (Eqs. 56, 100/103 with exact coefficients).
+    """Exact harmonic balance of a rigidly fixed indenter (Eqs. 56, 100/103 with exact coefficients).
+
+    Mean deltabar = deltabar0 and deltabar_c^2 + deltabar_s^2 = etahat^2.
 
     Nested bracketed solution: for each z = ln Abar the mean radius is the stable root of the mean
     equation (:meth:`_AtAmplitude.stable_mean_radius`), and ln(|deltabar_(c,s)|/etahat) along that

@@ -143,9 +143,10 @@ class NoSteadyStateError(NoRootError):
 
 
 def _panel_rule(n_panels: int, nodes: Callable[[float], int]) -> tuple[Array, Array]:
+    """Composite Gauss–Legendre rule in y on panels of width 2, ``nodes(centre)`` nodes each (Eq. * quadrature)."""
     edges = np.arange(n_panels + 1) * _PANEL_WIDTH
     ys, ws = [], []
-    for a, b in zip(edges[:-1], edges[1:]):
+    for a, b in zip(edges[:-1], edges[1:], strict=True):
         x, w = np.polynomial.legendre.leggauss(nodes(0.5 * (a + b)))
         ys.append(0.5 * (b - a) * x + 0.5 * (a + b))
         ws.append(0.5 * (b - a) * w)

@@ -65,7 +65,6 @@ from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 
-
 # --- Steady state for any fixation of the indenter, Sec. 3.1 (Eqs. 43, 47–59) -------------------
 
 
@@ -83,6 +82,7 @@ class Fixation:
     dynamic_stiffness: complex
 
     def __post_init__(self) -> None:
+        """Reject a fixation that no k >= 0, m >= 0, c >= 0 gives (Eq. 66)."""
         d = complex(self.dynamic_stiffness)
         if math.isnan(self.kappa) or self.kappa < 0:
             raise ValueError(f"kappa must be a non-negative number or inf, got {self.kappa!r}")
@@ -95,19 +95,19 @@ class Fixation:
             )
 
     @classmethod
-    def rigid(cls) -> "Fixation":
+    def rigid(cls) -> Fixation:
         """Rigid fixation, k/(E* R) -> infinity (Sec. 3.1.2)."""
         return cls(math.inf, complex(math.inf, 0.0))
 
     @classmethod
-    def free(cls, beta: float) -> "Fixation":
+    def free(cls, beta: float) -> Fixation:
         """Free indenter under its dead weight, k = c = 0 (Sec. 3.1.3): d = -beta, beta = m omega^2/(E* R) > 0."""
         if not (math.isfinite(beta) and beta > 0):
             raise ValueError(f"beta = m omega^2/(E* R) must be a positive number, got {beta!r}")
         return cls(0.0, complex(-beta, 0.0))
 
     @classmethod
-    def spring_mass_dashpot(cls, kappa: float, omega_bar: float, zeta: float) -> "Fixation":
+    def spring_mass_dashpot(cls, kappa: float, omega_bar: float, zeta: float) -> Fixation:
         """Spring k, mass m, dashpot c: d = kappa (1 - omega_bar^2 + 2 i zeta omega_bar) (Eqs. 65–66).
 
         omega_bar = 1, zeta = 0 gives d = 0 exactly: the anti-resonance of Appendix B.
@@ -120,6 +120,7 @@ class Fixation:
 
     @property
     def is_rigid(self) -> bool:
+        """kappa = inf: the rigid fixation of Sec. 3.1.2."""
         return math.isinf(self.kappa)
 
     def contact_resonance(self, chi0: float) -> float | None:
@@ -169,7 +170,9 @@ def mean_indentation(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
 
 
 def internal_variable(abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz) -> float:
-    """Abar on the amplitude equation (II) at a given abar_m: the root of |Jc1(Abar)| = target,
+    """Abar on the amplitude equation (II) at a given abar_m.
+
+    The root of |Jc1(Abar)| = target,
 
         target = eta1 |d| / (c_o^2 abar_m^(1/2) |d + 2 c_o abar_m|)
 
@@ -308,8 +311,10 @@ def steady_states(
 def _check_steady_state_inputs(
     law: GentSchultz, chi0: float, mu: float, base_offset: float, abar_min: float, omega_check: float
 ) -> None:
-    """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 81, 105) with a ValueError
-    (a TypeError for a law other than Gent–Schultz, Eqs. 73–75)."""
+    """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 81, 105).
+
+    ValueError, or TypeError for a law other than Gent–Schultz (Eqs. 73–75).
+    """
     if not isinstance(law, GentSchultz):
         raise TypeError("steady_states needs the Gent–Schultz law: the scan's end rests on its monotone J0 and |Jc1|")
     if not (math.isfinite(chi0) and chi0 > 0):
@@ -334,8 +339,11 @@ class MeanBalance(NamedTuple):
 
 
 def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
-    """(F, Abar, J0) at abar_m = e^z: Abar solves the amplitude equation (II) (Eq. 43, :func:`internal_variable`),
-    J0 = J0(Abar) (Eq. 28) and F is the mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`)."""
+    """(F, Abar, J0) at abar_m = e^z along the amplitude equation (II) (Eqs. 43, 54).
+
+    Abar solves (II) (Eq. 43, :func:`internal_variable`), J0 = J0(Abar) (Eq. 28) and F is the
+    mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`).
+    """
     abar_m = math.exp(z)
     abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law)
     j0 = float(j_integrals_for_law(abar, balance.law)[0])
@@ -348,16 +356,22 @@ def balance_residual(z: float, balance: MeanBalance) -> float:
 
 
 def monotone_tail_start(fixation: Fixation, chi0: float) -> float:
-    """abar_turn = max(0, -Re d/(2 c_o)) (0 for a rigid fixation): beyond it the target of the amplitude
-    equation (II) decreases strictly with abar_m (Eqs. 43, 86; proof in :func:`steady_states`)."""
+    """abar_turn = max(0, -Re d/(2 c_o)), 0 for a rigid fixation (Eqs. 43, 86).
+
+    Beyond it the target of the amplitude equation (II) decreases strictly with abar_m (proof in
+    :func:`steady_states`).
+    """
     if fixation.is_rigid:
         return 0.0
     return max(0.0, -complex(fixation.dynamic_stiffness).real / (2.0 * contact_radius_ratio(chi0)))
 
 
 def in_monotone_tail(z: float, j0: float, abar_turn: float) -> bool:
-    """abar_m = e^z > abar_turn and abar_m^(3/2) >= (3/4) J0: from here on the residual of the mean balance (III)
-    increases strictly along (II) (Eqs. 43, 54; proof in :func:`steady_states`)."""
+    """abar_m = e^z > abar_turn and abar_m^(3/2) >= (3/4) J0 (Eqs. 43, 54).
+
+    From here on the residual of the mean balance (III) increases strictly along (II) (proof in
+    :func:`steady_states`).
+    """
     return math.exp(z) > abar_turn and math.exp(1.5 * z) >= 0.75 * j0
 
 
@@ -385,8 +399,9 @@ def approach_resonance(
 def scan_segments(
     balance: MeanBalance, z_min: float, z_res: float | None, abar_turn: float, what: str
 ) -> list[list[tuple[float, float]]]:
-    """Nodes (z, F), ascending, of each pole-free segment of the residual F of the mean balance (III) along the
-    amplitude equation (II) (Eqs. 43, 54) in z = ln abar_m.
+    """Nodes (z, F), ascending, of each pole-free segment of the scan of F in z = ln abar_m (Eqs. 43, 54).
+
+    F is the residual of the mean balance (III) along the amplitude equation (II).
 
     From ``z_min`` in steps of ``SCAN_STEP``; split at the contact resonance ``z_res`` (``None``: none above
     z_min) and refined towards it from both sides (:func:`approach_resonance`); ended at the first node in the
@@ -430,8 +445,11 @@ def bracket_tail_root(residual: Callable[[float], float], z: float, f: float, wh
 def polish_root(
     residual: Callable[[float], float], lo: float, hi: float, increasing: bool, what: str
 ) -> tuple[float, bool]:
-    """(abar_m, stable) of the root of F in z = ln abar_m in (lo, hi], F changing sign there (Brent's method,
-    :func:`solve_log_increasing`); stable = ``increasing``, F of the mean balance (III) (Eq. 54) rising through it."""
+    """(abar_m, stable) of the root of F in z = ln abar_m in (lo, hi], F changing sign there (Eq. 54).
+
+    Brent's method (:func:`solve_log_increasing`); stable = ``increasing``, F of the mean balance (III)
+    rising through the root.
+    """
     sign = 1.0 if increasing else -1.0
     return solve_log_increasing(lambda t: sign * residual(t), what=what, z_start=lo, z_min=lo, z_max=hi), increasing
 
@@ -439,10 +457,13 @@ def polish_root(
 def roots_in_segment(
     residual: Callable[[float], float], nodes: list[tuple[float, float]], what: str
 ) -> list[tuple[float, bool]]:
-    """(abar_m, stable) of the roots of F (the mean balance (III) along (II), Eqs. 43, 54) on the nodes (z, F)
-    of one pole-free segment, ascending: each sign change is polished (:func:`polish_root`), and at each discrete
-    minimum of |F| without a sign change F is driven towards zero by a bounded minimisation; if it crosses zero,
-    the two roots inside the two cells are polished as well."""
+    """(abar_m, stable) of the roots of F on the nodes (z, F) of one pole-free segment (Eqs. 43, 54).
+
+    F is the mean balance (III) along (II); roots ascending. Each sign change is polished
+    (:func:`polish_root`), and at each discrete minimum of |F| without a sign change F is driven towards
+    zero by a bounded minimisation; if it crosses zero, the two roots inside the two cells are polished
+    as well.
+    """
     zs = [node[0] for node in nodes]
     fs = [node[1] for node in nodes]
     roots: list[tuple[float, bool]] = []
@@ -451,7 +472,7 @@ def roots_in_segment(
             roots.append(polish_root(residual, zs[i], zs[i + 1], fs[i] < 0, what))
         elif 0 < i and (fs[i - 1] >= 0) == (fs[i] >= 0) and abs(fs[i]) < min(abs(fs[i - 1]), abs(fs[i + 1])):
             sign = 1.0 if fs[i] >= 0 else -1.0
-            extremum = minimize_scalar(lambda t: sign * residual(t), bounds=(zs[i - 1], zs[i + 1]),
+            extremum = minimize_scalar(_signed, bounds=(zs[i - 1], zs[i + 1]), args=(residual, sign),
                                        method="bounded", options={"xatol": 1e-10})
             if extremum.fun < 0:
                 roots.append(polish_root(residual, zs[i - 1], extremum.x, fs[i] < 0, what))
@@ -459,9 +480,17 @@ def roots_in_segment(
     return roots
 
 
+def _signed(z: float, residual: Callable[[float], float], sign: float) -> float:
+    """sign F(z): the residual of the mean balance (Eq. 54) or its negative, for a minimisation towards zero."""
+    return sign * residual(z)
+
+
 def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_check: float) -> SteadyState:
-    """The steady state at a root abar_m of the mean balance: Abar (Eq. 43), J0 (Eq. 28), w_eff/w0 = J0^2
-    (Eq. 49), A/a_m (Eq. 45, docs/errata.md E1), P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86)."""
+    """The steady state at a root abar_m of the mean balance (Sec. 3.1).
+
+    Abar (Eq. 43), J0 (Eq. 28), w_eff/w0 = J0^2 (Eq. 49), A/a_m (Eq. 45, docs/errata.md E1),
+    P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86).
+    """
     _, abar, j0 = balance_state(math.log(abar_m), balance)
     return SteadyState(
         abar_m=abar_m,

@@ -76,7 +76,8 @@ class PulloffEstimate(NamedTuple):
     ratio: NDArray[np.float64]
 
     @classmethod
-    def from_abar(cls, abar_cr: NDArray[np.float64], law: RateLaw) -> "PulloffEstimate":
+    def from_abar(cls, abar_cr: NDArray[np.float64], law: RateLaw) -> PulloffEstimate:
+        """The estimate at Abar_cr: J0 there (Eq. 28) and the ratio J0^2 (Eq. 71)."""
         j0 = j_integrals_for_law(abar_cr, law)[0]
         return cls(abar_cr, j0, j0**2)
 
@@ -113,8 +114,11 @@ def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixa
 
 
 def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> PulloffEstimate:
-    """Leading-order pull-off estimate, vectorised over eta1: Eqs. (71)–(72) for rigid fixation (``None``),
-    Eqs. (67)–(69) and (71) for any other (:func:`critical_abar_leading`)."""
+    """Leading-order pull-off estimate, vectorised over eta1 (Eqs. 67–72).
+
+    Eqs. (71)–(72) for rigid fixation (``None``), Eqs. (67)–(69) and (71) for any other
+    (:func:`critical_abar_leading`).
+    """
     eta1 = np.asarray(eta1, dtype=float)
     abar = np.vectorize(lambda e: critical_abar_leading(e, chi0, law, fixation), otypes=[float])(eta1)
     return PulloffEstimate.from_abar(abar, law)
@@ -154,9 +158,11 @@ def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw,
 def critical_log_excess(
     log_abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw
 ) -> NDArray[np.float64]:
-    """g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)], z = ln Abar: (IV) of the module docstring
-    in logarithms, i.e. half the logarithm of the printed Eq. (67) (with Eqs. 68–69) over eta1^2; for a
-    rigid fixation (T = 1) ln of the left-hand side of Eq. (72) over its right-hand side.
+    """g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)], z = ln Abar (Eqs. 67–69, 72).
+
+    (IV) of the module docstring in logarithms, i.e. half the logarithm of the printed Eq. (67) (with
+    Eqs. 68–69) over eta1^2; for a rigid fixation (T = 1) ln of the left-hand side of Eq. (72) over its
+    right-hand side.
 
     abar_cr = :func:`pulloff_closure` (J0) (Eqs. 61, 86). Vectorised over ``log_abar`` (1-d).
     """

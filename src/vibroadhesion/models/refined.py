@@ -38,8 +38,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
-from vibroadhesion.models.leading_pulloff import PulloffEstimate, pulloff_closure
 from vibroadhesion.core.ratelaw import RateLaw
+from vibroadhesion.models.leading_pulloff import PulloffEstimate, pulloff_closure
 from vibroadhesion.numerics.roots import solve_log_increasing
 
 Array = NDArray[np.float64]

@@ -31,12 +31,16 @@ Array = NDArray[np.float64]
 
 
 class DynamicStiffness(NamedTuple):
+    """Dynamic contact stiffness S* = S' + i S'' relative to 2 E* a_m, and its phase (Eqs. 117–121)."""
+
     storage_rel: Array  # S' / (2 E* a_m)
     loss_rel: Array  # S'' / (2 E* a_m)
     phase_rad: Array  # arg S* = atan2(S'', S')
 
 
-def dynamic_stiffness(abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> DynamicStiffness:
+def dynamic_stiffness(
+    abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw
+) -> DynamicStiffness:
     """Storage and loss stiffness relative to 2 E* a_m and the phase, Eqs. (117)–(121).
 
     ``abar`` must be positive: at zero amplitude the ratio of Eq. (120) is 0/0 and its limit
