@@ -36,16 +36,13 @@ from vibroadhesion.models.leading_order import (
     SCAN_STEP,
     Fixation,
     MeanBalance,
-    approach_resonance,
     balance_state,
-    bracket_tail_root,
     fixation_transmissibility,
     in_monotone_tail,
     indentation_amplitude,
     internal_variable,
     mean_balance_residual,
     monotone_tail_start,
-    roots_in_segment,
     scan_segments,
     steady_states,
 )
@@ -540,56 +537,6 @@ def test_monotone_tail_start_and_criterion_follow_the_closed_forms() -> None:
     z_jkr = math.log(0.75 ** (2 / 3))
     assert in_monotone_tail(z_jkr + 1e-12, 1.0, 0.0) and not in_monotone_tail(z_jkr - 1e-12, 1.0, 0.0)
     assert not in_monotone_tail(math.log(above) - 1e-12, 1.0, above) and in_monotone_tail(math.log(above) + 1e-12, 1.0, above)
-
-
-def test_approach_resonance_halves_towards_a_pole_until_the_residual_falls() -> None:
-    """Closed form F(z) = 1 - 1e-4/(z - z_res)^2, a pole with F -> -infinity: the nodes are z_res + side h 2^-j,
-    h = SCAN_STEP = 0.05, and the first with F < min(F(previous), 0) is j = 3 (h 2^-j < 0.01 first for j = 3),
-    from either side. A residual that never falls (F = 1) raises NoRootError."""
-    z_res = 0.7
-
-    def pole(z: float) -> float:
-        return 1.0 - 1e-4 / (z - z_res) ** 2
-
-    assert SCAN_STEP == 0.05
-    for side in (-1.0, 1.0):
-        nodes = approach_resonance(pole, z_res, side, "pole")
-        assert [z for z, _ in nodes] == [z_res + side * 0.05 * 2.0**-j for j in (1, 2, 3)]
-        assert [f for _, f in nodes] == pytest.approx([1.0 - 1e-4 / (0.05 * 2.0**-j) ** 2 for j in (1, 2, 3)], rel=1e-12)
-    with pytest.raises(NoRootError, match="does not fall"):
-        approach_resonance(lambda z: 1.0, z_res, 1.0, "flat")
-
-
-def test_bracket_tail_root_doubles_the_step_until_the_residual_is_non_negative() -> None:
-    """Closed form F(z) = z - 3 from z = 0: the bracket ends are 0.05 (2^k - 1); the first hi >= 3 is
-    0.05 * 63 = 3.15 with lo = 0.05 * 31 = 1.55 (relative 1e-14: sums of a few binary fractions of 0.05).
-    F(z) >= 0 at the start gives None; a residual that stays negative raises NoRootError."""
-    lo, hi = bracket_tail_root(lambda z: z - 3.0, 0.0, -3.0, "line")
-    assert lo == pytest.approx(1.55, rel=1e-14) and hi == pytest.approx(3.15, rel=1e-14)
-    assert bracket_tail_root(lambda z: z - 3.0, 3.0, 0.0, "line") is None
-    with pytest.raises(NoRootError, match="representable"):
-        bracket_tail_root(lambda z: -1.0, 0.0, -1.0, "negative")
-
-
-@pytest.mark.parametrize(
-    ("residual", "expected"),
-    [
-        (lambda z: (z - 0.51) * (z - 0.52), [(0.51, False), (0.52, True)]),  # two roots hidden in one cell
-        (lambda z: z - 0.33, [(0.33, True)]),
-        (lambda z: 0.33 - z, [(0.33, False)]),
-        (lambda z: (z - 0.51) * (z - 0.52) + 1e-3, []),  # a minimum of |F| without roots
-        (lambda z: (z - 0.2) * (z - 0.51) * (z - 0.52), [(0.2, True), (0.51, False), (0.52, True)]),
-    ],
-)
-def test_roots_in_segment_finds_sign_changes_and_pairs_hidden_in_one_cell(residual, expected) -> None:
-    """Closed-form residuals on the nodes z = 0, 0.05, ..., 1: every root e^z0 with its stability (F increasing
-    through it), including the pair 0.51, 0.52 that leaves no sign change at the nodes. Tolerance 1e-12 relative
-    in abar_m: Brent's method in z to 1e-14 absolute (numerics.roots)."""
-    nodes = [(z, residual(z)) for z in 0.05 * np.arange(21)]
-    roots = roots_in_segment(residual, nodes, "closed form")
-    assert [stable for _, stable in roots] == [stable for _, stable in expected]
-    for (abar_m, _), (z0, _) in zip(roots, expected):
-        assert abar_m == pytest.approx(math.exp(z0), rel=1e-12)
 
 
 @pytest.mark.parametrize("fixation", [Fixation.rigid(), Fixation.free(0.3), Fixation.spring_mass_dashpot(0.1, 2.0, 0.05)])

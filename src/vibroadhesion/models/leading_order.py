@@ -51,21 +51,24 @@ from (II) and P_m = m g, Eq. (59).
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import dataclass
 from functools import partial
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import minimize_scalar
 
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
-
-# --- Steady state for any fixation of the indenter, Sec. 3.1 (Eqs. 43, 47–59) -------------------
+from vibroadhesion.numerics.scan import (
+    Node,
+    approach_pole,
+    bracket_increasing_root,
+    polish_sign_change,
+    roots_on_nodes,
+)
 
 
 @dataclass(frozen=True)
@@ -261,10 +264,9 @@ def steady_states(
     (:func:`balance_state`). F is scanned on a grid of step ``SCAN_STEP`` in ln abar_m
     (:func:`scan_segments`); each sign change is polished by Brent's method, and each interior
     extremum of |F| without a sign change is maximised to catch two roots inside one cell
-    (:func:`roots_in_segment`). Where d is real and negative, (II) has a pole at the contact resonance
+    (:mod:`vibroadhesion.numerics.scan`). Where d is real and negative, (II) has a pole at the contact resonance
     (:meth:`Fixation.contact_resonance`) where Abar and J0 -> infinity, so F -> -infinity: the
-    scan is split there and refined geometrically towards it until F < 0 and decreasing
-    (:func:`approach_resonance`).
+    scan is split there and refined geometrically towards it until F < 0 and decreasing.
 
     End of the scan (a proof, not a cut-off). Beyond abar_turn = max(0, -Re d/(2 c_o)) (0 for rigid
     fixation) the target of (II) decreases strictly with abar_m, since
@@ -274,7 +276,7 @@ def steady_states(
     a condition that, x^(3/2)/J0 rising, persists. So F increases strictly beyond the first grid
     point past abar_turn where x^(3/2) >= (3/4) J0, and from there at most one root remains; it
     exists iff F < 0 there and is bracketed by doubling the step (:func:`monotone_tail_start`,
-    :func:`in_monotone_tail`, :func:`bracket_tail_root`). Below ``abar_min`` (a_m far
+    :func:`in_monotone_tail`). Below ``abar_min`` (a_m far
     below the JKR scale a_o, where with vibration Abar -> infinity) roots are not sought.
 
     Multiplicity and stability. In the static limit (J0 = 1) (III) is, in s = abar_m^(1/2),
@@ -296,10 +298,10 @@ def steady_states(
     z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
     segments = scan_segments(balance, math.log(abar_min), z_res, abar_turn, what)
     residual = partial(balance_residual, balance=balance)
-    tail_root_bracket = bracket_tail_root(residual, *segments[-1][-1], what)
-    roots = [root for nodes in segments for root in roots_in_segment(residual, nodes, what)]
+    tail_root_bracket = bracket_increasing_root(residual, *segments[-1][-1], SCAN_STEP, what)
+    roots = [root for nodes in segments for root in roots_on_nodes(residual, nodes, what)]
     if tail_root_bracket is not None:
-        roots.append(polish_root(residual, *tail_root_bracket, True, what))
+        roots.append(polish_sign_change(residual, *tail_root_bracket, True, what))
     if not roots:
         raise NoRootError(
             f"{what}: no steady state with abar_m >= {abar_min:.3g} (mu = {mu:.6g}, base offset = {base_offset:.6g}); "
@@ -375,47 +377,30 @@ def in_monotone_tail(z: float, j0: float, abar_turn: float) -> bool:
     return math.exp(z) > abar_turn and math.exp(1.5 * z) >= 0.75 * j0
 
 
-def approach_resonance(
-    residual: Callable[[float], float], z_res: float, side: float, what: str
-) -> list[tuple[float, float]]:
-    """Nodes (z, F) at z = z_res + side SCAN_STEP 2^-j, j = 1, 2, ..., until F < 0 and decreasing towards z_res.
-
-    z_res = ln abar_m at the contact resonance, the pole of the amplitude equation (II) (Eq. 43 with
-    d + 2 c_o abar_m = 0, :meth:`Fixation.contact_resonance`), where Abar and J0 -> infinity and the residual
-    of the mean balance (III) -> -infinity; ``side`` is -1 (from below) or +1 (from above). Raises
-    :class:`NoRootError` when F has not fallen after ``_RESONANCE_REFINEMENTS`` halvings.
-    """
-    nodes: list[tuple[float, float]] = []
-    previous = residual(z_res + side * SCAN_STEP)
-    for j in range(1, _RESONANCE_REFINEMENTS + 1):
-        z = z_res + side * SCAN_STEP * 2.0**-j
-        nodes.append((z, residual(z)))
-        if nodes[-1][1] < min(previous, 0.0):
-            return nodes
-        previous = nodes[-1][1]
-    raise NoRootError(f"{what}: residual does not fall towards the contact resonance abar_m = {math.exp(z_res):.6g}")
-
-
 def scan_segments(
     balance: MeanBalance, z_min: float, z_res: float | None, abar_turn: float, what: str
-) -> list[list[tuple[float, float]]]:
+) -> list[list[Node]]:
     """Nodes (z, F), ascending, of each pole-free segment of the scan of F in z = ln abar_m (Eqs. 43, 54).
 
     F is the residual of the mean balance (III) along the amplitude equation (II).
 
     From ``z_min`` in steps of ``SCAN_STEP``; split at the contact resonance ``z_res`` (``None``: none above
-    z_min) and refined towards it from both sides (:func:`approach_resonance`); ended at the first node in the
-    monotone tail (:func:`in_monotone_tail`), which is the last node of the last segment.
+    z_min) and refined towards it from both sides (:func:`vibroadhesion.numerics.scan.approach_pole`);
+    ended at the first node in the monotone tail (:func:`in_monotone_tail`), which is the last node of the
+    last segment.
     """
     residual = partial(balance_residual, balance=balance)
-    segments: list[list[tuple[float, float]]] = []
+    segments: list[list[Node]] = []
     z = z_min
     if z_res is not None:
         grid = z_min + SCAN_STEP * np.arange(max(0, math.ceil((z_res - z_min) / SCAN_STEP) - 1))
         below = [(float(node), residual(float(node))) for node in grid]
-        segments.append([node for node in below + approach_resonance(residual, z_res, -1.0, what) if node[0] >= z_min])
+        to_pole = approach_pole(residual, z_res, -1.0, SCAN_STEP, _RESONANCE_REFINEMENTS, what)
+        segments.append([node for node in below + to_pole if node[0] >= z_min])
         z = z_res + SCAN_STEP
-    above = approach_resonance(residual, z_res, +1.0, what)[::-1] if z_res is not None else []
+    above: list[Node] = []
+    if z_res is not None:
+        above = approach_pole(residual, z_res, +1.0, SCAN_STEP, _RESONANCE_REFINEMENTS, what)[::-1]
     while True:
         f, _, j0 = balance_state(z, balance)
         above.append((z, f))
@@ -424,65 +409,6 @@ def scan_segments(
         z += SCAN_STEP
     segments.append(above)
     return segments
-
-
-def bracket_tail_root(residual: Callable[[float], float], z: float, f: float, what: str) -> tuple[float, float] | None:
-    """(lo, hi) with F(lo) < 0 <= F(hi), hi - lo doubling from SCAN_STEP, or ``None`` when f = F(z) >= 0.
-
-    z is the start of the monotone tail (:func:`in_monotone_tail`), where the residual of the mean balance
-    (III) along (II) (Eqs. 43, 54) increases strictly: one root beyond z if f < 0, none otherwise.
-    """
-    if not f < 0:
-        return None
-    lo, step = z, SCAN_STEP
-    while residual(lo + step) < 0:
-        lo, step = lo + step, 2.0 * step
-        if lo > math.log(np.finfo(float).max) / 3:
-            raise NoRootError(f"{what}: mean balance not reached for any representable abar_m")
-    return lo, lo + step
-
-
-def polish_root(
-    residual: Callable[[float], float], lo: float, hi: float, increasing: bool, what: str
-) -> tuple[float, bool]:
-    """(abar_m, stable) of the root of F in z = ln abar_m in (lo, hi], F changing sign there (Eq. 54).
-
-    Brent's method (:func:`solve_log_increasing`); stable = ``increasing``, F of the mean balance (III)
-    rising through the root.
-    """
-    sign = 1.0 if increasing else -1.0
-    return solve_log_increasing(lambda t: sign * residual(t), what=what, z_start=lo, z_min=lo, z_max=hi), increasing
-
-
-def roots_in_segment(
-    residual: Callable[[float], float], nodes: list[tuple[float, float]], what: str
-) -> list[tuple[float, bool]]:
-    """(abar_m, stable) of the roots of F on the nodes (z, F) of one pole-free segment (Eqs. 43, 54).
-
-    F is the mean balance (III) along (II); roots ascending. Each sign change is polished
-    (:func:`polish_root`), and at each discrete minimum of |F| without a sign change F is driven towards
-    zero by a bounded minimisation; if it crosses zero, the two roots inside the two cells are polished
-    as well.
-    """
-    zs = [node[0] for node in nodes]
-    fs = [node[1] for node in nodes]
-    roots: list[tuple[float, bool]] = []
-    for i in range(len(nodes) - 1):
-        if (fs[i] >= 0) != (fs[i + 1] >= 0):
-            roots.append(polish_root(residual, zs[i], zs[i + 1], fs[i] < 0, what))
-        elif 0 < i and (fs[i - 1] >= 0) == (fs[i] >= 0) and abs(fs[i]) < min(abs(fs[i - 1]), abs(fs[i + 1])):
-            sign = 1.0 if fs[i] >= 0 else -1.0
-            extremum = minimize_scalar(_signed, bounds=(zs[i - 1], zs[i + 1]), args=(residual, sign),
-                                       method="bounded", options={"xatol": 1e-10})
-            if extremum.fun < 0:
-                roots.append(polish_root(residual, zs[i - 1], extremum.x, fs[i] < 0, what))
-                roots.append(polish_root(residual, extremum.x, zs[i + 1], fs[i] >= 0, what))
-    return roots
-
-
-def _signed(z: float, residual: Callable[[float], float], sign: float) -> float:
-    """sign F(z): the residual of the mean balance (Eq. 54) or its negative, for a minimisation towards zero."""
-    return sign * residual(z)
 
 
 def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_check: float) -> SteadyState:
