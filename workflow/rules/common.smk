@@ -18,6 +18,17 @@ def code(*modules):
     return [str(next(Path("src/vibroadhesion").glob(f"*/{m}.py"))) for m in modules] + ["environment.lock"]
 
 
-NUMERICS = ["ratelaw", "integrals", "roots", "scan", "groups", "jkr", "leading_order", "leading_pulloff", "refined", "pulloff"]
+NUMERICS = [
+    "ratelaw",
+    "integrals",
+    "roots",
+    "scan",
+    "groups",
+    "jkr",
+    "leading_order",
+    "leading_pulloff",
+    "refined",
+    "pulloff",
+]
 #: The simulation sub-package, module by module (model -> integrators -> orbits -> shooting).
 SIMULATION = ["model", "integrators", "orbits", "shooting"]
