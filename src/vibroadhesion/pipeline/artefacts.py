@@ -1,7 +1,6 @@
-"""Deterministic writers for the pipeline's artefacts (CSV, JSON, PDF, PNG).
+"""Deterministic writers for the pipeline's tables (CSV, JSON); figures: :func:`vibroadhesion.pipeline.figures.save_figure`.
 
-Same inputs give the same bytes: CSVs use a fixed float format and line ending, figures are
-saved without timestamps or software versions in their metadata, and every file is written
+Same inputs give the same bytes: CSVs use a fixed float format and line ending, and every file is written
 to a temporary name in its folder and moved into place, so a failed step leaves no partial
 output behind.
 """
@@ -14,28 +13,10 @@ import tempfile
 from collections.abc import Callable
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Iterator
+from typing import TYPE_CHECKING, Any, Iterator
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import pandas as pd  # noqa: E402
-
-STYLE = {
-    "font.size": 9,
-    "axes.grid": True,
-    "grid.alpha": 0.3,
-    "legend.fontsize": 7.5,
-    "figure.dpi": 100,
-    "savefig.dpi": 200,
-    "path.simplify": False,
-    "svg.hashsalt": "vibroadhesion",
-}
-plt.rcParams.update(STYLE)
-
-_PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
-_PNG_METADATA = {"Software": None}
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 @contextmanager
@@ -66,10 +47,3 @@ def write_csv(table: pd.DataFrame, path: str | Path) -> None:
 def write_json(data: Any, path: str | Path) -> None:
     """Indented JSON with sorted keys and a final newline."""
     _write_with(path, lambda tmp: tmp.write_text(json.dumps(data, indent=2, sort_keys=True, allow_nan=False) + "\n"))
-
-
-def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
-    """Save ``fig`` as PDF and PNG without time stamps, then close it."""
-    _write_with(pdf, lambda tmp: fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight"))
-    _write_with(png, lambda tmp: fig.savefig(tmp, format="png", metadata=_PNG_METADATA, bbox_inches="tight"))
-    plt.close(fig)
