@@ -10,6 +10,7 @@ Plot steps alone import matplotlib (:mod:`vibroadhesion.pipeline.figures`).
 from __future__ import annotations
 
 import sys
+import traceback
 from collections.abc import Iterator
 from contextlib import contextmanager, redirect_stderr, redirect_stdout
 from pathlib import Path
@@ -22,7 +23,8 @@ EXPECTED_FAILURES = (ValueError, ArithmeticError, RuntimeError)
 @contextmanager
 def logged(log: str | Path, step: str) -> Iterator[None]:
     """Send the step's output to ``log``; on an expected failure write one line to the log and to
-    the terminal (``error: <step>: <message>``) and exit with status 1.
+    the terminal (``error: <step>: <message>``) and exit with status 1. Any other exception (a bug)
+    goes to the log with its traceback and propagates (Python prints it on the terminal too).
 
     The writers are atomic (:mod:`vibroadhesion.pipeline.artefacts`), so a failed step leaves no
     partial output; Snakemake removes the complete outputs of a failed job.
@@ -35,3 +37,6 @@ def logged(log: str | Path, step: str) -> Iterator[None]:
             print(line, file=stream)
             print(line, file=sys.__stderr__)
             raise SystemExit(1) from None
+        except Exception:
+            traceback.print_exc(file=stream)
+            raise
