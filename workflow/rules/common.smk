@@ -5,15 +5,15 @@ import yaml
 
 from vibroadhesion.pipeline.imports import import_closure
 
-# A rule runs workflow/scripts/<rule>.py with `script:`; Snakemake executes it with the interpreter that
-# runs Snakemake (sys.executable: the project's .venv, activated or not). Shell rules use the same one.
+# Each step is workflow/scripts/<name>.py, run by `script:` with the interpreter that runs Snakemake
+# (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
 PYTHON = sys.executable
 
 FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
 
 def _rig_values(group, entry):
-    """A list of data/setup.yaml (validated by rule ingest) as wildcard values: 200.0 -> "200"."""
+    """A list of data/setup.yaml (validated by the ingest step) as wildcard values, 200.0 -> "200"."""
     with open(config["data"]["setup"], encoding="utf-8") as stream:
         return [f"{float(v):g}" for v in yaml.safe_load(stream)[group][entry]["value"]]
 
@@ -24,11 +24,31 @@ AMPLITUDES = _rig_values("test_conditions", "amplitudes")
 
 
 def code(*sources):
-    """What a rule runs, as inputs: the adapter scripts (workflow/scripts/<name>.py) or other scripts and
+    """The code a job runs, as inputs: the adapter scripts (workflow/scripts/<name>.py) or other scripts and
     notebooks named, every package module they import (vibroadhesion.pipeline.imports), and the lock.
-    Editing any of them reruns the rule; a module the rule does not import cannot."""
-    paths = [s if "/" in s else f"workflow/scripts/{s}.py" for s in sources]
+    Editing any of them reruns the job; a module its step does not import cannot."""
+    paths = [s if s.endswith((".py", ".ipynb")) else f"workflow/scripts/{s}.py" for s in sources]
     return import_closure(paths) + ["environment.lock"]
+
+
+# The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
+TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
+
+
+def page_inputs(wildcards):
+    """The artefacts a page reads (its papermill parameters), and the rule timings for the benchmarks page."""
+    inputs = dict(PAGE_INPUTS[wildcards.page])
+    if wildcards.page == "benchmarks":
+        inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
+    return inputs
+
+
+def page_parameters(wildcards):
+    """papermill parameters: the path of every artefact the page reads (strings)."""
+    parameters = {name: str(path) for name, path in PAGE_INPUTS[wildcards.page].items()}
+    if wildcards.page == "benchmarks":
+        parameters["rule_tsv_glob"] = "results/benchmarks/rules/*.tsv"
+    return parameters
 
 
 # Snakemake 9 runs a Python `script:` as `{py_exec} {fname:q}` with the interpreter unquoted, so every such

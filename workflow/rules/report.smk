@@ -23,26 +23,6 @@ PAGE_INPUTS = {
                    "simulate_txt": rules.benchmark_simulate.output[0], "speed_txt": rules.benchmark_speed_vs_error.output.txt,
                    "speed_png": rules.benchmark_speed_vs_error.output.png},
 }
-# The benchmarks page also lists the wall time of every rule with a `benchmark:` of the default target.
-TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
-
-
-def page_inputs(wildcards):
-    """The artefacts a page reads (its papermill parameters), and the rule timings for the benchmarks page."""
-    inputs = dict(PAGE_INPUTS[wildcards.page])
-    if wildcards.page == "benchmarks":
-        inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
-    return inputs
-
-
-def page_parameters(wildcards):
-    """papermill parameters: the path of every artefact the page reads (strings)."""
-    parameters = {name: str(path) for name, path in PAGE_INPUTS[wildcards.page].items()}
-    if wildcards.page == "benchmarks":
-        parameters["rule_tsv_glob"] = "results/benchmarks/rules/*.tsv"
-    return parameters
-
-
 rule report_page:
     """Execute one report notebook on the pipeline's artefacts and export it to a self-contained HTML page."""
     input:
