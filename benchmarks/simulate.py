@@ -1,4 +1,4 @@
-"""Benchmark: periodic steady states of the full model by shooting (vibroadhesion.simulation.simulate).
+"""Benchmark: periodic steady states of the full model by shooting (vibroadhesion.simulation).
 
 Usage: python benchmarks/simulate.py [OUT_TXT]
 
@@ -22,7 +22,7 @@ import numpy as np
 
 from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.simulation.simulate import BaseExcitation, SpringFixation, steady_state, transient
+from vibroadhesion.simulation import BaseExcitation, SpringFixation, steady_state, transient
 
 CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5
 FIELDS = ("abar_m", "abar", "w_eff_ratio", "pm_over_abs_pjkr")

@@ -14,6 +14,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import CHI0, ETA1, N_PUBLISHED, NU0, OMEGA_BAR_200HZ
 from scipy.optimize import root
 from mpmath_reference import j_integrals_mp
 
@@ -34,8 +35,7 @@ from vibroadhesion.core.integrals import j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 
-CHI0, ETA1, NU0 = 2.589e-2, 3.883e-4, 1.227e-5  # paper, Sec. 3.5.3 (Fig. 5 caption)
-LAW = GentSchultz(0.531)
+LAW = GentSchultz(N_PUBLISHED)
 SCAN = np.linspace(-40.0, 40.0, 4001)  # ln Abar grid of the independent root scan
 FOLDING = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.0)  # the folded curve of Fig. 5
 
@@ -128,7 +128,7 @@ def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
         abar_m, abar = newton_at_frequency(omega_bar, FOLDING, LAW, (static, 1e-14))
         assert abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
-    curves, _, _ = fig5_tables(FOLDING, [1e-3], [0.0], 0.531, {}, (0.1, 50.0), 20)
+    curves, _, _ = fig5_tables(FOLDING, [1e-3], [0.0], N_PUBLISHED, {}, (0.1, 50.0), 20)
     exact = curves[curves["branch"] == "anti-resonance"]
     assert len(exact) == 1 and exact["omega_bar"].iloc[0] == 1.0 and exact["Abar"].iloc[0] == 0.0
     assert exact["abar_m"].iloc[0] == static
@@ -146,7 +146,7 @@ def test_static_contact_radius_solves_eq_82() -> None:
 
 
 @pytest.mark.parametrize("zeta", [0.0, 0.05])
-@pytest.mark.parametrize("omega_bar", [0.5, 17.85, 40.0])
+@pytest.mark.parametrize("omega_bar", [0.5, OMEGA_BAR_200HZ, 40.0])
 def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, zeta: float) -> None:
     """kappa = 1e12: Eq. (87) -> abar_m^(3/2) = J0 (Eq. 123) and Eq. (90) -> Eq. (100), so the solution is
     Fig. 6's nominal point contact at omega_check = omega_bar/nu0; with a_m = a_cr it is Fig. 7's Eq. (106).
@@ -193,5 +193,5 @@ def test_soft_fixation_reproduces_the_free_indenter_eqs_57_to_59(beta: float) ->
     found = solutions_by_scan(omega_bar, p, LAW, SCAN)
     assert len(found) == 1
     abar_m, abar = found[0]
-    reference_am, reference_abar = free_indenter(beta, mu, 0.531, (1.1 * abar_m, 0.9 * abar))
+    reference_am, reference_abar = free_indenter(beta, mu, N_PUBLISHED, (1.1 * abar_m, 0.9 * abar))
     assert abs(abar_m / reference_am - 1) < 1e-6 and abs(abar / reference_abar - 1) < 1e-6, (found, reference_am, reference_abar)

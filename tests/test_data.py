@@ -8,6 +8,8 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
+from conftest import (AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, POISSON_RATIO, RADIUS, REDUCED_MODULUS,
+                      STORAGE_FACTOR, V0, W0, YOUNGS_MODULUS)
 from jsonschema import Draft202012Validator
 
 from vibroadhesion.pipeline import data
@@ -79,14 +81,14 @@ def test_schemas_are_valid_draft_2020_12(name: str) -> None:
 def test_shipped_setup_loads() -> None:
     setup = load_setup(SETUP_YAML)
     assert isinstance(setup, Setup)
-    assert setup.radius == 51.5e-3
-    assert setup.youngs_modulus == 2.8e6
-    assert setup.storage_modulus_factor == 2.0
-    assert setup.poisson_ratio == 0.5
+    assert setup.radius == RADIUS
+    assert setup.youngs_modulus == YOUNGS_MODULUS
+    assert setup.storage_modulus_factor == STORAGE_FACTOR
+    assert setup.poisson_ratio == POISSON_RATIO
     assert setup.density == 965.0 and setup.thickness == 0.02
-    assert setup.frequencies_hz == (200.0, 300.0, 400.0)
-    assert setup.amplitudes_um == (20.0, 40.0, 60.0, 80.0, 100.0)
-    assert (setup.w0, setup.n, setup.v0) == (0.236, 0.531, 44.5e-6)
+    assert setup.frequencies_hz == FREQUENCIES_HZ
+    assert setup.amplitudes_um == AMPLITUDES_UM
+    assert (setup.w0, setup.n, setup.v0) == (W0, N_PUBLISHED, V0)
     assert setup.sources["indenter.radius"].startswith("Sec. 3.4:")
     assert len(setup.sources) == 19 and all(s.strip() for s in setup.sources.values())
     # Fig. 5's amplitude and marked test frequency (its caption)
@@ -100,11 +102,11 @@ def test_shipped_setup_loads() -> None:
                               "simulated_stiffness_ratio_kappa": 0.001, "simulated_damping_ratio_zeta": 0.01}
     assert all(setup.sources[f"fixation.{k}"].startswith(("assumed", "derived")) for k in setup.fixation)
     assert setup.units["gent_schultz_published.v0"] == "m/s"
-    assert setup.values["test_conditions.frequencies"] == (200.0, 300.0, 400.0)
+    assert setup.values["test_conditions.frequencies"] == FREQUENCIES_HZ
 
 
 def test_shipped_reduced_modulus_closed_form() -> None:
-    assert load_setup(SETUP_YAML).reduced_modulus == pytest.approx(2 * 2.8e6 / (1 - 0.25), rel=1e-15)
+    assert load_setup(SETUP_YAML).reduced_modulus == pytest.approx(REDUCED_MODULUS, rel=1e-15)
 
 
 def test_shipped_pulloff_loads_empty_with_dtypes() -> None:
@@ -119,7 +121,7 @@ def test_main_on_shipped_files_writes_canonical_copies(tmp_path: Path) -> None:
     out_json, out_csv = tmp_path / "setup.json", tmp_path / "pulloff.csv"
     assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
     canonical = json.loads(out_json.read_text())
-    assert canonical["indenter"]["radius"] == {"value": 0.0515, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
+    assert canonical["indenter"]["radius"] == {"value": RADIUS, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
     assert out_csv.read_text() == HEADER + "\n"
     assert data.read_canonical_setup(out_json) == load_setup(SETUP_YAML)
     assert data.read_canonical_pulloff(out_csv).empty

@@ -19,6 +19,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import C_O, CHI0, N_PUBLISHED, RADIUS
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
@@ -34,9 +35,7 @@ from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact as j_model_nominal_point_contact
 
-CHI0 = 2.589e-2  # Sec. 3.5.3
-C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R, text below Eq. (86), written out independently
-N_VALUES = [0.05, 0.531, 1.0, 4.0]
+N_VALUES = [0.05, N_PUBLISHED, 1.0, 4.0]
 
 
 # ----------------------------------------------------------------- mpmath reference of the drift condition
@@ -95,7 +94,7 @@ def frozen_cycle_mp(beta: float, n: float, s_min_guess: float) -> tuple[mp.mpf, 
 
 CASES = {
     0.05: [1e-6, 1e-3, 0.1, 0.9, 10.0],
-    0.531: [1e-6, 1e-3, 0.1, 0.5, 2.0, 100.0],
+    N_PUBLISHED: [1e-6, 1e-3, 0.1, 0.5, 2.0, 100.0],
     1.0: [1e-6, 0.1, 0.9, 10.0],
     4.0: [1e-3, 0.5, 2.0, 3.0],
 }
@@ -118,7 +117,7 @@ def test_alpha_star_matches_30_digit_mpmath_root(n: float) -> None:
 
 def test_beta_zero_is_the_static_state_exactly_and_shapes_are_kept() -> None:
     """beta = 0: s = 1 at all times, so alpha* = 1 and Abar = 0 exactly; output shape = input shape."""
-    cycle = frozen_radius_cycle(np.zeros((2, 3)), GentSchultz(0.531))
+    cycle = frozen_radius_cycle(np.zeros((2, 3)), GentSchultz(N_PUBLISHED))
     assert cycle.alpha.shape == (2, 3)
     assert np.all(cycle.alpha == 1.0) and np.all(cycle.abar == 0.0) and np.all(cycle.sqrt_w_min == 1.0)
 
@@ -169,7 +168,7 @@ def large_beta_floor(beta: float, n: float) -> float:
     return float(q ** (-2 * mp.mpf(n) / (4 - n)) * mp.mpf(beta) ** (-(4 + mp.mpf(n)) / (4 - n)))
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0])
 def test_large_beta_asymptote_of_the_minimum_of_sqrt_w(n: float) -> None:
     """Reference: the beta -> infinity balance of the module docstring. Its relative error falls off
     (corrections O(beta^-2) from s^2 - 1 ~ s^2, and from the cut of the closing integral): the ratio
@@ -225,7 +224,7 @@ def periodic_state_by_integration(etahat: float, n: float, stiffness: float) -> 
     return float(np.trapezoid(abar, tau) / period), float(abar.max() - abar.min()) / 2
 
 
-@pytest.mark.parametrize("n", [0.531, 1.0])
+@pytest.mark.parametrize("n", [N_PUBLISHED, 1.0])
 def test_frozen_cycle_is_the_limit_of_the_unaveraged_ode(n: float) -> None:
     """Reference: brute-force integration of Eq. (5) with w = w0 f(adot/v0) for the nominal point
     contact, omega_check c_o = 400 and 800. The period mean of abar must approach abar_m and the half
@@ -248,13 +247,13 @@ def test_frozen_cycle_is_the_limit_of_the_unaveraged_ode(n: float) -> None:
 # ----------------------------------------------------------------- nominal point contact and pull-off
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_nominal_point_contact_solves_alpha_star_equal_abar_m_cubed_half(n: float) -> None:
     """Reference: the mpmath drift integrals evaluated at alpha = abar_m^(3/2) (1 -+ 1e-12) and
     beta = etahat/sqrt(abar_m) change sign, i.e. the 30-digit root is within 1e-12 of the returned
     abar_m^(3/2); with w_eff/w0 = alpha^2, P_m/|P_JKR| = -(8/9) abar_m^3 (Phat_m = (4/3 - 2) abar_m^3)
     and A/a_m = Abar/(omega_check c_o abar_m) checked to 1e-14."""
-    eta1 = np.array([20e-6, 100e-6]) / 51.5e-3
+    eta1 = np.array([20e-6, 100e-6]) / RADIUS
     sol = nominal_point_contact(eta1, 1e6, CHI0, GentSchultz(n))
     for k in range(2):
         abar_m = float(sol.abar_m[k])
@@ -278,7 +277,7 @@ def test_nominal_point_contact_equation_changes_sign_once(etahat: float) -> None
     is strictly decreasing on u in (etahat^(1/4), 3 (1 + etahat)^(1/3)], positive at the left end and
     negative at the right; checked on 400 points."""
     u = np.linspace(etahat**0.25 * (1 + 1e-6), 3 * (1 + etahat) ** (1 / 3), 400)
-    excess = np.log(frozen_radius_cycle(etahat / u, GentSchultz(0.531)).alpha) - 3 * np.log(u)
+    excess = np.log(frozen_radius_cycle(etahat / u, GentSchultz(N_PUBLISHED)).alpha) - 3 * np.log(u)
     assert np.all(np.diff(excess) < 0) and excess[0] > 0 > excess[-1]
 
 
@@ -287,7 +286,7 @@ def _cos_power_integral(q: float) -> mp.mpf:
     return mp.quad(lambda x: mp.cos(x) ** q, [0, mp.pi / 2])
 
 
-@pytest.mark.parametrize("n", [0.531, 1.0, 2.0])
+@pytest.mark.parametrize("n", [N_PUBLISHED, 1.0, 2.0])
 def test_small_amplitude_agrees_with_the_j_integral_model_in_order_not_constant(n: float) -> None:
     """Both models reduce to the static JKR state as etahat -> 0 with w_eff/w0 - 1 = O(etahat^2) and
     Abar ~ etahat^(1/n); the constants differ (module docstring) unless n = 1:
@@ -312,7 +311,7 @@ def test_small_amplitude_agrees_with_the_j_integral_model_in_order_not_constant(
         assert abs(float(weff_ratio) - 1) < 1e-15 and abs(float(abar_ratio) - 1) < 1e-15
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_force_minimum_equals_brent_minimisation_of_the_mean_force(n: float) -> None:
     """Reference: scipy's bounded Brent minimisation of Phat_m over z = ln abar_m to 1e-12 in z, started
     from the bracket [0.05 m, 20 m] of the docstring, per amplitude. The nested scans with their parabolic
@@ -335,9 +334,9 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
     (ii) is the minimum of Phat_m over abar_m, so it is at least the value of (i), and neighbours at
     abar_m (1 +- 1e-3) are higher; both tend to the JKR value 1 as etahat -> 0 (JKR: a_cr = (9/16)^(1/3) a_o
     with w = w0), to 1e-6 at etahat = 1e-4 (w_eff - 1 = O(etahat^2))."""
-    law = GentSchultz(0.531)
+    law = GentSchultz(N_PUBLISHED)
     for h1 in (20e-6, 100e-6):
-        eta1 = h1 / 51.5e-3
+        eta1 = h1 / RADIUS
         first = pulloff_at_critical_radius(eta1, CHI0, law)
         second = pulloff_at_force_minimum(eta1, CHI0, law)
         assert abs(float(first.abar_m) ** 1.5 / (0.75 * float(first.alpha)) - 1) < 1e-13
@@ -355,8 +354,8 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
 def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
     """deltabar0(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
     (the defining equation of Sec. 3.5.4), to 1e-13; the scale helpers match their definitions."""
-    law = GentSchultz(0.531)
-    eta1 = 60e-6 / 51.5e-3
+    law = GentSchultz(N_PUBLISHED)
+    eta1 = 60e-6 / RADIUS
     sol = nominal_point_contact(eta1, 1e6, CHI0, law)
     state = mean_state(np.array([float(sol.abar_m)]), eta1, CHI0, law)
     assert abs(float(state.deltabar0[0])) < 1e-13 * float(sol.abar_m) ** 2

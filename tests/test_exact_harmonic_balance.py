@@ -22,6 +22,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import C_O, CHI0, ETA1, N_PUBLISHED, RADIUS
 from mpmath_reference import j_integrals_mp
 from scipy.integrate import quad
 from scipy.optimize import fsolve
@@ -31,10 +32,6 @@ from vibroadhesion.models.exact_averaging import NoSteadyStateError
 from vibroadhesion.models.exact_harmonic_balance import compliant_residual, exact_harmonics, rigid_fixation
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
-
-CHI0 = 2.589e-2  # Sec. 3.5.3
-C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R (text below Eq. 86), written out independently
-RADIUS = 51.5e-3
 
 
 # ----------------------------------------------------------------- mpmath reference of the coefficients
@@ -75,8 +72,8 @@ def harmonics_mp(abar_m: float, abar: float, epsilon: float, n: float) -> list[m
 COEFFICIENT_CASES = [  # (n, abar_m, Abar, epsilon): small and large Abar, epsilon/abar_m up to 0.99
     (0.05, 1.2, 3.0, 0.1),
     (0.05, 1.1, 1e8, 0.99 * 1.1),
-    (0.531, 0.9, 50.0, 0.45),
-    (0.531, 1.0, 0.01, 1e-3),
+    (N_PUBLISHED, 0.9, 50.0, 0.45),
+    (N_PUBLISHED, 1.0, 0.01, 1e-3),
     (1.0, 2.0, 1e4, 1.8),
     (4.0, 1.5, 0.5, 0.5),
     (4.0, 1.2, 3.0, 0.1),
@@ -99,7 +96,7 @@ def test_exact_coefficients_match_mpmath_over_the_period(case: tuple[float, floa
 def test_invalid_amplitude_is_rejected_and_static_state_is_exact() -> None:
     """epsilon >= abar_m (A >= a_m) has no meaning for the ansatz: ValueError. Abar = epsilon = 0 is the
     static JKR state: mean deltabar = abar_m^2 - sqrt(abar_m), harmonics 0, J0 = 1 (to rounding)."""
-    law = GentSchultz(0.531)
+    law = GentSchultz(N_PUBLISHED)
     with pytest.raises(ValueError):
         exact_harmonics(1.0, 3.0, 1.0, law)
     h = exact_harmonics(1.3, 0.0, 0.0, law)
@@ -127,7 +124,7 @@ def extra_integrals_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf]:
                 mp.quad(lambda x: s(x) * mp.sin(x) ** 4, points) / mp.pi)
 
 
-@pytest.mark.parametrize("n", [0.531, 4.0])
+@pytest.mark.parametrize("n", [N_PUBLISHED, 4.0])
 def test_linearisation_gives_the_printed_refined_coefficients_with_the_derived_corrections(n: float) -> None:
     """Eqs. (93)–(96) as printed (with chi0, nu0/omega_bar and kappa), plus the corrections of the module
     docstring (epsilon^2 for the means and cosine terms, epsilon^3 for the sine terms), must equal the
@@ -176,11 +173,11 @@ def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() 
     (omega_bar, abar_m, Abar), epsilon = nu0 Abar/(omega_bar c_o) -> 0 with nu0: the difference of both
     columns divided by epsilon^2 must converge (change below 1e-3 relative from nu0 = 1e-5 to 1e-6) and
     the difference be below 1e-6 at nu0 = 1e-6."""
-    law = GentSchultz(0.531)
+    law = GentSchultz(N_PUBLISHED)
     x = np.log(np.array([[3.0, 1.2, 20.0], [0.5, 1.0, 2.0]]))
     scaled = []
     for nu0 in (1e-5, 1e-6):
-        p = CompliantFixation(CHI0, 3.883e-4, nu0, kappa=1e-3, mu=1e-7, zeta=0.05)
+        p = CompliantFixation(CHI0, ETA1, nu0, kappa=1e-3, mu=1e-7, zeta=0.05)
         epsilon = nu0 * np.exp(x[:, 2]) / (np.exp(x[:, 0]) * C_O)
         difference = compliant_residual(x, p, law) - residual(x, p, law)
         scaled.append(difference / epsilon[:, None] ** 2)
@@ -191,8 +188,8 @@ def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() 
 def test_compliant_mean_balance_reduces_to_the_rigid_and_static_cases() -> None:
     """kappa -> infinity: column 0 becomes the rigid mean equation (mean deltabar - deltabar0)/K0[sqrt]
     (Eq. 56 generalised), up to O(c_o/kappa); checked with kappa = 1e12 against exact_harmonics, to 1e-10."""
-    law = GentSchultz(0.531)
-    p = CompliantFixation(CHI0, 3.883e-4, 1e-5, kappa=1e12, mu=0.0, zeta=0.0)
+    law = GentSchultz(N_PUBLISHED)
+    p = CompliantFixation(CHI0, ETA1, 1e-5, kappa=1e12, mu=0.0, zeta=0.0)
     x = np.log(np.array([[3.0, 1.2, 20.0]]))
     epsilon = 1e-5 * 20.0 / (3.0 * C_O)
     h = exact_harmonics(1.2, 20.0, epsilon, law)
@@ -206,10 +203,10 @@ def test_compliant_mean_balance_reduces_to_the_rigid_and_static_cases() -> None:
 
 
 RIGID_CASES = [  # (n, h1 in m, omega_check, deltabar0)
-    (0.531, 20e-6, 1e4, 0.0),
-    (0.531, 100e-6, 1e6, 0.0),
+    (N_PUBLISHED, 20e-6, 1e4, 0.0),
+    (N_PUBLISHED, 100e-6, 1e6, 0.0),
     (4.0, 60e-6, 3e3, 0.3),
-    (0.531, 40e-6, 1e5, -0.3),
+    (N_PUBLISHED, 40e-6, 1e5, -0.3),
     (1.0, 20e-6, 1e5, 0.0),
 ]
 
@@ -234,7 +231,7 @@ def test_rigid_solution_satisfies_both_equations_in_mpmath(case: tuple[float, fl
 def test_zero_amplitude_is_the_static_nominal_point_contact() -> None:
     """eta1 = 0: Abar = 0, abar_m = 1 (a = a_o, Eq. 86), w_eff = w0 and P_m = -(2/3) E* a_o^3/R, i.e.
     P_m/|P_JKR| = -8/9 (to rounding)."""
-    sol = rigid_fixation(0.0, 1e5, CHI0, GentSchultz(0.531))
+    sol = rigid_fixation(0.0, 1e5, CHI0, GentSchultz(N_PUBLISHED))
     assert sol.abar == 0.0 and abs(sol.abar_m - 1) < 1e-14 and sol.w_eff_ratio == 1.0 and sol.a_over_am == 0.0
     assert abs(sol.mean_force_ratio + 8 / 9) < 1e-14
 
@@ -243,7 +240,7 @@ def test_no_single_harmonic_state_is_reported_not_returned() -> None:
     """h1 = 100 um at omega_check = 1e4 (refined model: A/a_m = 1.5, geometrically impossible): the
     mean equation loses its stable root before the base amplitude is reached: NoSteadyStateError."""
     with pytest.raises(NoSteadyStateError):
-        rigid_fixation(100e-6 / RADIUS, 1e4, CHI0, GentSchultz(0.531))
+        rigid_fixation(100e-6 / RADIUS, 1e4, CHI0, GentSchultz(N_PUBLISHED))
 
 
 def _amplitude_along_stable_branch(
@@ -272,7 +269,7 @@ def test_amplitude_along_the_branch_and_the_choice_of_the_smaller_root() -> None
     the ansatz's domain: one root. At omega_check = 1e3 it peaks near A/a_m = 0.75 and falls before the
     edge: for etahat between the edge value and the peak there are two roots, and the solver must return
     the smaller one (A/a_m below the peak's), whose amplitude and mean equation it satisfies."""
-    law = GentSchultz(0.531)
+    law = GentSchultz(N_PUBLISHED)
     rising = _amplitude_along_stable_branch(1e4, np.geomspace(0.01, 300.0, 60), law)
     assert len(rising) > 20 and np.all(np.diff([v for _, v in rising]) > 0)
     peaked = _amplitude_along_stable_branch(1e3, np.geomspace(1.0, 14.0, 60), law)
@@ -285,7 +282,7 @@ def test_amplitude_along_the_branch_and_the_choice_of_the_smaller_root() -> None
     assert abs(np.interp(sol.a_over_am, *zip(*peaked[: k + 1])) / etahat - 1) < 1e-3
 
 
-@pytest.mark.parametrize("n", [0.531, 2.0])
+@pytest.mark.parametrize("n", [N_PUBLISHED, 2.0])
 def test_small_base_amplitude_limit_against_the_refined_model(n: float) -> None:
     """eta1 -> 0 at fixed omega_check: the exact and refined (Eqs. 122–123) solutions differ at O(epsilon^2),
     with closed-form limits (J -> (1, 0, 1)):
@@ -350,7 +347,7 @@ def high_frequency_expansion(
     return math.exp(z[0]), math.exp(z[1])
 
 
-@pytest.mark.parametrize("case", [(0.531, 20e-6, 1e5), (0.531, 20e-6, 1e6), (2.0, 100e-6, 1e5)])
+@pytest.mark.parametrize("case", [(N_PUBLISHED, 20e-6, 1e5), (N_PUBLISHED, 20e-6, 1e6), (2.0, 100e-6, 1e5)])
 def test_high_frequency_limit_is_the_leading_order_plus_epsilon_squared_terms(case: tuple[float, float, float]) -> None:
     """omega_check -> infinity: the exact balance tends to the leading order (Eqs. 55, 123: refined model at
     omega_check = infinity) with an O(epsilon^2) difference, and to the O(epsilon^2)-expanded system

@@ -11,23 +11,21 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
 from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 
-RADIUS = 0.0515
-REDUCED_MODULUS = 2 * 2.8e6 / 0.75
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
 TRUE = GentSchultzParameters(w0=0.30, n=0.70, v0=20e-6)
-PUBLISHED = GentSchultzParameters(w0=0.236, n=0.531, v0=44.5e-6)  # Fig. 4 caption; also the start point
-H1_UM = [20.0, 40.0, 60.0, 80.0, 100.0]
+PUBLISHED = GentSchultzParameters(w0=W0, n=N_PUBLISHED, v0=V0)  # Fig. 4 caption; also the start point
 
 
 def _rows(frequencies, model: str, *, noise: float = 0.0, seed: int = 0, params=TRUE,
           relative: bool = True) -> pd.DataFrame:
     """Synthetic rows; noise is Gaussian, relative to each force or (relative=False) to the median force."""
-    f = np.repeat(np.asarray(frequencies, dtype=float), len(H1_UM))
-    h1 = np.tile(H1_UM, len(frequencies))
+    f = np.repeat(np.asarray(frequencies, dtype=float), len(AMPLITUDES_UM))
+    h1 = np.tile(AMPLITUDES_UM, len(frequencies))
     force = predict_pulloff(model, params, f, h1, **GEOMETRY).pulloff_mN
     if noise:
         eps = np.random.default_rng(seed).standard_normal(force.size)
@@ -42,7 +40,7 @@ def _estimates(summary) -> dict[str, float]:
 
 def test_leading_fit_recovers_true_w0_n_from_noise_free_rows_to_1e6() -> None:
     """Reference: w0 = 0.30, n = 0.70 used to generate the rows (200/300/400 Hz, h1 = 20..100 um); 1e-6 relative."""
-    rows = _rows([200, 300, 400], "leading")
+    rows = _rows(FREQUENCIES_HZ, "leading")
     summary = fit_gent_schultz(rows, "leading", PUBLISHED, **GEOMETRY)
     assert summary["status"] == "fitted"
     assert summary["free_parameters"] == ["w0", "n"]
@@ -74,7 +72,7 @@ def _coverage(relative: bool) -> tuple[dict[str, int], dict[str, list[float]]]:
     hits = {"w0": 0, "n": 0}
     z_scores: dict[str, list[float]] = {"w0": [], "n": []}
     for seed in range(20):
-        rows = _rows([200, 300, 400], "leading", noise=0.01, seed=seed, relative=relative)
+        rows = _rows(FREQUENCIES_HZ, "leading", noise=0.01, seed=seed, relative=relative)
         summary = fit_gent_schultz(rows, "leading", PUBLISHED, **GEOMETRY)
         assert summary["status"] == "fitted"
         for name in hits:

@@ -14,15 +14,14 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
 from vibroadhesion.experiments import identifiability, virtual_pulloff
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 
-RADIUS = 0.0515
-REDUCED_MODULUS = 2 * 2.8e6 / 0.75
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
-PUBLISHED = GentSchultzParameters(w0=0.236, n=0.531, v0=44.5e-6)  # Fig. 4 caption
+PUBLISHED = GentSchultzParameters(w0=W0, n=N_PUBLISHED, v0=V0)  # Fig. 4 caption
 
 
 def _simulated(params: GentSchultzParameters, frequencies, h1_um) -> pd.DataFrame:
@@ -78,7 +77,7 @@ def test_simulated_v0_sensitivity_equals_minus_the_frequency_derivative() -> Non
     -d ln P/d ln omega from the parabola through the simulated 200/300/400 Hz rows (v0 enters only via
     omega R/v0). Both are O(h^2) / interpolation estimates of the same derivative: 5 %."""
     h1 = [80.0, 100.0]
-    base = _simulated(PUBLISHED, [200.0, 300.0, 400.0], h1)
+    base = _simulated(PUBLISHED, FREQUENCIES_HZ, h1)
     at_300 = base[base["frequency_hz"] == 300.0]
     plus = {k: at_300 for k in ("w0", "n")} | {"v0": _simulated(identifiability.perturbed(PUBLISHED, "v0", 1), [300.0], h1)}
     minus = {k: at_300 for k in ("w0", "n")} | {"v0": _simulated(identifiability.perturbed(PUBLISHED, "v0", -1), [300.0], h1)}
@@ -94,7 +93,7 @@ def test_exact_averaging_fit_recovers_simulation_parameters_within_its_model_err
     level must land within twice the first-order bias its measured model error e implies,
     |d ln theta_j| <= sum_i |pinv(J)_ji| max|e_i| (J = d residual/d ln theta at the truth), and that
     bound must itself be small (< 1 %), so the test can fail."""
-    truth = GentSchultzParameters(w0=0.236, n=0.531, v0=2 * math.pi * 200.0 * RADIUS / 1e9)
+    truth = GentSchultzParameters(w0=W0, n=N_PUBLISHED, v0=2 * math.pi * 200.0 * RADIUS / 1e9)
     rows = _simulated(truth, [200.0], [20.0, 60.0, 100.0])
     model = "exact_averaging_force_minimum"
 
@@ -120,7 +119,7 @@ def test_exact_averaging_fit_recovers_simulation_parameters_within_its_model_err
 def test_refined_fit_of_simulated_rows_says_v0_is_not_identifiable() -> None:
     """Simulated rows at 200/300/400 Hz, h1 = 60, 100 um: the frequency effect (up to 10 %) is real but
     the refined model cannot resolve v0 from it; the fit says so and keeps the start value of v0."""
-    rows = _simulated(PUBLISHED, [200.0, 300.0, 400.0], [60.0, 100.0])
+    rows = _simulated(PUBLISHED, FREQUENCIES_HZ, [60.0, 100.0])
     fit = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
     assert fit["v0_identifiable"] is False
     assert fit["v0_note"].startswith("v0 not identifiable")

@@ -18,6 +18,7 @@ import warnings
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import N_PUBLISHED
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core.integrals import (
@@ -30,7 +31,7 @@ from vibroadhesion.core.integrals import (
 )
 from vibroadhesion.core.ratelaw import GentSchultz
 
-N_VALUES = [0.05, 0.1, 0.25, 0.531, 1.0, 1.5, 2.0, 3.0, 4.0]
+N_VALUES = [0.05, 0.1, 0.25, N_PUBLISHED, 1.0, 1.5, 2.0, 3.0, 4.0]
 FIXED_ABAR = [0.0, 1e-12, 1e-8, 1e-4, 0.01, 0.3, 1.0, 1.5708, 2.0, 7.0, 30.0, 100.0, 1e3, 1e4, 1e5, 1e6, 1e8,
               1e10, 1e12]
 #: three log-uniform points in [1e-3, 1e10] from a fixed seed (a fresh generator per n keeps the grid per n fixed)
@@ -110,7 +111,7 @@ def _j_integrals_folded_mp(abar: float, n: float, dps: int) -> tuple[mp.mpf, mp.
         return +j0, +jc1, +j1
 
 
-@pytest.mark.parametrize("abar, n", [(1e-8, 0.531), (1.5708, 0.05), (1e3, 4.0), (1e6, 1.0)])
+@pytest.mark.parametrize("abar, n", [(1e-8, N_PUBLISHED), (1.5708, 0.05), (1e3, 4.0), (1e6, 1.0)])
 def test_mpmath_reference_matches_folded_mpmath_45_digits_to_1e25(abar: float, n: float) -> None:
     """Reference of the reference: the 30-digit values agree with an independent 45-digit evaluation."""
     ref30 = j_integrals_mp(abar, n)
@@ -138,7 +139,7 @@ def _reordered_sum_bound(n_terms: int, elementwise_ulps: float) -> float:
     return 2 * (gamma + elementwise_ulps * u)
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_shapes_scalar_0d_1d_2d_agree_with_1d_call(n: float) -> None:
     """Reference: the 1-d call. Same flat input -> bitwise equal; other batch sizes -> within the
     rounding bound of the rule's summation.
@@ -179,7 +180,7 @@ def test_abar_zero_gives_exactly_one_zero_one() -> None:
     The limits J0(0) = J1(0) = 1 are what Eqs. (71), (99), (123) rely on (no vibration, no
     amplification: P_cr / P_cr^JKR = J0(0)^2 = 1, abar_m = 1).
     """
-    got = {n: tuple(float(x) for x in j_integrals(0.0, n)) for n in (0.05, 0.531, 1.0, 4.0)}
+    got = {n: tuple(float(x) for x in j_integrals(0.0, n)) for n in (0.05, N_PUBLISHED, 1.0, 4.0)}
     wrong = {n: (j0 - 1, jc1, j1 - 1) for n, (j0, jc1, j1) in got.items() if (j0, jc1, j1) != (1.0, 0.0, 1.0)}
     assert not wrong, f"J(0) - (1, 0, 1) per n: {wrong}"
 
@@ -199,7 +200,7 @@ def test_documented_1e12_accuracy_holds_near_abar_2(n: float) -> None:
 # ----------------------------------------------------------------------------- general rule
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_general_rule_matches_gent_schultz_fast_path_to_1e12(n: float) -> None:
     """Reference: the cancellation-free fast path (itself checked against mpmath above), 1e-12 relative.
 
@@ -231,7 +232,7 @@ def _sin2_cos_power_mp(p: float) -> mp.mpf:
     return mp.quad(lambda x: mp.sin(x) ** 2 * mp.cos(x) ** p, [0, mp.pi / 2])
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_large_abar_constants_match_mpmath_quad_of_cos_powers(n: float) -> None:
     """Reference: mpmath quad of int_0^{pi/2} cos^{n/2}, cos^{n/2+1}, sin^2 cos^{n/2} (30 digits); 1e-14 relative.
 
@@ -254,7 +255,7 @@ def _large_abar_asymptotes_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp
             2 * scale * _sin2_cos_power_mp(p) / mp.pi)
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
     """Closed-form bounds: 0 < J0 - J0~ < 1, 0 < Jc1 - Jc1~ < 1/pi, 0 < J1 - J1~ < 1 for every Abar > 0.
 
@@ -282,7 +283,7 @@ def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
         assert np.all(rem > -slack) and np.all(rem < bounds[k] + slack), (k, rem.min(), rem.max())
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_large_abar_asymptote_relative_error_vanishes(n: float) -> None:
     """Reference: 30-digit mpmath values. Relative error of the asymptote decreases with Abar
     (it is O(Abar^{-n/2}) by the bounds above) until it reaches double rounding (1e-15), and is
@@ -337,7 +338,7 @@ def test_small_abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[fl
         assert abs(ratios[-1] / abs(float(c3[k])) - 1) < 0.35, (k, ratios, float(c3[k]))
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_small_abar_limits_are_one_zero_one(n: float) -> None:
     """Closed-form limit J -> (1, 0, 1) as Abar -> 0 (Eqs. 99, 123): |J - limit| <= C Abar^n, checked vs mpmath."""
     for a in (1e-4, 1e-8, 1e-12):
@@ -353,7 +354,7 @@ def test_small_abar_limits_are_one_zero_one(n: float) -> None:
 # ----------------------------------------------------------------------------- monotonicity, robustness
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_j0_and_minus_jc1_strictly_increasing_as_proved(n: float) -> None:
     """Closed-form proof (dS/du, -dD/du > 0): J0 and -Jc1 strictly increase with Abar.
 
@@ -375,7 +376,7 @@ def test_j0_and_minus_jc1_strictly_increasing_as_proved(n: float) -> None:
     assert float(j_integrals(0.0, n)[2]) == 1.0  # J1(0) = 2/pi int_0^pi sin^2 = 1
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 4.0])
 def test_no_nan_no_warning_at_extreme_abar(n: float) -> None:
     """Abar in {0, 1e-300, 1e12}: finite results, no warning of any kind (closed-form limit at the tiny end)."""
     abar = np.array([0.0, 1e-300, 1e12])
@@ -397,11 +398,11 @@ def test_no_nan_no_warning_at_extreme_abar(n: float) -> None:
 def test_negative_or_nan_abar_raises_value_error(bad: float) -> None:
     """Eqs. (28)-(36) are defined for Abar >= 0 (Abar is an amplitude); anything else is an input error."""
     with pytest.raises(ValueError):
-        j_integrals(bad, 0.531)
+        j_integrals(bad, N_PUBLISHED)
     with pytest.raises(ValueError):
-        j_integrals(np.array([1.0, bad]), 0.531)
+        j_integrals(np.array([1.0, bad]), N_PUBLISHED)
     with pytest.raises(ValueError):
-        j_integrals_general(bad, GentSchultz(0.531))
+        j_integrals_general(bad, GentSchultz(N_PUBLISHED))
 
 
 @pytest.mark.parametrize("bad_n", [0.0, -0.5, float("nan")])

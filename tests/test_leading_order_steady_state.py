@@ -27,6 +27,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import CHI0, ETA1, N_PUBLISHED
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core.integrals import j_integrals
@@ -45,10 +46,8 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
 
-CHI0 = 2.589e-2  # Sec. 3.5.3
-ETA1 = 3.883e-4  # h1 = 20 um, R = 51.5 mm
 MU_SMALL = 1e-6  # m g/(E* R^2): about a third of the JKR pull-off force, (3/4) c_o^3 = 2.9e-6
-EXPONENTS = [0.05, 0.531, 4.0]
+EXPONENTS = [0.05, N_PUBLISHED, 4.0]
 
 with mp.workdps(30):
     W0 = mp.mpf(CHI0) ** 3 / (9 * mp.pi)  # Eq. (64) with E* = R = 1

@@ -25,6 +25,7 @@ import nbformat
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import AMPLITUDES_UM, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
@@ -94,7 +95,7 @@ def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: 
     assert list(fig4.columns) == ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
     for model, n_freq in (("leading", 1), ("refined", 3)):
         rows = fig4[fig4["model"] == model]
-        assert set([20.0, 40.0, 60.0, 80.0, 100.0]) <= set(rows["h1_um"])
+        assert set(AMPLITUDES_UM) <= set(rows["h1_um"])
         assert rows["frequency_hz"].nunique(dropna=False) == n_freq
     assert fig4.loc[fig4["model"] == "leading", "frequency_hz"].isna().all()
     assert (results / "fit/gent_schultz.json").exists()
@@ -163,8 +164,8 @@ def test_every_notebook_has_exactly_one_parameters_cell() -> None:
 
 
 def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> None:
-    params = {m: GentSchultzParameters(0.236, 0.531, 44.5e-6) for m in ("leading", "refined")}
-    geometry = {"radius": 0.0515, "reduced_modulus": 2 * 2.8e6 / 0.75}
+    params = {m: GentSchultzParameters(W0, N_PUBLISHED, V0) for m in ("leading", "refined")}
+    geometry = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
     measured = pd.DataFrame({"frequency_hz": [200.0], "h1_um": [40.0], "pulloff_mN": [250.0], "source": ["simulated"]})
     digests = []
     for k in range(2):

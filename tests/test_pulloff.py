@@ -14,6 +14,7 @@ import warnings
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import CHI0, ETA1, N_PUBLISHED, NU0, RADIUS, REDUCED_MODULUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core import groups, jkr
@@ -22,15 +23,12 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
 from vibroadhesion.numerics.roots import NoRootError
 
-CHI0 = 2.589e-2  # paper, Sec. 3.5.3 / Fig. 5-6 captions
-ETA1_PAPER = 3.883e-4  # h1 = 20 um, R = 51.5 mm (Fig. 5 caption)
-
 
 # ----------------------------------------------------------------------------- Eq. (72)
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
-@pytest.mark.parametrize("eta1", [1e-6, ETA1_PAPER, 1e-3, 1e-2])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
+@pytest.mark.parametrize("eta1", [1e-6, ETA1, 1e-3, 1e-2])
 def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: float) -> None:
     """Reference: Eq. (72), (chi0^2/3) J0^{1/3} |Jc1| = eta1, with 30-digit mpmath J at the returned root; 1e-12."""
     law = GentSchultz(n)
@@ -46,7 +44,7 @@ def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: floa
     assert abs(est.ratio[0] / float(j0**2) - 1) < 1e-12
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_eq72_and_eq106_lhs_strictly_increasing_as_proved(n: float) -> None:
     """Closed-form monotonicity proofs (docstrings of leading_order/refined; n < 6): both left-hand
     sides rise strictly with Abar. Dense grid Abar in logspace(-12, 12, 2401)."""
@@ -66,7 +64,7 @@ def test_eq72_and_eq106_lhs_strictly_increasing_as_proved(n: float) -> None:
 
 def test_eta1_zero_gives_abar_zero_and_ratio_exactly_one() -> None:
     """Limit h1 -> 0: no vibration, Abar_cr = 0 and P_cr / P_cr^JKR = J0(0)^2 = 1 exactly (Eq. 71)."""
-    law = GentSchultz(0.531)
+    law = GentSchultz(N_PUBLISHED)
     assert critical_abar_leading(0.0, CHI0, law) == 0.0
     assert critical_abar_refined(0.0, CHI0, 1e6, law) == 0.0
     lead = pulloff_leading(0.0, CHI0, law)
@@ -77,7 +75,7 @@ def test_eta1_zero_gives_abar_zero_and_ratio_exactly_one() -> None:
     )
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_tiny_eta1_gives_ratio_within_1e6_of_one(n: float) -> None:
     """Limit h1 -> 0 (Eq. 71 with J0 -> 1): eta1 = 1e-9 gives |ratio - 1| < 1e-6, both model levels."""
     law = GentSchultz(n)
@@ -88,7 +86,7 @@ def test_tiny_eta1_gives_ratio_within_1e6_of_one(n: float) -> None:
     assert float(lead.ratio) >= 1 - 1e-14 and float(ref.ratio) >= 1 - 1e-14  # J0 >= 1 (S >= 2)
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_very_large_eta1_gives_finite_ratio_without_warning(n: float) -> None:
     """eta1 = 0.05 (h1 = 2.6 mm at R = 51.5 mm): the root exists (LHS unbounded), the ratio is finite, > 1,
     no warning of any kind; and it matches Eq. (71) with J0 from the closed-form large-Abar bound J0 >= J0~."""
@@ -105,8 +103,8 @@ def test_very_large_eta1_gives_finite_ratio_without_warning(n: float) -> None:
 
 @pytest.mark.parametrize(
     "n, eta1",
-    [(0.05, 1e-6), (0.531, 1e-6), (0.531, ETA1_PAPER), (0.531, 1e-2), (1.0, ETA1_PAPER), (4.0, 1e-6),
-     (4.0, ETA1_PAPER), (4.0, 1e-2)],
+    [(0.05, 1e-6), (N_PUBLISHED, 1e-6), (N_PUBLISHED, ETA1), (N_PUBLISHED, 1e-2), (1.0, ETA1), (4.0, 1e-6),
+     (4.0, ETA1), (4.0, 1e-2)],
 )
 def test_refined_tends_to_leading_as_omega_check_to_infinity(n: float, eta1: float) -> None:
     """Limit omega_check -> inf of Eq. (106) is Eq. (72) squared (delta_s -> 0, Eq. 104).
@@ -127,12 +125,12 @@ def test_refined_tends_to_leading_as_omega_check_to_infinity(n: float, eta1: flo
     assert abs(critical_abar_refined(eta1, CHI0, math.inf, law) / lead - 1) < tol
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 4.0])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_refined_ratio_not_above_leading_ratio(n: float) -> None:
     """Eq. (106) LHS = Eq. (72) LHS^2 + a nonnegative frequency term, and both increase: Abar_ref <= Abar_lead,
     hence J0(Abar_ref)^2 <= J0(Abar_lead)^2 (J0 increasing)."""
     law = GentSchultz(n)
-    eta1 = np.array([1e-5, ETA1_PAPER, 2e-3])[:, None]
+    eta1 = np.array([1e-5, ETA1, 2e-3])[:, None]
     omega = np.array([1e1, 1e3, 1e5, 1e8])[None, :]
     lead = pulloff_leading(eta1[:, 0], CHI0, law)
     ref = pulloff_refined(eta1, CHI0, omega, law)
@@ -150,7 +148,7 @@ def test_eq106_root_satisfies_printed_equation_with_mpmath_j(omega_check: float,
 
     chi0^4/9 J0^{2/3} Jc1^2 + chi0^2/omega^2 Abar^2 J0^{4/3} (1 - J1/(3 J0))^2 = eta1^2.
     """
-    eta1 = ETA1_PAPER
+    eta1 = ETA1
     abar = critical_abar_refined(eta1, CHI0, omega_check, GentSchultz(n))
     j0, jc1, j1 = j_integrals_mp(abar, n)
     c, a, w = mp.mpf(CHI0), mp.mpf(abar), mp.mpf(omega_check)
@@ -217,28 +215,23 @@ def test_bounded_lhs_rate_law_small_eta1_root_satisfies_eq72_with_mpmath() -> No
 def test_invalid_eta1_raises_value_error(bad: float) -> None:
     """eta1 = h1/R is a finite nonnegative ratio (Eq. 65)."""
     with pytest.raises(ValueError):
-        critical_abar_leading(bad, CHI0, GentSchultz(0.531))
+        critical_abar_leading(bad, CHI0, GentSchultz(N_PUBLISHED))
     with pytest.raises(ValueError):
-        critical_abar_refined(bad, CHI0, 1e6, GentSchultz(0.531))
+        critical_abar_refined(bad, CHI0, 1e6, GentSchultz(N_PUBLISHED))
 
 
 # ----------------------------------------------------------------------------- groups and JKR
 
 
-E_STAR_PAPER = 2 * 2.8e6 / 0.75  # E = 2.8 MPa amplified by 2 (Sec. 3.4), nu = 0.5
-R_PAPER = 0.0515
-W0_PAPER, V0_PAPER = 0.236, 44.5e-6  # Fig. 4 caption
-
-
 def test_chi0_matches_paper_value_2_589e_2() -> None:
     """Paper, Sec. 3.5.3 / Fig. 5 caption: chi0 = 2.589e-2 (4 digits) for w0 = 0.236, E* = 2*2.8 MPa/0.75, R = 51.5 mm;
     closed form Eq. (64): (9 pi w0 / (E* R))^{1/3}."""
-    chi0 = groups.chi0(W0_PAPER, E_STAR_PAPER, R_PAPER)
-    assert abs(chi0 - 2.589e-2) <= 0.5e-5
-    assert abs(chi0 / (9 * math.pi * W0_PAPER / (E_STAR_PAPER * R_PAPER)) ** (1 / 3) - 1) < 1e-15
+    chi0 = groups.chi0(W0, REDUCED_MODULUS, RADIUS)
+    assert abs(chi0 - CHI0) <= 0.5e-5
+    assert abs(chi0 / (9 * math.pi * W0 / (REDUCED_MODULUS * RADIUS)) ** (1 / 3) - 1) < 1e-15
 
 
-@pytest.mark.parametrize("w0, e_star, radius", [(W0_PAPER, E_STAR_PAPER, R_PAPER), (0.05, 1e9, 1e-3), (3.0, 2e5, 0.2)])
+@pytest.mark.parametrize("w0, e_star, radius", [(W0, REDUCED_MODULUS, RADIUS), (0.05, 1e9, 1e-3), (3.0, 2e5, 0.2)])
 def test_contact_radius_scale_equals_eq86_in_terms_of_chi0(w0: float, e_star: float, radius: float) -> None:
     """Closed form below Eq. (86): a_o = 2^{1/3} 3^{-2/3} chi0 R; 1e-14 relative."""
     a_o = groups.contact_radius_scale(w0, e_star, radius)
@@ -248,10 +241,10 @@ def test_contact_radius_scale_equals_eq86_in_terms_of_chi0(w0: float, e_star: fl
 
 def test_eta1_matches_paper_value_3_883e_4() -> None:
     """Paper, Fig. 5 caption: eta1 = h1/R = 3.883e-4 for h1 = 20 um, R = 51.5 mm (4 digits)."""
-    assert abs(float(groups.eta1(20e-6, R_PAPER)) - 3.883e-4) <= 0.5e-7
+    assert abs(float(groups.eta1(20e-6, RADIUS)) - ETA1) <= 0.5e-7
 
 
-@pytest.mark.parametrize("w, e_star, radius", [(W0_PAPER, E_STAR_PAPER, R_PAPER), (0.05, 1e9, 1e-3), (3.0, 2e5, 0.2)])
+@pytest.mark.parametrize("w, e_star, radius", [(W0, REDUCED_MODULUS, RADIUS), (0.05, 1e9, 1e-3), (3.0, 2e5, 0.2)])
 def test_jkr_force_at_critical_radius_is_classical_pulloff_force(w: float, e_star: float, radius: float) -> None:
     """Classical JKR identity: P(a_cr) = -(3 pi / 2) R w (Eqs. 4, 60, 70), to 1e-12; and dP/da = 0 at a_cr
     (central difference, step 1e-5 a_cr: truncation ~1e-10 and rounding ~1e-11 relative to P/a)."""
@@ -269,10 +262,10 @@ def test_jkr_force_at_critical_radius_is_classical_pulloff_force(w: float, e_sta
 
 def test_nu0_matches_paper_value_1_227e_5() -> None:
     """Paper, Fig. 5 caption: nu0 = v0/(omega0 R) = 1.227e-5 with v0 = 44.5 um/s, omega0 = 70.4 rad/s (3 digits)."""
-    assert abs(groups.nu0(V0_PAPER, 70.4, R_PAPER) / 1.227e-5 - 1) < 1e-3
+    assert abs(groups.nu0(V0, 70.4, RADIUS) / NU0 - 1) < 1e-3
 
 
 def test_omega_check_equals_eq105_closed_form() -> None:
     """Eq. (105): omega_check = omega R / v0 with omega = 2 pi f; 200 Hz, R = 51.5 mm, v0 = 44.5 um/s; 1e-15."""
-    got = float(groups.omega_check(200.0, V0_PAPER, R_PAPER))
-    assert abs(got / (2 * math.pi * 200 * R_PAPER / V0_PAPER) - 1) < 1e-15
+    got = float(groups.omega_check(200.0, V0, RADIUS))
+    assert abs(got / (2 * math.pi * 200 * RADIUS / V0) - 1) < 1e-15

@@ -14,6 +14,7 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import AMPLITUDES_UM, CHI0, N_PUBLISHED, RADIUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT
@@ -25,10 +26,7 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact, nominal_point_contact_closure, rigid_amplitude_squared
 from vibroadhesion.models.stiffness import dynamic_stiffness
 
-CHI0 = 2.589e-2  # paper, Sec. 3.5.3
-RADIUS = 51.5e-3  # m, Fig. 4 caption
-AMPLITUDES_UM = [20.0, 40.0, 60.0, 80.0, 100.0]
-EXPONENTS = [0.05, 0.531, 4.0]  # the published n and the two extremes the issue names
+EXPONENTS = [0.05, N_PUBLISHED, 4.0]  # the published n and the two extremes the issue names
 
 
 def eq122_lhs_mp(abar: float, omega_check: float, n: float) -> mp.mpf:
@@ -63,7 +61,7 @@ def test_eq122_root_satisfies_printed_equation_with_mpmath_j_to_1e11(h1_um: floa
     assert abs(float(sol.w_eff_ratio) / float(j0**2) - 1) < 1e-12  # Eq. (49)
 
 
-@pytest.mark.parametrize("n", [0.05, 0.531, 1.0, 2.0, 4.0, 5.9])
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0, 5.9])
 @pytest.mark.parametrize("omega_check", [1e1, 1e3, 1e6, 1e9, math.inf])
 def test_eq122_lhs_rises_strictly_from_zero_to_infinity_so_one_root(omega_check: float, n: float) -> None:
     """Uniqueness (proof in the docstring of vibroadhesion.models.refined, valid for n < 6): the
@@ -121,7 +119,7 @@ def test_h1_to_zero_abar_vanishes_and_abar_m_tends_to_one(omega_check: float, n:
 
 def test_h1_zero_gives_the_static_nominal_point_contact_exactly() -> None:
     """h1 = 0 is the static JKR nominal point contact: Abar = 0, abar_m = 1, w_eff = w0 (Eq. 86)."""
-    sol = nominal_point_contact(0.0, 1e5, CHI0, GentSchultz(0.531))
+    sol = nominal_point_contact(0.0, 1e5, CHI0, GentSchultz(N_PUBLISHED))
     assert (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio), float(sol.a_over_am)) == (0.0, 1.0, 1.0, 0.0)
 
 
@@ -132,7 +130,7 @@ def test_large_amplitude_at_low_frequency_is_reported_outside_the_model_not_cras
     """h1 = 100 um .. 1 mm at omega_check = 10 gives A/a_m > 1 (geometrically impossible): the
     table keeps the rows with finite values so the figure can shade them, and the counts the
     fig6 rule logs follow from the column. The 20 um, 200 Hz point of the paper is inside A <= 0.1 a_m."""
-    table = fig6_table([20.0, 100.0, 1000.0], np.array([1e1, 3.0e6]), chi0=CHI0, radius=RADIUS, n=0.531)
+    table = fig6_table([20.0, 100.0, 1000.0], np.array([1e1, 3.0e6]), chi0=CHI0, radius=RADIUS, n=N_PUBLISHED)
     assert np.isfinite(table[FIG6_COLUMNS].to_numpy()).all()
     low = table[table["omega_check"] == 1e1]
     assert (low["A_over_am"] > 1).all()
@@ -149,7 +147,7 @@ def test_large_amplitude_at_low_frequency_is_reported_outside_the_model_not_cras
 
 #: omega_check far enough out that the frequency terms (~ Abar/omega_check) are negligible: the
 #: high-frequency Abar is ~1e1 (n = 4), ~1e3 (n = 0.531) but up to ~1e37 for n = 0.05.
-HIGH_OMEGA_CHECK = {0.05: 1e50, 0.531: 1e14, 4.0: 1e14}
+HIGH_OMEGA_CHECK = {0.05: 1e50, N_PUBLISHED: 1e14, 4.0: 1e14}
 
 
 @pytest.mark.parametrize("n", EXPONENTS)
@@ -158,8 +156,8 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
     frequency term is (3 Abar/(chi0 omega_check))^2 relative to the first: below 1e-20 at
     HIGH_OMEGA_CHECK, so the Fig. 7 table must equal Fig. 4's to 1e-9 there (and at omega_check = inf)."""
     fig7 = fig7_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n], math.inf]), chi0=CHI0, radius=RADIUS, n=n)
-    w0 = 0.236  # J/m^2, Fig. 4 caption; E* chosen so that Eq. (64) gives chi0 = CHI0
-    params = GentSchultzParameters(w0=w0, n=n, v0=44.5e-6)
+    w0 = W0  # J/m^2, Fig. 4 caption; E* chosen so that Eq. (64) gives chi0 = CHI0
+    params = GentSchultzParameters(w0=w0, n=n, v0=V0)
     fig4 = fig4_table({"leading": params, "refined": params}, [200.0], np.array(AMPLITUDES_UM),
                               radius=RADIUS, reduced_modulus=9 * math.pi * w0 / (RADIUS * CHI0**3))
     leading = fig4[fig4["model"] == "leading"].set_index("h1_um")["ratio"]
@@ -184,7 +182,7 @@ def test_fig8_storage_stiffness_tends_to_flat_punch_as_omega_check_to_infinity(n
     assert np.all(np.abs(fig8["S_loss_rel"]) < 1e-4) and np.all(np.abs(fig8["phase_rad"]) < 1e-4)
 
 
-LOW_OMEGA_CHECK = {0.05: 1e-60, 0.531: 1e-6, 4.0: 1e-3}
+LOW_OMEGA_CHECK = {0.05: 1e-60, N_PUBLISHED: 1e-6, 4.0: 1e-3}
 
 
 @pytest.mark.parametrize("n", EXPONENTS)
@@ -212,7 +210,7 @@ def test_fig8_storage_stiffness_is_one_third_as_abar_to_zero() -> None:
     """Eq. (C.2) at a_m = a_o: with J0(0) = J1(0) = 1 and abar_m = 1 the low-frequency limit is
     (1 - 1/4)^-1 (1 - 3/4) = 1/3 exactly. At omega_check = 1e-12 and h1 = 1 nm (n = 0.531) Abar ~ 1e-18,
     J1 - 1 and J0 - 1 are O(Abar^(2n)) and 1/r^2 ~ 1e-12: tolerance 1e-9."""
-    law = GentSchultz(0.531)
+    law = GentSchultz(N_PUBLISHED)
     sol = nominal_point_contact(1e-9 / RADIUS, 1e-12, CHI0, law)
     s = dynamic_stiffness(sol.abar, sol.abar_m, CHI0, 1e-12, law)
     assert float(sol.abar) < 1e-15
@@ -223,8 +221,8 @@ def test_fig8_along_fig6_grid_goes_from_one_third_to_one_monotonically() -> None
     """Across the figure's range (omega_check 1e1 .. 1e9) the storage stiffness lies between the two
     limits 1/3 and 1 and increases with frequency for every amplitude (paper's Fig. 8)."""
     grid = np.logspace(1, 9, 81)
-    fig8 = fig8_table(fig6_table(AMPLITUDES_UM, grid, chi0=CHI0, radius=RADIUS, n=0.531),
-                              chi0=CHI0, n=0.531)
+    fig8 = fig8_table(fig6_table(AMPLITUDES_UM, grid, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED),
+                              chi0=CHI0, n=N_PUBLISHED)
     for _, rows in fig8.groupby("h1_um"):
         s = rows.sort_values("omega_check")["S_storage_rel"].to_numpy()
         assert np.all(np.diff(s) > 0) and s[0] > 1 / 3 - 1e-12 and s[-1] < 1 + 1e-12

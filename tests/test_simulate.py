@@ -1,4 +1,4 @@
-"""Direct simulation of the full model (vibroadhesion.simulation.simulate): shooting checked against
+"""Direct simulation of the full model (vibroadhesion.simulation): shooting checked against
 independent references.
 
 References, each named in the test that uses it:
@@ -24,17 +24,14 @@ import math
 import mpmath as mp
 import numpy as np
 import pytest
+from conftest import C_O, CHI0, N_PUBLISHED, NU0, RADIUS
 
-from vibroadhesion.simulation import simulate as sim
+from vibroadhesion import simulation as sim
+from vibroadhesion.simulation.model import contact_kernel
+from vibroadhesion.simulation.shooting import _Bracket
 from vibroadhesion.core.groups import contact_radius_scale
 from vibroadhesion.core.jkr import contact_force, indentation
 from vibroadhesion.core.ratelaw import GentSchultz
-
-CHI0 = 2.589e-2
-RADIUS = 51.5e-3
-NU0 = 1.227e-5
-N_PUBLISHED = 0.531
-C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R below Eq. (86)
 
 
 def excitation(h1_um: float, omega_check: float, n: float = N_PUBLISHED, **kw) -> sim.BaseExcitation:
@@ -144,16 +141,16 @@ def test_contact_kernel_against_dimensional_jkr_and_inverse_law() -> None:
         a, w = abar * a_o, w_ratio * w0
         deltabar = float(indentation(a, w, e_star, RADIUS)) * RADIUS / a_o**2
         phat_si = float(contact_force(a, w, e_star, RADIUS)) * RADIUS / (e_star * a_o**3)
-        x, x_a, x_d, phat, sqrt_w = sim._contact(abar, deltabar, 1 / N_PUBLISHED, log_cap)
+        x, x_a, x_d, phat, sqrt_w = contact_kernel(abar, deltabar, 1 / N_PUBLISHED, log_cap)
         assert phat == pytest.approx(phat_si, rel=1e-12)
         assert sqrt_w == pytest.approx(math.sqrt(w_ratio), rel=1e-12)
         assert x == pytest.approx(float(law.speed(w_ratio)), rel=1e-6 if w_ratio - 1 < 1e-6 else 1e-12)
         h = 1e-6
         if abs(w_ratio - 1) > 1e-6:
-            fd_a = (sim._contact(abar + h, deltabar, 1 / N_PUBLISHED, log_cap)[0]
-                    - sim._contact(abar - h, deltabar, 1 / N_PUBLISHED, log_cap)[0]) / (2 * h)
-            fd_d = (sim._contact(abar, deltabar + h, 1 / N_PUBLISHED, log_cap)[0]
-                    - sim._contact(abar, deltabar - h, 1 / N_PUBLISHED, log_cap)[0]) / (2 * h)
+            fd_a = (contact_kernel(abar + h, deltabar, 1 / N_PUBLISHED, log_cap)[0]
+                    - contact_kernel(abar - h, deltabar, 1 / N_PUBLISHED, log_cap)[0]) / (2 * h)
+            fd_d = (contact_kernel(abar, deltabar + h, 1 / N_PUBLISHED, log_cap)[0]
+                    - contact_kernel(abar, deltabar - h, 1 / N_PUBLISHED, log_cap)[0]) / (2 * h)
             assert x_a == pytest.approx(fd_a, rel=1e-6)
             assert x_d == pytest.approx(fd_d, rel=1e-6)
 
@@ -164,10 +161,10 @@ def test_speed_saturation_is_invisible_below_the_cap_and_bounds_it() -> None:
     cap = 1e12
     law = GentSchultz(0.05)
     phi_below = 1.0 + (1e-3 * cap) ** 0.05
-    x = sim._contact(1.0, 1.0 - math.sqrt(phi_below), 20.0, math.log(cap))[0]
+    x = contact_kernel(1.0, 1.0 - math.sqrt(phi_below), 20.0, math.log(cap))[0]
     assert x == pytest.approx(float(law.speed(phi_below)), rel=1e-14)
-    assert sim._contact(1.0, -1e3, 20.0, math.log(cap))[0] == pytest.approx(-cap, rel=1e-14)
-    assert sim._contact(1.0, 1.0, 20.0, math.log(cap))[0] == pytest.approx(cap, rel=1e-14)  # gap = 0
+    assert contact_kernel(1.0, -1e3, 20.0, math.log(cap))[0] == pytest.approx(-cap, rel=1e-14)
+    assert contact_kernel(1.0, 1.0, 20.0, math.log(cap))[0] == pytest.approx(cap, rel=1e-14)  # gap = 0
 
 
 # --------------------------------------------------------------------------- static state
@@ -360,6 +357,24 @@ def test_speed_range_flag() -> None:
     assert r.peak_speed_in_range is None
     assert sim.steady_state(ex, speed_range=(0.0, 2 * r.peak_speed)).peak_speed_in_range is True
     assert sim.steady_state(ex, speed_range=(0.0, 0.5 * r.peak_speed)).peak_speed_in_range is False
+
+
+def test_rigid_bracket_keeps_the_fixed_point_and_bisects_steps_that_leave_it() -> None:
+    """Reference: the rule of the shooting module's docstring. r > 0 at a0 puts the fixed point
+    above a0, r < 0 below; a step leaving the bracket is replaced by its midpoint, or, before an
+    upper end is known, by a doubling (of a0 after a contact loss, else of the last step from the
+    lower end); the bracket is exhausted at 4e-16 relative width."""
+    bracket = _Bracket()
+    bracket.record_loss(0.5)
+    assert bracket.fallback(0.5, math.nan) == 1.0
+    bracket.record(1.0, 1e-3)
+    assert (bracket.lower, bracket.lower_is_loss, bracket.upper) == (1.0, False, math.inf)
+    assert bracket.fallback(1.0, 1.5) == 1.5
+    assert bracket.fallback(1.2, 0.5) == pytest.approx(1.6, rel=1e-15)
+    bracket.record(3.0, -1e-3)
+    assert bracket.fallback(2.0, 7.0) == 2.0 and bracket.fallback(2.0, math.nan) == 2.0
+    assert not bracket.collapsed()
+    assert _Bracket(1.0, False, 1.0 + 2.0**-52).collapsed()
 
 
 # --------------------------------------------------------------------------- compliant fixation

@@ -12,10 +12,9 @@ import math
 import numpy as np
 import pandas as pd
 import pytest
+from conftest import CHI0, ETA1, N_PUBLISHED, NU0, RADIUS
 
 from vibroadhesion.experiments import validation
-
-CHI0, RADIUS, N = 2.589e-2, 51.5e-3, 0.531
 
 
 def _by_model(rows: list[dict]) -> dict[str, dict]:
@@ -27,7 +26,7 @@ def test_small_amplitude_every_level_agrees_with_the_simulation_and_the_static_c
     the static nominal point contact (1, 1, -8/9) and of the simulation (the vibration terms are
     O(etahat^2) = O(1e-5) relative, the J-model constants differ from the exact ones only by a factor
     of order one in that correction)."""
-    rows = _by_model(validation.rigid_point(0.05, 1e6, chi0=CHI0, radius=RADIUS, n=N))
+    rows = _by_model(validation.rigid_point(0.05, 1e6, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     assert all(r["status"] == "ok" for r in rows.values())
     sim = rows["simulation"]
     for model, r in rows.items():
@@ -41,7 +40,7 @@ def test_very_high_frequency_simulation_equals_exact_averaging() -> None:
     """omega_check = 1e8, h1 = 20 um: the contact radius is frozen to A/a_m ~ 2e-5, and the simulation
     tends to the exact-averaging limit as (omega_check c_o)^-2 ~ 1e-12: abar_m, w_eff/w0 and the mean
     force agree to 1e-6. The paper's J-integral levels do not (22 % in w_eff/w0, measured)."""
-    rows = _by_model(validation.rigid_point(20.0, 1e8, chi0=CHI0, radius=RADIUS, n=N))
+    rows = _by_model(validation.rigid_point(20.0, 1e8, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     sim, avg, refined = rows["simulation"], rows["exact_averaging"], rows["refined"]
     for q in ("abar_m", "w_eff_ratio", "Pm_over_PJKR"):
         assert abs(avg[q] / sim[q] - 1) < 1e-6, q
@@ -52,7 +51,7 @@ def test_contact_loss_is_a_status_with_no_numbers_and_no_error_rows() -> None:
     """h1 = 100 um at omega_check = 1e4: the refined model predicts A/a_m ~ 1.5 (outside the model), the
     simulation loses contact: its row has status contact_loss and NaN numbers, and relative_errors
     leaves the point out instead of comparing against a number that does not exist."""
-    grid = pd.DataFrame(validation.rigid_point(100.0, 1e4, chi0=CHI0, radius=RADIUS, n=N))
+    grid = pd.DataFrame(validation.rigid_point(100.0, 1e4, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     sim = grid[grid["model"] == "simulation"].iloc[0]
     assert sim["status"] == "contact_loss"
     assert all(math.isnan(sim[q]) for q in validation.QUANTITIES)
@@ -73,8 +72,8 @@ def test_compliant_sweep_far_from_resonance_agrees_with_refined_and_orbits_are_s
     truncation as in the rigid case)."""
     from vibroadhesion.models.compliant import CompliantFixation
 
-    p = CompliantFixation(CHI0, 3.883e-4, 1.227e-5, kappa=1e-3, mu=0.0, zeta=0.01)
-    sweep = validation.compliant_sweep(p, N, [18.0, 20.0])
+    p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.01)
+    sweep = validation.compliant_sweep(p, N_PUBLISHED, [18.0, 20.0])
     sim, refined = sweep[sweep["model"] == "simulation"], sweep[sweep["model"] == "refined"]
     assert len(refined) == 2 and (sim["status"].str.startswith("ok")).all() and sim["stable"].astype(bool).all()
     for _, row in sim.iterrows():

@@ -12,15 +12,15 @@ from __future__ import annotations
 import math
 
 import pytest
+from conftest import CHI0, N_PUBLISHED, OMEGA_BAR_200HZ, RADIUS
 
 from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.leading_order import Fixation, pulloff_leading
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.simulation.simulate import SpringFixation
+from vibroadhesion.simulation import SpringFixation
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 
-CHI0, RADIUS = 2.589e-2, 51.5e-3
-LAW = GentSchultz(0.531)
+LAW = GentSchultz(N_PUBLISHED)
 OMEGA_CHECK_200HZ = 1.4543e6
 
 
@@ -53,7 +53,7 @@ def test_paper_criterion_a_m_equals_a_cr_is_not_where_the_simulated_force_peaks(
     assert result.abar_m < 0.9 * result.abar_cr
 
 
-@pytest.mark.parametrize("omega_bar", [0.5, 17.85])
+@pytest.mark.parametrize("omega_bar", [0.5, OMEGA_BAR_200HZ])
 def test_very_stiff_spring_gives_the_rigid_simulated_pulloff(omega_bar: float) -> None:
     """kappa = 1e3 (k = 1e3 E* R, c_o/kappa = 1.6e-5) at 200 Hz, h1 = 20 um, zeta = 0.01: the spring takes a
     negligible share of the withdrawal, so the compliant family's pull-off equals the rigid one to 1e-4
@@ -78,7 +78,7 @@ def test_compliant_family_that_loses_contact_before_a_force_extremum_reports_it(
     omega_bar) but omega_check = 1e4, h1 = 20 um: the family of steady states runs from the nominal point
     contact to deltabar0 = -26.15 with the mean force still growing more tensile (measured -2.185 |P_JKR|),
     and the transient just beyond its last orbit loses contact (after 60 periods): a status, no number."""
-    result = simulated_pulloff(20e-6 / RADIUS, 1e4, CHI0, LAW, SpringFixation(kappa=1e-3, zeta=0.01, nu0=17.85 / 1e4))
+    result = simulated_pulloff(20e-6 / RADIUS, 1e4, CHI0, LAW, SpringFixation(kappa=1e-3, zeta=0.01, nu0=OMEGA_BAR_200HZ / 1e4))
     assert result.status == "contact_loss_before_extremum"
     assert result.steady_states > 10  # a family, not a loss at the start
     assert math.isnan(result.ratio) and math.isnan(result.abar_m)

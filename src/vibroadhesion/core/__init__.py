@@ -1,5 +1,7 @@
-"""Parameters and kernels: the Gent–Schultz rate law (Eqs. 6, 73–75), the J-integrals (Eqs. 28, 29, 36),
-JKR contact (Eqs. 4, 5, 60, 70) and the dimensionless groups (Eqs. 64–66, 81, 86, 97, 105).
+"""Parameters and kernels of the model, on which every model level builds.
+
+The Gent–Schultz rate law (Eqs. 6, 73–75), the J-integrals (Eqs. 28, 29, 36), JKR contact
+(Eqs. 4, 5, 60, 70) and the dimensionless groups (Eqs. 64–66, 81, 86, 97, 105).
 
 Layer 1: imports only from :mod:`vibroadhesion.numerics`.
 """

@@ -44,7 +44,9 @@ def amplitude_in_contact_units(eta1: ArrayLike, chi0: float) -> NDArray[np.float
     return eta1 / contact_radius_ratio(chi0) ** 2
 
 
-def contact_radius_amplitude_ratio(abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike) -> NDArray[np.float64]:
+def contact_radius_amplitude_ratio(
+    abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike
+) -> NDArray[np.float64]:
     """A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check) = Abar / (c_o abar_m omega_check).
 
     From Eqs. (45), (86), (105): A = Abar v0/omega, so A/a_m = Abar (v0/(omega R)) / (c_o abar_m). The

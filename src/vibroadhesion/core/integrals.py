@@ -41,6 +41,9 @@ from scipy.special import beta, gammaln
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
 
 #: Panels of the fixed rule in y = -ln(2t/pi): (start, end, number of Gauss–Legendre nodes).
+#: Three arrays of one shape: (J0, Jc1, J1), or nodes, ln(sin t) and weights of the rule.
+Triple = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
+
 _PANEL_WIDTH = 2.0
 _Y_MAX = 36.0
 _BLOCK = 512  # rows per block: keeps the (block x nodes) work arrays in cache
@@ -54,7 +57,7 @@ def _nodes_on_panel(y_mid: float) -> int:
 
 
 @cache
-def folded_rule() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def folded_rule() -> Triple:
     """Nodes t_k in (0, pi/2), ln(sin t_k), and the (nodes x 3) weight matrix of (J0, Jc1, J1).
 
     Columns: weights of S for J0, of D for Jc1, of S for J1 (the last two folded with sin t and
@@ -62,7 +65,7 @@ def folded_rule() -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.
     """
     edges = np.arange(0.0, _Y_MAX + 0.5 * _PANEL_WIDTH, _PANEL_WIDTH)
     ys, ws = [], []
-    for a, b in zip(edges[:-1], edges[1:]):
+    for a, b in zip(edges[:-1], edges[1:], strict=True):
         x, w = np.polynomial.legendre.leggauss(_nodes_on_panel(0.5 * (a + b)))
         ys.append(0.5 * (b - a) * x + 0.5 * (a + b))
         ws.append(0.5 * (b - a) * w)
@@ -89,7 +92,7 @@ def _as_abar(abar: ArrayLike) -> NDArray[np.float64]:
     return a
 
 
-def j_integrals(abar: ArrayLike, n: float) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def j_integrals(abar: ArrayLike, n: float) -> Triple:
     """J0, Jc1 and J1 of the Gent–Schultz law (Eqs. 28, 29, 36 with Eqs. 73–75).
 
     Vectorised over ``abar`` (any shape; each output has that shape). ``n`` is the
@@ -119,7 +122,7 @@ def j_integrals(abar: ArrayLike, n: float) -> tuple[NDArray[np.float64], NDArray
     return j0, jc1, j1
 
 
-def j_integrals_general(abar: ArrayLike, law: RateLaw) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def j_integrals_general(abar: ArrayLike, law: RateLaw) -> Triple:
     """J0, Jc1 and J1 of an arbitrary rate law, Eqs. (28), (29), (36), on the same fixed rule.
 
     The odd part D is formed as a difference of sqrt(f) at +-v, so for small Abar Jc1 carries
@@ -139,7 +142,7 @@ def j_integrals_general(abar: ArrayLike, law: RateLaw) -> tuple[NDArray[np.float
     return j0, jc1, j1
 
 
-def j_integrals_for_law(abar: ArrayLike, law: RateLaw) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def j_integrals_for_law(abar: ArrayLike, law: RateLaw) -> Triple:
     """J0, Jc1, J1 of any rate law: the fast path for :class:`GentSchultz`, the general rule otherwise."""
     if isinstance(law, GentSchultz):
         return j_integrals(abar, law.n)
@@ -156,7 +159,7 @@ def _sin2_cos_power_integral(p: float) -> float:
     return 0.5 * float(beta(1.5, 0.5 * (p + 1)))
 
 
-def j_integrals_large_abar(abar: ArrayLike, n: float) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def j_integrals_large_abar(abar: ArrayLike, n: float) -> Triple:
     """Leading large-Abar asymptotes of (J0, Jc1, J1) for the Gent–Schultz law.
 
     Only the opening half contributes at leading order (end of Sec. 3.3), sqrt(1+u) ~ u^{1/2}:
@@ -178,7 +181,7 @@ def j_integrals_large_abar(abar: ArrayLike, n: float) -> tuple[NDArray[np.float6
     )
 
 
-def j_integrals_small_abar(abar: ArrayLike, n: float) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+def j_integrals_small_abar(abar: ArrayLike, n: float) -> Triple:
     """Small-Abar expansions of (J0, Jc1, J1) for the Gent–Schultz law, first correction kept.
 
     With u = (Abar sin t)^n: S = 2 + u^2/4 + O(u^3) and D = -u + u^2/2 + O(u^3), so

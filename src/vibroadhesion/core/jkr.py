@@ -14,7 +14,10 @@ from numpy.typing import ArrayLike, NDArray
 def contact_force(a: ArrayLike, w: ArrayLike, reduced_modulus: float, radius: float) -> NDArray[np.float64]:
     """P = 4 E* a^3 / (3R) - sqrt(8 pi w E* a^3), Eq. (4) (Eq. A.4 with w = w0)."""
     a = np.asarray(a, dtype=float)
-    return 4.0 * reduced_modulus * a**3 / (3.0 * radius) - np.sqrt(8.0 * math.pi * np.asarray(w) * reduced_modulus * a**3)
+    return (
+        4.0 * reduced_modulus * a**3 / (3.0 * radius)
+        - np.sqrt(8.0 * math.pi * np.asarray(w) * reduced_modulus * a**3)
+    )
 
 
 def indentation(a: ArrayLike, w: ArrayLike, reduced_modulus: float, radius: float) -> NDArray[np.float64]:

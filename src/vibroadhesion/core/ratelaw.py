@@ -40,6 +40,7 @@ class GentSchultz:
     n: float
 
     def __post_init__(self) -> None:
+        """Reject an exponent that is not a positive finite number (Eq. 73 needs n > 0)."""
         if not (np.isfinite(self.n) and self.n > 0):
             raise ValueError(f"Gent–Schultz exponent n must be a positive number, got {self.n!r}")
 

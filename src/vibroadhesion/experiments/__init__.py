@@ -1,6 +1,7 @@
-"""What the pipeline asks of the models: pull-off in physical units, the Gent–Schultz fit, the virtual
-pull-off experiment, the validation of every level against the simulation, identifiability and
-speed against error. No file I/O.
+"""What the pipeline asks of the models; no file I/O.
+
+Pull-off in physical units, the Gent–Schultz fit, the virtual pull-off experiment, the
+validation of every level against the simulation, identifiability and speed against error.
 
 Layer 4: imports from every layer below.
 """

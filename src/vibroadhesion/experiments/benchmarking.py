@@ -52,6 +52,7 @@ def _max_error(values: np.ndarray, reference: np.ndarray) -> float:
 
 
 def machine_description() -> str:
+    """One line naming the CPU, the core count and the Python and numpy versions (for benchmark tables)."""
     cpu = platform.processor() or platform.machine()
     try:
         with open("/proc/cpuinfo", encoding="utf-8") as fh:
@@ -70,13 +71,13 @@ def benchmark_j_integrals(
 ) -> pd.DataFrame:
     """Table of throughput and maximal error of both methods (one row per method and n)."""
     rows = []
-    error_abar = np.asarray(error_abar, dtype=float)
+    error_points = np.asarray(error_abar, dtype=float)
     timing_abar = np.logspace(-3, 10, throughput_size)
     quad_abar = np.logspace(-3, 10, quad_size)
     for n in exponents:
-        ref = np.array([[float(v) for v in reference(float(a), n)] for a in error_abar])
-        fast = np.stack(j_integrals(error_abar, n), axis=1)
-        slow = np.array([j_integrals_quad(float(a), n) for a in error_abar])
+        ref = np.array([[float(v) for v in reference(float(a), n)] for a in error_points])
+        fast = np.stack(j_integrals(error_points, n), axis=1)
+        slow = np.array([j_integrals_quad(float(a), n) for a in error_points])
         start = time.perf_counter()
         j_integrals(timing_abar, n)
         fast_rate = throughput_size / (time.perf_counter() - start)

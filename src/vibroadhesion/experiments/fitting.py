@@ -25,6 +25,7 @@ A trial point at which the model has no solution stops the fit with :class:`FitE
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
@@ -51,11 +52,18 @@ class FitError(RuntimeError):
     """The least-squares iteration failed; no estimate is reported."""
 
 
-def _residual_function(rows: pd.DataFrame, model: Model, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]):
+ResidualFunction = Callable[[np.ndarray], np.ndarray]
+ParameterMap = Callable[[np.ndarray], GentSchultzParameters]
+
+
+def _residual_function(
+    rows: pd.DataFrame, model: Model, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
+) -> tuple[ResidualFunction, ParameterMap]:
+    """Relative residuals P_model/P_observed - 1 of the rows as a function of ln(free), and the parameter map."""
     freq, h1, observed = (rows[c].to_numpy(float) for c in ("frequency_hz", "h1_um", "pulloff_mN"))
 
     def params_of(log_values: np.ndarray) -> GentSchultzParameters:
-        return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values)})
+        return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values, strict=True)})
 
     def residuals(log_values: np.ndarray) -> np.ndarray:
         return predict_pulloff(model, params_of(log_values), freq, h1, **geometry).pulloff_mN / observed - 1.0
@@ -63,7 +71,10 @@ def _residual_function(rows: pd.DataFrame, model: Model, base: GentSchultzParame
     return residuals, params_of
 
 
-def _least_squares(rows, model, base, free, geometry) -> dict[str, Any]:
+def _least_squares(
+    rows: pd.DataFrame, model: Model, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
+) -> dict[str, Any]:
+    """Least squares in ln(free) with bounds (trust-region reflective); the fit record of ``fit_gent_schultz``."""
     residuals, params_of = _residual_function(rows, model, base, free, geometry)
     lo, hi = np.log([BOUNDS[name] for name in free]).T
     x0 = np.clip(np.log([getattr(base, name) for name in free]), lo, hi)
@@ -80,7 +91,7 @@ def _least_squares(rows, model, base, free, geometry) -> dict[str, Any]:
     return {
         "params": params_of(result.x),
         "jac": result.jac,
-        "at_bound": [name for name, b in zip(free, on_bound) if b],
+        "at_bound": [name for name, b in zip(free, on_bound, strict=True) if b],
         "s2": rss / (m - p),
         "residuals": result.fun,
         "nfev": int(result.nfev),
@@ -88,9 +99,15 @@ def _least_squares(rows, model, base, free, geometry) -> dict[str, Any]:
     }
 
 
-def _v0_identifiability(rows, model, fit, geometry, max_relative_se: float, noise_floor: float) -> tuple[bool, str]:
-    """Would v0 be determined if freed at the (w0, n) fit? Relative standard error of v0 from the
-    central-difference Jacobian in (ln w0, ln n, ln v0) there, at a residual scale floored at ``noise_floor``."""
+def _v0_identifiability(
+    rows: pd.DataFrame, model: Model, fit: dict[str, Any], geometry: dict[str, float], max_relative_se: float,
+    noise_floor: float,
+) -> tuple[bool, str]:
+    """Would v0 be determined if freed at the (w0, n) fit?
+
+    Relative standard error of v0 from the central-difference Jacobian in (ln w0, ln n, ln v0)
+    there, at a residual scale floored at ``noise_floor``.
+    """
     residuals, _ = _residual_function(rows, model, fit["params"], ("w0", "n", "v0"), geometry)
     x = np.log([fit["params"].w0, fit["params"].n, fit["params"].v0])
     step = 1e-4
@@ -123,7 +140,7 @@ def fit_gent_schultz(
     frequencies = sorted(set(rows["frequency_hz"].tolist()))
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
 
-    free = ("w0", "n")
+    free: tuple[str, ...] = ("w0", "n")
     if model != "refined":
         v0_note = f"v0 not identifiable: the {model} model is frequency independent, v0 does not enter it"
     elif len(frequencies) < 2:
@@ -134,7 +151,8 @@ def fit_gent_schultz(
         v0_note = ""
     if len(rows) <= 2:
         summary.update(status="published", note=f"{len(rows)} rows cannot determine w0 and n: published values kept",
-                       parameters=_parameter_table(published, (), (), None), v0_identifiable=False, v0_note=v0_note or "no fit")
+                       parameters=_parameter_table(published, (), (), None), v0_identifiable=False,
+                       v0_note=v0_note or "no fit")
         return summary
 
     fit = _least_squares(rows, model, published, free, geometry)
@@ -152,8 +170,8 @@ def fit_gent_schultz(
     theta = np.array([getattr(fit["params"], name) for name in inside])
     jac = fit["jac"][:, columns]
     cov = fit["s2"] * np.linalg.inv(jac.T @ jac) * np.outer(theta, theta)
-    bound_note = "; ".join(f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: the model cannot "
-                           f"represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"])
+    bound_note = "; ".join(f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
+                           f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"])
     summary.update(
         status="at_bound" if fit["at_bound"] else "fitted",
         note=bound_note,
@@ -162,7 +180,7 @@ def fit_gent_schultz(
         parameters=_parameter_table(fit["params"], free, inside, cov),
         covariance={"parameters": list(inside), "matrix": cov.tolist()},
         residuals_mN=[{"line": int(line), "residual": float(r * obs)}
-                      for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"])],
+                      for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"], strict=True)],
         rms_relative_residual=float(np.sqrt(np.mean(fit["residuals"] ** 2))),
         v0_identifiable="v0" in free,
         v0_note=v0_note,

@@ -3,8 +3,9 @@
 No measured pull-off numbers behind Fig. 4 are published, so the question is asked of the simulated
 (virtual) pull-off rows of :mod:`vibroadhesion.experiments.virtual_pulloff`, whose true parameters are known:
 
-1. **What each model level recovers.** The pipeline's own fit (:func:`vibroadhesion.experiments.fitting.fit_gent_schultz`)
-   is run on the noise-free simulated rows with every model level. Its misfit is pure model error,
+1. **What each model level recovers.** The pipeline's own fit
+   (:func:`vibroadhesion.experiments.fitting.fit_gent_schultz`) is run on the noise-free simulated
+   rows with every model level. Its misfit is pure model error,
    so the distance of the recovered parameters from the true ones is the bias a user would get
    from that level on perfect data.
 
@@ -46,7 +47,9 @@ FIT_COLUMNS = ["model", "status", "w0", "w0_se", "w0_error", "n", "n_se", "n_err
                "v0_identifiable", "rms_relative_residual", "max_relative_residual", "note"]
 
 
-def perturbed(params: GentSchultzParameters, parameter: str, sign: int, step: float = LOG_STEP) -> GentSchultzParameters:
+def perturbed(
+    params: GentSchultzParameters, parameter: str, sign: int, step: float = LOG_STEP
+) -> GentSchultzParameters:
     """``params`` with ``parameter`` multiplied by exp(sign * step)."""
     if parameter not in PARAMETERS or sign not in (-1, 1):
         raise ValueError(f"need a parameter in {PARAMETERS} and sign +-1, got {parameter!r}, {sign!r}")
@@ -70,7 +73,8 @@ def fit_level(rows: pd.DataFrame, model: Model, truth: GentSchultzParameters, *,
     for name in PARAMETERS:
         entry = summary["parameters"][name]
         row[name], row[f"{name}_se"] = entry["estimate"], entry["std_error"]
-        row[f"{name}_error"] = entry["estimate"] / getattr(truth, name) - 1.0 if name in summary["free_parameters"] else math.nan
+        free = name in summary["free_parameters"]
+        row[f"{name}_error"] = entry["estimate"] / getattr(truth, name) - 1.0 if free else math.nan
     relative = np.array([r["residual"] for r in summary["residuals_mN"]]) / rows["pulloff_mN"].to_numpy(float)
     row.update(v0_identifiable=summary["v0_identifiable"], rms_relative_residual=summary["rms_relative_residual"],
                max_relative_residual=float(np.max(np.abs(relative))),
@@ -93,7 +97,8 @@ def log_sensitivity(base: pd.DataFrame, plus: Mapping[str, pd.DataFrame], minus:
         failed = frame[frame["status"] != "pulloff"]
         if len(failed):
             f, h = failed.iloc[0][key]
-            raise ValueError(f"run {label}: no simulated pull-off at {f:g} Hz, h1 = {h:g} um ({failed.iloc[0]['status']})")
+            status = failed.iloc[0]["status"]
+            raise ValueError(f"run {label}: no simulated pull-off at {f:g} Hz, h1 = {h:g} um ({status})")
     for name in PARAMETERS:
         up = table[key].merge(plus[name], on=key, how="left", validate="one_to_one")["pulloff_mN"].to_numpy(float)
         down = table[key].merge(minus[name], on=key, how="left", validate="one_to_one")["pulloff_mN"].to_numpy(float)
@@ -109,9 +114,11 @@ def frequency_derivative(simulated: pd.DataFrame, at_hz: float) -> pd.DataFrame:
     """
     rows = []
     for h1, group in simulated.groupby("h1_um", sort=True):
-        if group["frequency_hz"].nunique() < 3:
-            raise ValueError(f"h1 = {h1:g} um: need three frequencies for a parabola, got {group['frequency_hz'].nunique()}")
-        coefficients = np.polyfit(np.log(group["frequency_hz"].to_numpy(float)), np.log(group["pulloff_mN"].to_numpy(float)), 2)
+        count = group["frequency_hz"].nunique()
+        if count < 3:
+            raise ValueError(f"h1 = {h1:g} um: need three frequencies for a parabola, got {count}")
+        log_f, log_p = np.log(group["frequency_hz"].to_numpy(float)), np.log(group["pulloff_mN"].to_numpy(float))
+        coefficients = np.polyfit(log_f, log_p, 2)
         rows.append({"h1_um": h1, "minus_dlnP_dlnomega": -float(np.polyval(np.polyder(coefficients), math.log(at_hz)))})
     return pd.DataFrame(rows)
 
@@ -159,31 +166,34 @@ def recommendation(fits: pd.DataFrame, information: pd.DataFrame, sensitivity: p
     if usable.empty:
         return "No model level could be fitted to the simulated rows: fit none of them to real data."
     best, rest = usable.iloc[0], usable.iloc[1:]
-    bound = information[(information["relative_noise"] == noise) & (information["design"] == "virtual experiment")].iloc[0]
-    with_static = information[(information["relative_noise"] == noise) & (information["design"] != "virtual experiment")].iloc[0]
+    at_noise = information[information["relative_noise"] == noise]
+    bound = at_noise[at_noise["design"] == "virtual experiment"].iloc[0]
+    with_static = at_noise[at_noise["design"] != "virtual experiment"].iloc[0]
     others = ", ".join(f"{100 * r.rms_relative_residual:.1f} % ({r.model})" for r in rest.itertuples())
-    text = [f"Fit real data with **{best.model}**: its misfit to the noise-free simulated rows, which is pure model error, "
-            f"is {100 * best.rms_relative_residual:.1f} % rms ({100 * best.max_relative_residual:.1f} % at worst), "
+    text = [f"Fit real data with **{best.model}**: its misfit to the noise-free simulated rows, "
+            f"which is pure model error, is {100 * best.rms_relative_residual:.1f} % rms "
+            f"({100 * best.max_relative_residual:.1f} % at worst), "
             f"against {others}."]
     fitted = [name for name in PARAMETERS if np.isfinite(best[f"{name}_error"])]
     trusted = [name for name in fitted if abs(best[f"{name}_error"]) <= bound[f"{name}_relative_se"]]
     biased = [name for name in fitted if name not in trusted]
     if trusted:
         text.append("Trust its " + ", ".join(f"**{name}** (bias {100 * best[f'{name}_error']:+.1f} %, within the "
-                                            f"{100 * bound[f'{name}_relative_se']:.2g} % that {100 * noise:g} % scatter allows)"
-                                            for name in trusted) + ".")
+                                            f"{100 * bound[f'{name}_relative_se']:.2g} % that {100 * noise:g} % "
+                                            "scatter allows)" for name in trusted) + ".")
     for name in biased:
         column = f"dlnP_dln{name}"
         strongest = sensitivity.loc[sensitivity[column].abs().idxmax()]
-        text.append(f"Do not trust its {name}: bias {100 * best[f'{name}_error']:+.0f} % where the scatter alone would allow "
-                    f"{100 * bound[f'{name}_relative_se']:.2g} %. The rows that carry the information on {name} "
-                    f"(|d ln P/d ln {name}| up to {abs(strongest[column]):.2g}, at h1 = {strongest['h1_um']:g} um) are those "
-                    f"where the asymptotic levels are wrong by up to {100 * best.max_relative_residual:.0f} %; "
+        text.append(f"Do not trust its {name}: bias {100 * best[f'{name}_error']:+.0f} % where the scatter alone "
+                    f"would allow {100 * bound[f'{name}_relative_se']:.2g} %. The rows that carry the information on "
+                    f"{name} (|d ln P/d ln {name}| up to {abs(strongest[column]):.2g}, "
+                    f"at h1 = {strongest['h1_um']:g} um) are those where the asymptotic levels are wrong by up to "
+                    f"{100 * best.max_relative_residual:.0f} %; "
                     f"only a fit with the full model (the simulation) could recover it.")
     lost = [name for name in PARAMETERS if not bound[f"{name}_identifiable"]]
     for name in lost:
-        text.append(f"{name} is not identifiable from these rows by any model: even the simulated pull-off fixes it only to "
-                    f"{100 * bound[f'{name}_relative_se']:.3g} % at {100 * noise:g} % scatter "
+        text.append(f"{name} is not identifiable from these rows by any model: even the simulated pull-off fixes it "
+                    f"only to {100 * bound[f'{name}_relative_se']:.3g} % at {100 * noise:g} % scatter "
                     f"(correlation of n and v0 {bound['corr_n_v0']:.3f}); take it from an independent rate test.")
     text.append(f"One static (h1 = 0) JKR pull-off test added to the design pins w0 to "
                 f"{100 * with_static['w0_relative_se']:.2g} % (from {100 * bound['w0_relative_se']:.2g} %).")

@@ -21,12 +21,11 @@ from typing import Literal, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from vibroadhesion.models import exact_averaging
-
 from vibroadhesion.core import groups
 from vibroadhesion.core.jkr import pulloff_force
-from vibroadhesion.models.leading_order import PulloffEstimate, pulloff_leading
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models import exact_averaging
+from vibroadhesion.models.leading_order import PulloffEstimate, pulloff_leading
 from vibroadhesion.models.refined import pulloff_refined
 
 Model = Literal["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]
@@ -43,6 +42,8 @@ class GentSchultzParameters:
 
 
 class PulloffPrediction(NamedTuple):
+    """Pull-off of one model level at each (frequency, amplitude), broadcast (Eqs. 49, 71)."""
+
     abar_cr: NDArray[np.float64]  # internal variable Abar at detachment
     j0: NDArray[np.float64]  # sqrt(w_eff/w0) there (J0(Abar_cr) for the J-integral levels, Eq. 49)
     ratio: NDArray[np.float64]  # P_cr / P_cr^JKR, Eq. (71)
@@ -65,7 +66,8 @@ def predict_pulloff(
     if model == "refined":
         est = pulloff_refined(eta1, chi0, groups.omega_check(frequency_hz, params.v0, radius), law)
     elif model in MODELS:
-        est = _frequency_independent(model, np.broadcast_arrays(eta1, np.asarray(frequency_hz, dtype=float))[0], chi0, law)
+        eta1_each = np.broadcast_arrays(eta1, np.asarray(frequency_hz, dtype=float))[0]
+        est = _frequency_independent(model, eta1_each, chi0, law)
     else:
         raise ValueError(f"unknown model {model!r}; expected one of {MODELS}")
     magnitude_mN = -pulloff_force(params.w0, radius) * est.ratio * 1e3

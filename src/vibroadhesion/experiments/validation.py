@@ -4,7 +4,7 @@ For each base amplitude h1 and frequency omega_check the steady state of the rig
 nominal point contact (h0 = hhat, Eq. 78) is computed five ways:
 
 * ``simulation``: periodic orbit of Eqs. (4), (5) with w = w0 f(adot/v0), shooting on the
-  one-period map (:mod:`vibroadhesion.simulation.simulate`), the ground truth;
+  one-period map (:mod:`vibroadhesion.simulation`), the ground truth;
 * ``leading``: Eq. (55) with abar_m^(3/2) = J0 (Eqs. 99, 123), frequency independent (the
   omega_check -> infinity limit of the refined model); A/a_m from its Abar at the given omega_check;
 * ``refined``: Eqs. (122)–(123);
@@ -23,21 +23,21 @@ Mean force of the J-integral levels: Eq. (52), P_m/|P_JKR| = (4/3) [(4/3) abar_m
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
+from typing import Any
 
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.models import exact_averaging, exact_harmonic_balance
-
-from vibroadhesion.simulation import simulate
-from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
-from vibroadhesion.models.leading_order import mean_force_over_pulloff
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.numerics.progress import ProgressBar
+from vibroadhesion.models import exact_averaging, exact_harmonic_balance
+from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
+from vibroadhesion.models.leading_order import mean_force_over_pulloff
 from vibroadhesion.models.refined import nominal_point_contact
+from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.numerics.roots import NoRootError
+from vibroadhesion import simulation
 
 MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
 QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")
@@ -50,29 +50,42 @@ APPLICABILITY_LIMIT = 0.1
 TRUSTED_ERROR = 0.05
 
 
-def _j_model_values(sol) -> tuple[float, ...]:
+#: One model level at one point: (eta1, omega_check, chi0, law) -> (status, QUANTITIES or None).
+Level = Callable[[float, float, float, GentSchultz], tuple[str, tuple[float, ...] | None]]
+
+
+def _j_model_values(sol: Any) -> tuple[float, ...]:
+    """QUANTITIES of a J-integral level's solution, P_m/|P_JKR| from Eq. (52)."""
     abar, abar_m, w_eff = float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio)
     pm = float(mean_force_over_pulloff(abar_m, math.sqrt(w_eff)))  # Eq. (52)
     return abar, abar_m, w_eff, float(sol.a_over_am), pm
 
 
-def _simulation(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
-    sim = simulate.steady_state(simulate.BaseExcitation(law, chi0, eta1, omega_check))
+def _simulation(
+    eta1: float, omega_check: float, chi0: float, law: GentSchultz
+) -> tuple[str, tuple[float, ...] | None]:
+    """The direct simulation's periodic steady state (rigid fixation) as a level."""
+    sim = simulation.steady_state(simulation.BaseExcitation(law, chi0, eta1, omega_check))
     if sim.status != "converged":
         return sim.status, None
     return "ok", (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)
 
 
 def _leading(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
+    """Leading order: the refined solution at omega_check = inf, A/a_m at the actual omega_check (corrected Eq. 98)."""
     sol = nominal_point_contact(eta1, math.inf, chi0, law)
-    return "ok", _j_model_values(sol._replace(a_over_am=contact_radius_amplitude_ratio(sol.abar, sol.abar_m, chi0, omega_check)))
+    a_over_am = contact_radius_amplitude_ratio(sol.abar, sol.abar_m, chi0, omega_check)
+    return "ok", _j_model_values(sol._replace(a_over_am=a_over_am))
 
 
 def _refined(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
+    """The refined nominal point contact (Eqs. 122-123)."""
     return "ok", _j_model_values(nominal_point_contact(eta1, omega_check, chi0, law))
 
 
-def _exact(solve):
+def _exact(solve: Callable[[float, float, float, GentSchultz], Any]) -> Level:
+    """An exact level (harmonic balance, averaging) as a :data:`Level`; no root gives ``no_solution``."""
+
     def level(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
         try:
             sol = solve(eta1, omega_check, chi0, law)
@@ -93,13 +106,16 @@ LEVELS = {
 }
 
 
-def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict]:
+def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict[str, Any]]:
     """The five model levels at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
     law = GentSchultz(n)
     rows = []
     for model, level in LEVELS.items():
         status, values = level(h1_um * 1e-6 / radius, omega_check, chi0, law)
-        numbers = dict(zip(QUANTITIES, values)) if values is not None else dict.fromkeys(QUANTITIES, math.nan)
+        if values is None:
+            numbers = dict.fromkeys(QUANTITIES, math.nan)
+        else:
+            numbers = dict(zip(QUANTITIES, values, strict=True))
         rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": status, **numbers})
     return rows
 
@@ -112,7 +128,8 @@ def rigid_grid(h1_um: float, omega_checks: Sequence[float], *, chi0: float, radi
 
 def validation_frequencies(decades: tuple[int, int], experiment_omega_check: Sequence[float]) -> np.ndarray:
     """Every whole decade of omega_check in ``decades`` plus the experiments' omega_check, sorted."""
-    return np.unique(np.concatenate([10.0 ** np.arange(decades[0], decades[1] + 1), np.asarray(experiment_omega_check)]))
+    decade_grid = 10.0 ** np.arange(decades[0], decades[1] + 1)
+    return np.unique(np.concatenate([decade_grid, np.asarray(experiment_omega_check)]))
 
 
 def relative_errors(grid: pd.DataFrame) -> pd.DataFrame:
@@ -133,12 +150,16 @@ def relative_errors(grid: pd.DataFrame) -> pd.DataFrame:
                                         "refined_A_over_am": refined.loc[err.index]}).reset_index())
     errors = pd.concat(frames, ignore_index=True)
     errors["applicable"] = errors["refined_A_over_am"] <= APPLICABILITY_LIMIT
-    return errors.sort_values(["model", "quantity", "h1_um", "omega_check"], kind="stable")[ERROR_COLUMNS].reset_index(drop=True)
+    ordered = errors.sort_values(["model", "quantity", "h1_um", "omega_check"], kind="stable")
+    return ordered[ERROR_COLUMNS].reset_index(drop=True)
 
 
 def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float]) -> pd.DataFrame:
-    """Largest relative error of each level, inside and outside the applicability region, over the
-    whole grid and at the experiments' frequencies, and the share of points below TRUSTED_ERROR."""
+    """Largest relative error of each level, inside and outside the applicability region.
+
+    Over the whole grid and at the experiments' frequencies, and the share of points below
+    TRUSTED_ERROR.
+    """
     rows = []
     for model, e in errors.groupby("model", sort=False):
         worst = e.groupby(["h1_um", "omega_check", "applicable"])["relative_error"].max().reset_index()
@@ -163,9 +184,11 @@ SWEEP_COLUMNS = ["direction", "omega_bar", "model", "branch", "status", "Abar", 
 
 def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
                     progress: ProgressBar | None = None) -> pd.DataFrame:
-    """Simulated steady states along ``omega_bar`` swept up, then down, each started from the previous
-    orbit (a slow sweep, so a fold of the response shows as a jump and a hysteresis loop), next to
-    every solution of the refined model (Eqs. 87, 90) on its traced curve at the same frequency.
+    """Simulated steady states along ``omega_bar`` swept up, then down, next to the refined model.
+
+    Each orbit is started from the previous one (a slow sweep, so a fold of the response shows as
+    a jump and a hysteresis loop), next to every solution of the refined model (Eqs. 87, 90) on its
+    traced curve at the same frequency.
 
     A start from the previous orbit that does not converge is retried from the static state
     (Eq. 82); the row says which (``status``). ``stable`` and the largest |Floquet multiplier| come
@@ -174,24 +197,25 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
     not provide one). ``progress`` advances once per simulated frequency.
     """
     law = GentSchultz(n)
-    fixation = simulate.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
+    fixation = simulation.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
     curve = trace_response_curve(p, law, (min(omega_bar), max(omega_bar)))
     rows = []
     for direction, grid in (("up", list(omega_bar)), ("down", list(omega_bar)[::-1])):
         state = None
         for w in grid:
-            excitation = simulate.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
-            sim = simulate.steady_state(excitation, fixation, initial_state=state)
+            excitation = simulation.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
+            sim = simulation.steady_state(excitation, fixation, initial_state=state)
             status, solved = "ok", 1
             if sim.status != "converged" and state is not None:
-                sim = simulate.steady_state(excitation, fixation)
+                sim = simulation.steady_state(excitation, fixation)
                 status, solved = "ok, restarted from the static state", 2
             if progress is not None:
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
             if sim.status == "converged":
                 state = sim.start_state
-                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0, "status": status,
-                             "Abar": sim.abar, "abar_m": sim.abar_m, "A_over_am": sim.a_over_am, "stable": sim.stable,
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
+                             "status": status, "Abar": sim.abar, "abar_m": sim.abar_m, "A_over_am": sim.a_over_am,
+                             "stable": sim.stable,
                              "max_floquet_multiplier": float(np.max(np.abs(sim.floquet_multipliers)))})
             else:
                 rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,

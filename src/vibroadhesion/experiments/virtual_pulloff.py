@@ -2,7 +2,7 @@
 
 No measured pull-off forces behind the paper's Fig. 4 are published; this module generates the
 simulated counterpart. The base is withdrawn quasi-statically: a family of periodic steady states
-of the full model (:mod:`vibroadhesion.simulation.simulate`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
+of the full model (:mod:`vibroadhesion.simulation`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
 (Eq. 11 with h0 growing), each orbit started from a prediction extrapolated from the previous two.
 Along the family the mean contact force P_m first grows more tensile, passes an extremum and then
 relaxes; the pull-off force is the most tensile mean force of the family, located by a bounded
@@ -41,8 +41,9 @@ transient from that orbit at the failed deltabar0 tells why: ``contact_loss_befo
 loses contact within END_TRANSIENT_PERIODS periods, ``no_steady_state_before_extremum`` otherwise.
 (Example: the compliant family kappa = 0.001, omega_bar = 17.85, h1 = 20 um at omega_check = 1e4 ends at
 deltabar0 = -26.146 with P_m still decreasing; its last orbit's Floquet multipliers, |lambda| <= 0.97,
-show no fold, and the transient from it at -26.15 loses contact after 60 periods.) The paper's detachment criterion a_m = a_cr (Eq. 60, with the simulated
-w_eff) is reported next to the simulated mean radius at pull-off so that it can be checked.
+show no fold, and the transient from it at -26.15 loses contact after 60 periods.) The paper's
+detachment criterion a_m = a_cr (Eq. 60, with the simulated w_eff) is reported next to the
+simulated mean radius at pull-off so that it can be checked.
 
 Predictions next to the simulation (:func:`pulloff_table`). Rigid rows: Eq. (72) (``leading``),
 Eq. (106) (``refined``), the exact high-frequency averaging with the paper's criterion a_m = a_cr
@@ -59,31 +60,32 @@ Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_
 from __future__ import annotations
 
 import math
-from typing import Literal, NamedTuple
+from collections.abc import Callable
+from typing import Any, Literal, NamedTuple
 
 import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
-from vibroadhesion.models import exact_averaging
-
 from vibroadhesion.core import groups
-
-from vibroadhesion.simulation import simulate
-from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.models import exact_averaging
+from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.models.leading_order import PULLOFF_SCAN, Fixation, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
-from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.numerics.roots import NoRootError
+from vibroadhesion import simulation
 
 Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
 
 
 class VirtualPulloff(NamedTuple):
+    """Outcome of one simulated pull-off: the extremum of the mean force along the family, or why none."""
+
     status: Status
     ratio: float  # P_cr / P_cr^JKR = -min P_m / |P_JKR| (positive), NaN without an extremum
     deltabar0: float  # base offset (hhat - h0) R/a_o^2 at pull-off
@@ -103,21 +105,24 @@ def _ended(failure: str, solved: int) -> VirtualPulloff:
     return VirtualPulloff(status, *(math.nan,) * 6, solved)
 
 
-def _end_of_family(excitation: simulate.BaseExcitation, fixation: simulate.SpringFixation | None,
-                   last: simulate.SteadyState, failure: str) -> str:
-    """Why the family ends: the shooting's own ``contact_loss``, or else the transient from the last orbit at
-    the nearest failed deltabar0 over END_TRANSIENT_PERIODS periods (``contact_loss`` if it loses contact)."""
+def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.SpringFixation | None,
+                   last: simulation.SteadyState, failure: str) -> str:
+    """Why the family ends: the shooting's own ``contact_loss``, or else what the transient says.
+
+    The transient runs from the last orbit at the nearest failed deltabar0 over
+    END_TRANSIENT_PERIODS periods (``contact_loss`` if it loses contact).
+    """
     if failure == "contact_loss":
         return failure
     try:
-        run = simulate.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
+        run = simulation.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
     except RuntimeError:
         return failure
     return "contact_loss" if run.status == "contact_loss" else failure
 
 
 def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz,
-                      fixation: simulate.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
+                      fixation: simulation.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
                       halvings: int = 6, iterations: int = 15) -> VirtualPulloff:
     """Pull-off from the family of steady states in deltabar0 (module docstring); ``fixation=None`` is rigid.
 
@@ -128,22 +133,23 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
     family is declared ended if it fails again.
     An orbit started from a predicted state gets ``iterations`` shooting periods (3–6 suffice along the
     families computed here; beyond the fold the shooting cannot converge, and the cap keeps those
-    attempts cheap); the first, from the static state, the default of :func:`simulate.steady_state`.
+    attempts cheap); the first, from the static state, the default of :func:`simulation.steady_state`.
     The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
     """
     sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
     solved = 0
 
-    def excitation(d0: float) -> simulate.BaseExcitation:
-        return simulate.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0)
+    def excitation(d0: float) -> simulation.BaseExcitation:
+        return simulation.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0)
 
-    def orbit(d0: float, state) -> simulate.SteadyState:
+    def orbit(d0: float, state: np.ndarray | None) -> simulation.SteadyState:
         nonlocal solved
         solved += 1
-        return simulate.steady_state(excitation(d0), fixation, initial_state=state,
-                                     **({} if state is None else {"max_iterations": iterations}))
+        if state is None:
+            return simulation.steady_state(excitation(d0), fixation, initial_state=None)
+        return simulation.steady_state(excitation(d0), fixation, initial_state=state, max_iterations=iterations)
 
-    family: list[tuple[float, simulate.SteadyState]] = []
+    family: list[tuple[float, simulation.SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
     d0, state = 0.0, None
     for _ in range(max_steps):
@@ -177,7 +183,7 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
         return _ended("not_converged", solved)
     bracket = family[-3:]  # (hi, mid, lo): the middle orbit is the most tensile so far
     (hi, _), (mid, middle), (lo, _) = bracket
-    cache: dict[float, simulate.SteadyState] = {mid: middle}
+    cache: dict[float, simulation.SteadyState] = {mid: middle}
 
     def mean_force(d: float) -> float:
         if d not in cache:
@@ -192,9 +198,12 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
                           float(at.a_over_am), solved)
 
 
-def _predicted_state(family: list[tuple[float, simulate.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
-    """Start state for the orbit at ``d0``: linear extrapolation from the last two orbits of the family;
-    from one orbit, its state with the spring's mean shifted by d xbar_m = -sigma S/(1 + sigma S) d deltabar0."""
+def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
+    """Start state for the orbit at ``d0``, extrapolated from the family.
+
+    Linear extrapolation from the last two orbits of the family; from one orbit, its state with the
+    spring's mean shifted by d xbar_m = -sigma S/(1 + sigma S) d deltabar0.
+    """
     d_last, last = family[-1]
     if len(family) >= 2:
         d_prev, previous = family[-2]
@@ -205,7 +214,7 @@ def _predicted_state(family: list[tuple[float, simulate.SteadyState]], d0: float
     return state
 
 
-def _interpolated_state(bracket: list[tuple[float, simulate.SteadyState]], d0: float) -> np.ndarray:
+def _interpolated_state(bracket: list[tuple[float, simulation.SteadyState]], d0: float) -> np.ndarray:
     """Start state inside the bracket of the extremum: piecewise-linear in deltabar0 between its orbits."""
     ds = np.array([d for d, _ in bracket])[::-1]  # ascending
     states = np.array([o.start_state for _, o in bracket])[::-1]
@@ -220,7 +229,7 @@ def _refined_compliant_ratio(omega_bar: float, case: CompliantFixation, law: Gen
     return float(j_integrals_for_law(roots[0][1], law)[0]) ** 2
 
 
-def _prediction(solve, case: CompliantFixation) -> dict:
+def _prediction(solve: Callable[[CompliantFixation], float], case: CompliantFixation) -> dict[str, Any]:
     """{status, pulloff_ratio} of one prediction: ``ok`` and the ratio, or ``no_solution`` and NaN."""
     try:
         return {"status": "ok", "pulloff_ratio": solve(case)}
@@ -233,12 +242,14 @@ COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "statu
 
 
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
-                  reduced_modulus: float, fixation: simulate.SpringFixation | None = None,
+                  reduced_modulus: float, fixation: simulation.SpringFixation | None = None,
                   progress: ProgressBar | None = None, predictions: bool = True) -> pd.DataFrame:
-    """results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv rows: the simulated (virtual)
-    experiment and, unless ``predictions`` is false, the predictions of the module docstring, for the
-    rigid (``fixation=None``) or the spring fixation. ``progress`` advances once per amplitude with the
-    steady states solved for it."""
+    """Rows of results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv.
+
+    The simulated (virtual) experiment and, unless ``predictions`` is false, the predictions of the
+    module docstring, for the rigid (``fixation=None``) or the spring fixation. ``progress`` advances
+    once per amplitude with the steady states solved for it.
+    """
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
@@ -246,7 +257,7 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     h1_um = np.asarray(h1_um, dtype=float)
     eta1 = h1_um * 1e-6 / radius
     rows = []
-    for h1, e in zip(h1_um, eta1):
+    for h1, e in zip(h1_um, eta1, strict=True):
         result = simulated_pulloff(float(e), omega_check, chi0, law, fixation)
         rows.append({"model": "simulation", "h1_um": h1, "status": result.status, "pulloff_ratio": result.ratio,
                      "abar_m": result.abar_m, "abar_cr": result.abar_cr, "steady_states": result.steady_states})
@@ -263,22 +274,24 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
 
 
 def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray,
-                    fixation: simulate.SpringFixation | None, *, radius: float, reduced_modulus: float) -> list[dict]:
+                    fixation: simulation.SpringFixation | None, *, radius: float,
+                    reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
     if fixation is None:
-        rows = []
+        rows: list[dict[str, Any]] = []
         for model in ("leading", "refined"):
             pred = predict_pulloff(model, params, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus)
-            rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r} for h, r in zip(h1_um, pred.ratio)]
+            rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r}
+                     for h, r in zip(h1_um, pred.ratio, strict=True)]
         exact = exact_averaging.pulloff_at_critical_radius(eta1, chi0, law)
         rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
-                 for h, r, a in zip(h1_um, exact.ratio, exact.abar_m)]
+                 for h, r, a in zip(h1_um, exact.ratio, exact.abar_m, strict=True)]
         minimum = exact_averaging.pulloff_at_force_minimum(eta1, chi0, law)
-        rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
-                 for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m)]
+        rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r,
+                  "abar_m": a} for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m, strict=True)]
         return rows
     omega_bar = float(groups.omega_check(frequency_hz, params.v0, radius)) * fixation.nu0
     spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
@@ -286,4 +299,4 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
     solvers = {"leading": lambda case: float(pulloff_leading(case.eta1, chi0, law, spring).ratio),
                "refined": lambda case: _refined_compliant_ratio(omega_bar, case, law)}
     return [{"model": model, "h1_um": h, **_prediction(solve, case)}
-            for model, solve in solvers.items() for h, case in zip(h1_um, cases)]
+            for model, solve in solvers.items() for h, case in zip(h1_um, cases, strict=True)]

@@ -11,9 +11,9 @@ same direction), Euler predictor x_k + h t_k, Newton corrector on
     F(x) = 0,   t_k . (x - x_k) = h                                   (the pseudo-arclength condition)
 
 (chord iteration with the Jacobian of the previous point, which the tangent needed anyway),
-and step control: halve on failure, grow by 1.5 while the tangent turns by less than 8 degrees. A fold of the parameter x[0] is a sign
-change of the tangent's first component; it is located to machine precision by a bracketed
-root of that component along the curve (:func:`locate_folds`).
+and step control: halve on failure, grow by 1.5 while the tangent turns by less than 8 degrees.
+A fold of the parameter x[0] is a sign change of the tangent's first component; it is located
+to machine precision by a bracketed root of that component along the curve (:func:`locate_folds`).
 
 The Jacobian is taken by central differences from one vectorised call of F on the 2(N+1)
 perturbed points (``residual`` must accept an (m, N+1) array and return (m, N)). Failure of the
@@ -141,6 +141,27 @@ def trace(
     return Curve(np.array(points), np.array(tangents), np.array(norms))
 
 
+def _corrected_at(
+    sigma: float, residual: Residual, x0: Array, t0: Array, jac0: Array, settings: ContinuationSettings
+) -> tuple[Array, Array]:
+    """The point corrected from the predictor x0 + sigma t0 (arclength sigma from x0 along t0) and its tangent.
+
+    Same corrector and tangent as a step of :func:`trace`, with the chord Jacobian ``jac0`` of x0.
+    """
+    result = correct(residual, x0 + sigma * t0, t0, jac0, settings)
+    if result is None:
+        raise ContinuationError(f"corrector failed while locating the fold near x = {x0.tolist()}")
+    x = result[0]
+    return x, tangent(jacobian(residual, x, settings.fd_step), t0)
+
+
+def _tangent_parameter_component(
+    sigma: float, residual: Residual, x0: Array, t0: Array, jac0: Array, settings: ContinuationSettings
+) -> float:
+    """t[0] of the corrected point at arclength sigma: zero at a fold of the parameter x[0]."""
+    return _corrected_at(sigma, residual, x0, t0, jac0, settings)[1][0]
+
+
 def locate_folds(residual: Residual, curve: Curve, settings: ContinuationSettings = ContinuationSettings()) -> Array:
     """Points where the parameter x[0] turns (tangent[0] = 0), one per sign change along ``curve``.
 
@@ -152,18 +173,9 @@ def locate_folds(residual: Residual, curve: Curve, settings: ContinuationSetting
     for k in np.flatnonzero(signs[:-1] * signs[1:] < 0):
         x0, t0 = curve.points[k], curve.tangents[k]
         span = float(t0 @ (curve.points[k + 1] - x0))
-
-        jac0 = jacobian(residual, x0, settings.fd_step)
-
-        def corrected(sigma: float) -> tuple[Array, Array]:
-            result = correct(residual, x0 + sigma * t0, t0, jac0, settings)
-            if result is None:
-                raise ContinuationError(f"corrector failed while locating the fold near x = {x0.tolist()}")
-            x = result[0]
-            return x, tangent(jacobian(residual, x, settings.fd_step), t0)
-
-        sigma = brentq(lambda s: corrected(s)[1][0], 0.0, span, xtol=1e-13)
-        folds.append(corrected(sigma)[0])
+        args = (residual, x0, t0, jacobian(residual, x0, settings.fd_step), settings)
+        sigma = brentq(_tangent_parameter_component, 0.0, span, args=args, xtol=1e-13)
+        folds.append(_corrected_at(sigma, *args)[0])
     return np.array(folds).reshape(-1, curve.points.shape[1])
 
 

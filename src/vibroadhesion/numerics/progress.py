@@ -18,6 +18,7 @@ class ProgressBar:
     """``[#########.....................]  3/10 items  57 steady states  12.3 s  <note>``."""
 
     def __init__(self, total: int, unit: str, *, stream: TextIO | None = None) -> None:
+        """A bar for ``total`` items of ``unit``, printed on ``stream`` (stdout when None), its clock started now."""
         if total < 1:
             raise ValueError(f"a progress bar needs at least one item, got total = {total}")
         self.total, self.unit = total, unit

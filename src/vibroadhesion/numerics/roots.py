@@ -60,7 +60,9 @@ def solve_log_increasing(
         return math.exp(lo)
     if f_hi == 0:
         return math.exp(hi)
-    z, info = brentq(log_excess, lo, hi, xtol=_Z_TOL, rtol=4 * np.finfo(float).eps, maxiter=200, full_output=True, disp=False)
+    z, info = brentq(
+        log_excess, lo, hi, xtol=_Z_TOL, rtol=4 * np.finfo(float).eps, maxiter=200, full_output=True, disp=False
+    )
     if not info.converged:
         raise NoRootError(f"{what}: Brent iteration did not converge ({info.flag})")
     return math.exp(z)

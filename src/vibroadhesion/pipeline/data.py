@@ -21,11 +21,10 @@ import difflib
 import io
 import json
 import math
-import os
 import re
 import sys
-import tempfile
 from collections.abc import Callable, Iterator, Sequence
+from contextlib import ExitStack
 from dataclasses import dataclass, field
 from functools import lru_cache
 from importlib import resources
@@ -36,6 +35,8 @@ import pandas as pd
 import yaml
 from jsonschema import Draft202012Validator
 from jsonschema.exceptions import ValidationError
+
+from vibroadhesion.pipeline.atomic import atomic_path
 
 PULLOFF_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN", "source")
 NUMERIC_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN")
@@ -500,24 +501,11 @@ def _pulloff_csv_text(frame: pd.DataFrame) -> str:
 
 
 def _write_atomically(outputs: list[tuple[Path, str]]) -> None:
-    """Write every file to a temporary sibling first, then move all into place with os.replace."""
-    temps: list[tuple[str, Path]] = []
-    umask = os.umask(0)
-    os.umask(umask)
-    try:
-        for target, text in outputs:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            fd, tmp = tempfile.mkstemp(dir=target.parent, prefix=f".{target.name}.", suffix=".tmp")
-            temps.append((tmp, target))
-            os.chmod(tmp, 0o666 & ~umask)  # mkstemp creates 0600; give outputs the usual permissions
-            with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-                fh.write(text)
-        for tmp, target in temps:
-            os.replace(tmp, target)
-    finally:
-        for tmp, _ in temps:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
+    """Write every file beside its target first (:func:`atomic_path`), then move all into place."""
+    with ExitStack() as stack:
+        temps = [(stack.enter_context(atomic_path(target)), text) for target, text in outputs]
+        for tmp, text in temps:
+            tmp.write_text(text, encoding="utf-8", newline="")
 
 
 def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path, out_csv: str | Path) -> str:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 import matplotlib
 
@@ -18,9 +19,12 @@ import pandas as pd  # noqa: E402
 
 from vibroadhesion.core.integrals import j_integrals_large_abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
-from vibroadhesion.pipeline.artefacts import atomic_path  # noqa: E402
+from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
-STYLE = {
+if TYPE_CHECKING:
+    from matplotlib.typing import RcKeyType
+
+STYLE: dict[RcKeyType, Any] = {
     "font.size": 9,
     "axes.grid": True,
     "grid.alpha": 0.3,

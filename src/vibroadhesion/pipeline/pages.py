@@ -10,7 +10,7 @@ from __future__ import annotations
 import html
 from pathlib import Path
 
-from vibroadhesion.pipeline.artefacts import atomic_path
+from vibroadhesion.pipeline.atomic import atomic_path
 
 #: (file stem, title) of the pages of the default target (``snakemake -c2``), in the order of its index.
 PAGES: list[tuple[str, str]] = [
@@ -39,7 +39,7 @@ _INDEX_TEXT = {
   <a href="validation_index.html">validation pages</a>.</p>"""),
     "validation_index": ("validation against the direct simulation", """<p>Built by <code>snakemake -c2 validation</code>.
   Every number on these pages that is not a model prediction is SIMULATED (periodic steady states of the
-  full nonlinear model, <code>vibroadhesion.simulation.simulate</code>); none is a measurement.
+  full nonlinear model, <code>vibroadhesion.simulation</code>); none is a measurement.
   <a href="index.html">Figure pages</a>.</p>"""),
 }
 

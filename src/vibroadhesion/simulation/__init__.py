@@ -1,7 +1,39 @@
-"""The full model, Eqs. (4)–(6), integrated in time: periodic steady states by shooting, transients,
-Floquet multipliers, contact loss reported.
+"""The full model, Eqs. (4)–(6), integrated in time: periodic steady states by shooting, transients.
+
+Floquet multipliers and contact loss are reported with every steady state.
+
+Modules, each importing only from those before it:
+
+* :mod:`~vibroadhesion.simulation.model`: the nondimensional model (derivation), its parameters
+  (:class:`BaseExcitation`, :class:`SpringFixation`), the contact kernel and the static state;
+* :mod:`~vibroadhesion.simulation.integrators`: one period in scaled variables (right-hand sides,
+  Jacobians) and the choice between the Fortran DOP853 and :func:`scipy.integrate.solve_ivp`;
+* :mod:`~vibroadhesion.simulation.orbits`: the :class:`SteadyState` record of a period (means,
+  harmonics, extremes), the frozen-contact start of the shooting, and :func:`transient`;
+* :mod:`~vibroadhesion.simulation.shooting`: :func:`steady_state`, the periodic orbit as a fixed
+  point of the one-period map (rigid and compliant fixation).
 
 Layer 3: imports from the layers below (numerics, core, models).
 """
 
-__all__ = ["simulate"]
+from vibroadhesion.simulation.model import (
+    BaseExcitation,
+    NoStaticContactError,
+    SpringFixation,
+    StaticState,
+    static_state,
+)
+from vibroadhesion.simulation.orbits import SteadyState, Transient, transient
+from vibroadhesion.simulation.shooting import steady_state
+
+__all__ = [
+    "BaseExcitation",
+    "NoStaticContactError",
+    "SpringFixation",
+    "StaticState",
+    "SteadyState",
+    "Transient",
+    "static_state",
+    "steady_state",
+    "transient",
+]

@@ -9,7 +9,7 @@ from pathlib import Path
 import nbconvert
 import papermill
 
-from vibroadhesion.pipeline.artefacts import atomic_path
+from vibroadhesion.pipeline.atomic import atomic_path
 
 
 def page(notebook: str | Path, executed: str | Path, html: str | Path, parameters: Mapping[str, str]) -> None:

@@ -16,7 +16,7 @@ from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_entry
-from vibroadhesion.simulation import simulate
+from vibroadhesion.simulation import SpringFixation
 
 
 def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1_um: float,
@@ -49,9 +49,9 @@ def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str 
     spring = None
     if fixation == "compliant":
         nu0 = groups.nu0(params["v0"], float(setup_entry(setup, "fixation.natural_frequency")), setup.radius)
-        spring = simulate.SpringFixation(float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
-                                         float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")), nu0,
-                                         float(setup_entry(setup, "fixation.weight_ratio_mu")))
+        spring = SpringFixation(float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
+                                float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")), nu0,
+                                float(setup_entry(setup, "fixation.weight_ratio_mu")))
     h1 = np.asarray(setup.amplitudes_um, dtype=float)
     table = virtual_pulloff.pulloff_table(GentSchultzParameters(**params), frequency_hz, h1, radius=setup.radius,
                                           reduced_modulus=setup.reduced_modulus, fixation=spring,

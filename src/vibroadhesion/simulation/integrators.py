@@ -1,0 +1,449 @@
+"""One period of the full model integrated in scaled variables: the right-hand sides, the integrator choice.
+
+The one-period problem
+----------------------
+A period lasts 2 pi while the contact relaxes over omega_check c_o / |dx/dabar| periods, so the
+steady state is found as a fixed point of the one-period map (:mod:`vibroadhesion.simulation.shooting`),
+not by waiting. abar itself changes by only A ~ Abar/(omega_check c_o) per period (1e-7 of a_m at
+omega_check = 1e9), so the integrated variable is the front displacement measured from the start
+of the period,
+
+    v = omega_check c_o (abar - abar(0)),   dv/dtau = x,
+
+which is O(Abar) and carries full relative precision whatever omega_check is (scaled internally
+by its observed half range, floored at a change of abar of 1e-14 abar, and xbar by
+max(eps, |xbar|, |xbar'|), so that one absolute tolerance fits all components). Along with this
+core the full problem carries Psi = M - I of the one-period map (its variational equations,
+:mod:`vibroadhesion.simulation.shooting`) and the quadratures of the orbit's means and harmonics
+(:mod:`vibroadhesion.simulation.orbits`).
+
+Integrators. "auto": the first period with LSODA (ODEPACK), the periods near the orbit, not stiff
+for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode` (a period costs
+~100 steps, ~25 us each: the Python loop of solve_ivp would cost 4 times more), a period DOP853
+gives up on repeated with Radau (analytic Jacobian). The extremes of a and of Phi are located
+between accepted steps by Brent's method on re-integrated states.
+
+Known limitation: for n > 1 in the quasi-static regime (omega_check c_o << eps^(1/n - 1)) the
+contact tracks Phi - 1 ~ x^n ~ 1e-9..1e-16, where the speed (Phi - 1)^(1/n) has a relative
+rounding noise of 1e-16/|Phi - 1| and an unbounded derivative: no integrator meets the tolerance
+and the result is ``integration_failure`` (after ~10^4 steps), not a number.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Callable, Sequence
+from functools import partial
+from typing import Literal, NamedTuple
+
+import numpy as np
+from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau, ode
+
+from vibroadhesion.simulation.model import SPEED_CAP, TWO_PI, Array, Model, contact_kernel
+
+Integrator = Literal["auto", "fortran-dop853", "Radau", "BDF", "LSODA", "DOP853", "RK45"]
+#: A right-hand side f(tau, y) of the scaled problem, and the Jacobian df/dy of one.
+RightHandSide = Callable[[float, Array], list[float]]
+Jacobian = Callable[[float, Array], Array]
+#: Called after every accepted step with (tau, y); True stops the integration.
+StepCallback = Callable[[float, Array], bool]
+
+_FORTRAN = "fortran-dop853"
+_IVP_SOLVERS = {"Radau": Radau, "BDF": BDF, "LSODA": LSODA, "DOP853": DOP853, "RK45": RK45}
+_IMPLICIT = ("Radau", "BDF", "LSODA")
+#: Steps allowed per call: to the Fortran DOP853 (then "auto" repeats the call with Radau) and
+#: to the solve_ivp methods (then the integration has failed).
+_FORTRAN_MAX_STEPS = 10_000
+_IVP_MAX_STEPS = 10_000
+#: A residual below this many rtol (scaled state) is periodic to the local accuracy of the
+#: integration: the orbit is accepted even where the map is too ill-conditioned to pin it down
+#: better (e.g. an undamped spring whose contact does not move).
+_PERIODIC_RESIDUAL_FACTOR = 10.0
+
+
+#: Quadratures carried after the core and Psi: u, u cos, u sin, sqrt(w/w0), Phat, Phat cos,
+#: Phat sin and, when compliant, xi, xi cos, xi sin.
+_N_QUAD_RIGID = 7
+_N_QUAD_COMPLIANT = 10
+
+
+class Period:
+    """The one-period problem from a start state, in scaled variables.
+
+    Scaled core: u = v/V (rigid) or (xi, eta, u) = (xbar/S, xbar'/S, v/V) (compliant), with
+    v = rate (abar - abar(0)); the map coordinate of abar is beta = rate abar / V. The
+    right-hand sides are closures over the constants (speed: they run ~1e4 times per period).
+    """
+
+    def __init__(self, model: Model, start: Array, v_scale: float, x_scale: float):
+        """The period of ``model`` from the absolute ``start`` with the scales V = ``v_scale``, S = ``x_scale``."""
+        self.m = model
+        self.start = np.asarray(start, dtype=float)
+        self.b0 = model.rate * float(self.start[-1])
+        self.v_scale = v_scale
+        self.x_scale = x_scale
+        self.dim = model.dim
+        self.n_var = self.dim * self.dim
+        self.core_rhs, self.full_rhs = (self._compliant_rhs() if model.compliant else self._rigid_rhs())
+
+    # -- conversions
+
+    def abar(self, u: float) -> float:
+        """The contact radius at the scaled front displacement u, from V u = v = rate (abar - a0) (Eq. 6')."""
+        return (self.b0 + self.v_scale * u) / self.m.rate
+
+    def core_start(self) -> list[float]:
+        """Scaled core at tau = 0: (xbar/S, xbar'/S, 0) or (0,) (v starts at 0)."""
+        if self.m.compliant:
+            return [self.start[0] / self.x_scale, self.start[1] / self.x_scale, 0.0]
+        return [0.0]
+
+    def full_start(self) -> list[float]:
+        """Scaled core, Psi = 0 and the quadratures (all 0) at tau = 0 (shooting module, Psi(0) = 0)."""
+        n_quad = _N_QUAD_COMPLIANT if self.m.compliant else _N_QUAD_RIGID
+        return self.core_start() + [0.0] * (self.n_var + n_quad)
+
+    def absolute(self, core: Sequence[float]) -> Array:
+        """Absolute state (xbar, xbar', abar) or (abar,) from the scaled core."""
+        if self.m.compliant:
+            return np.array([core[0] * self.x_scale, core[1] * self.x_scale, self.abar(core[2])])
+        return np.array([self.abar(core[0])])
+
+    def contact_at(self, tau: float, core: Sequence[float]) -> tuple[float, float, tuple[float, ...]]:
+        """(abar, deltabar, contact_kernel(...)) at a point of the period."""
+        m = self.m
+        abar = self.abar(core[-1])
+        d = m.deltabar0 - m.eps * math.sin(tau)
+        if m.compliant:
+            d += core[0] * self.x_scale
+        return abar, d, contact_kernel(abar, d, m.inv_n, m.log_cap)
+
+    def deltabar_rate(self, tau: float, core: Sequence[float]) -> float:
+        """d deltabar / d tau."""
+        rate = -self.m.eps * math.cos(tau)
+        return rate + core[1] * self.x_scale if self.m.compliant else rate
+
+    # -- Jacobians (for the implicit integrators)
+
+    def core_jacobian(self, tau: float, y: Array) -> Array:
+        """Jacobian of the scaled core right-hand side (the J of the variational equations)."""
+        abar, d, (_, x_a, x_d, _, _) = self.contact_at(tau, y.tolist()[: self.dim])
+        j10, j11, j12, j20, j22 = self._jacobian_entries(abar, d, x_a, x_d)
+        if not self.m.compliant:
+            return np.array([[j22]])
+        return np.array([[0.0, 1.0, 0.0], [j10, j11, j12], [j20, 0.0, j22]])
+
+    def _jacobian_entries(self, abar: float, d: float, x_a: float, x_d: float) -> tuple[float, ...]:
+        """Non-trivial entries (j10, j11, j12, j20, j22) of J in the scaled coordinates (xi, eta, beta).
+
+        Unscaled, in (xbar, xbar', b): row xbar'' = [-(1 + (c_o/kappa) dPhat/ddeltabar), -2 zeta omega_bar,
+        -(c_o/kappa) dPhat/dabar / rate] / omega_bar^2 and row v' = [dx/ddeltabar, 0, dx/dabar / rate]; the
+        scaling multiplies entry (i, j) by scale_j / scale_i (scales S, S, V).
+        """
+        m = self.m
+        j22 = x_a / m.rate
+        if not m.compliant:
+            return 0.0, 0.0, 0.0, 0.0, j22
+        inv_w2 = 1.0 / m.omega_bar**2
+        return (
+            (-1.0 - 2.0 * m.compliance * abar) * inv_w2,
+            -2.0 * m.zeta / m.omega_bar,
+            -m.compliance * (2.0 * d - 2.0 * abar * abar) * inv_w2 * self.v_scale / (m.rate * self.x_scale),
+            x_d * self.x_scale / self.v_scale,
+            j22,
+        )
+
+    def full_jacobian(self, tau: float, y: Array) -> Array:
+        """Block-diagonal part of the full Jacobian: J for the core, I (x) J for Psi.
+
+        The one-way couplings of the core into Psi (second derivatives) and into the quadratures
+        are left out: the implicit methods use the Jacobian only in the Newton iterations of
+        their stages, which the driven components do not slow down.
+        """
+        core_j = self.core_jacobian(tau, y)
+        size = len(self.full_start())
+        jac = np.zeros((size, size))
+        dim = self.dim
+        jac[:dim, :dim] = core_j
+        if self.m.compliant:
+            jac[dim : dim + 9, dim : dim + 9] = np.kron(core_j, np.eye(3))
+        return jac
+
+    # -- right-hand sides
+
+    def _rigid_rhs(self) -> tuple[RightHandSide, RightHandSide]:
+        b0, v_scale, m = self.b0, self.v_scale, self.m
+        inv_rate, inv_v, d0, eps, inv_n, log_cap = 1.0 / m.rate, 1.0 / v_scale, m.deltabar0, m.eps, m.inv_n, m.log_cap
+        sin, cos, contact = math.sin, math.cos, contact_kernel
+
+        def core(tau: float, y: Array) -> list[float]:
+            abar = (b0 + v_scale * y.item(0)) * inv_rate
+            return [contact(abar, d0 - eps * sin(tau), inv_n, log_cap)[0] * inv_v]
+
+        variational = m.variational
+
+        def full(tau: float, y: Array) -> list[float]:
+            u = y.item(0)
+            abar = (b0 + v_scale * u) * inv_rate
+            s, c = sin(tau), cos(tau)
+            x, x_a, _, p, w = contact(abar, d0 - eps * s, inv_n, log_cap)
+            return [x * inv_v, x_a * inv_rate if variational else 0.0, u, u * c, u * s, w, p, p * c, p * s]
+
+        return core, full
+
+    def _compliant_rhs(self) -> tuple[RightHandSide, RightHandSide]:
+        b0, v_scale, x_scale, m = self.b0, self.v_scale, self.x_scale, self.m
+        inv_rate, inv_v, d0, eps, inv_n, log_cap = 1.0 / m.rate, 1.0 / v_scale, m.deltabar0, m.eps, m.inv_n, m.log_cap
+        # eta' = (offset - compliance Phat - S xi - 2 zeta omega_bar S eta) / (omega_bar^2 S), Eq. (3')
+        offset, compliance = m.force_offset / x_scale, m.compliance / x_scale
+        inv_w2, damp = 1.0 / m.omega_bar**2, 2.0 * m.zeta * m.omega_bar
+        sin, cos, contact, entries = math.sin, math.cos, contact_kernel, self._jacobian_entries
+        variational = m.variational
+        no_variation = [0.0] * 9
+
+        def core(tau: float, y: Array) -> list[float]:
+            xi, eta, u = y.item(0), y.item(1), y.item(2)
+            abar = (b0 + v_scale * u) * inv_rate
+            x, _, _, p, _ = contact(abar, x_scale * xi + d0 - eps * sin(tau), inv_n, log_cap)
+            return [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
+
+        def full(tau: float, y: Array) -> list[float]:
+            xi, eta, u = y.item(0), y.item(1), y.item(2)
+            abar = (b0 + v_scale * u) * inv_rate
+            s, c = sin(tau), cos(tau)
+            d = x_scale * xi + d0 - eps * s
+            x, x_a, x_d, p, w = contact(abar, d, inv_n, log_cap)
+            quadratures = [u, u * c, u * s, w, p, p * c, p * s, xi, xi * c, xi * s]
+            core_rates = [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
+            if not variational:
+                return core_rates + no_variation + quadratures
+            j10, j11, j12, j20, j22 = entries(abar, d, x_a, x_d)
+            p0, p1, p2, p3, p4, p5, p6, p7, p8 = y[3:12].tolist()
+            m00, m01, m02 = 1.0 + p0, p1, p2  # M = I + Psi, row-major
+            m10, m11, m12 = p3, 1.0 + p4, p5
+            m20, m21, m22 = p6, p7, 1.0 + p8
+            return core_rates + [  # Psi' = J M with J = [[0, 1, 0], [j10, j11, j12], [j20, 0, j22]]
+                m10, m11, m12,
+                j10 * m00 + j11 * m10 + j12 * m20, j10 * m01 + j11 * m11 + j12 * m21, j10 * m02 + j11 * m12 + j12 * m22,
+                j20 * m00 + j22 * m20, j20 * m01 + j22 * m21, j20 * m02 + j22 * m22,
+            ] + quadratures
+
+        return core, full
+
+
+# --- Integration drivers --------------------------------------------------------------------------
+
+
+class IntegrationError(RuntimeError):
+    """An integrator gave up (step size underflow, step budget, stiffness detected)."""
+
+
+def _fortran_solout(on_step: StepCallback, tau: float, y: Array) -> int:
+    """``on_step`` in the convention of the Fortran DOP853's solout: -1 stops the integration."""
+    return -1 if on_step(tau, y) else 0
+
+
+def _integrate(
+    fun: RightHandSide,
+    jac: Jacobian,
+    tau0: float,
+    y0: Sequence[float],
+    tau1: float,
+    integrator: str,
+    rtol: float,
+    on_step: StepCallback | None = None,
+) -> tuple[float, Array, bool]:
+    """Integrate from tau0 to tau1; ``on_step(tau, y)`` after every accepted step may stop it.
+
+    The state is scaled to O(1), so one absolute tolerance equal to ``rtol`` serves all
+    components. ``jac`` is given to the implicit methods. Returns (tau reached, y there, stopped
+    by on_step); raises :class:`IntegrationError` when the integrator gives up.
+    """
+    if integrator == _FORTRAN:
+        solver = ode(fun).set_integrator("dop853", rtol=rtol, atol=rtol, nsteps=_FORTRAN_MAX_STEPS)
+        if on_step is not None:
+            solver.set_solout(partial(_fortran_solout, on_step))
+        solver.set_initial_value(list(y0), tau0)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)  # failures are read from the return code
+            y = solver.integrate(tau1)
+        code = solver.get_return_code()
+        if code < 0:
+            raise IntegrationError(f"Fortran DOP853 return code {code}")
+        return float(solver.t), np.array(y), code == 2
+    solver_class = _IVP_SOLVERS[integrator]
+    options = {"jac": jac} if integrator in _IMPLICIT else {}
+    solver = solver_class(fun, tau0, np.array(y0, dtype=float), tau1, rtol=rtol, atol=rtol, **options)
+    if on_step is not None and on_step(tau0, solver.y):
+        return tau0, solver.y.copy(), True
+    for _ in range(_IVP_MAX_STEPS):
+        if solver.status != "running":
+            break
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", UserWarning)  # LSODA's messages: failures are read from the status
+            message = solver.step()
+        if solver.status == "failed":
+            raise IntegrationError(f"{integrator}: {message}")
+        if on_step is not None and on_step(solver.t, solver.y):
+            return float(solver.t), solver.y.copy(), True
+    else:
+        raise IntegrationError(f"{integrator}: more than {_IVP_MAX_STEPS} steps")
+    return float(solver.t), solver.y.copy(), False
+
+
+class Run(NamedTuple):
+    """One integrated period: accepted steps (tau, scaled core) for the refinements."""
+
+    period: Period
+    lost_at: float  # tau of contact loss, NaN if none
+    y_end: Array
+    steps: list[tuple[float, list[float]]]
+    u_range: tuple[float, float]
+
+
+class Integrators:
+    """Which integrator runs what.
+
+    "auto": the transient from the static state (stiff while the base stroke forces the contact
+    to grow: the front then slides along Phi ~ 0 at a huge closing speed) with LSODA,
+    which switches to BDF there; the periods near the orbit, which are not stiff for
+    omega_check >~ 1e3, with the Fortran DOP853; a run that DOP853 gives up on is repeated with
+    Radau. Any other name runs everything.
+    """
+
+    def __init__(self, integrator: Integrator, rtol: float):
+        """Checks the name and ``rtol`` (in [1e-13, 1e-3]); records the methods that ran in ``used``."""
+        if integrator != "auto" and integrator != _FORTRAN and integrator not in _IVP_SOLVERS:
+            raise ValueError(f"unknown integrator {integrator!r}")
+        if not (1e-13 <= rtol <= 1e-3):
+            raise ValueError(f"rtol must lie in [1e-13, 1e-3], got {rtol}")
+        self.auto = integrator == "auto"
+        self.orbit = _FORTRAN if self.auto else integrator
+        self.transient = "LSODA" if self.auto else integrator
+        self.rtol = rtol
+        self.used: list[str] = []
+
+    def run(
+        self,
+        fun: RightHandSide,
+        jac: Jacobian,
+        tau0: float,
+        y0: Sequence[float],
+        tau1: float,
+        on_step: StepCallback | None = None,
+        transient: bool = False,
+    ) -> tuple[float, Array, bool]:
+        """:func:`_integrate` with the orbit's (or, ``transient``, the transient's) method; "auto" retries with Radau.
+
+        Returns (tau reached, y there, stopped by ``on_step``) and raises :class:`IntegrationError`
+        when the (last) method gives up.
+        """
+        method = self.transient if transient else self.orbit
+        try:
+            result = _integrate(fun, jac, tau0, y0, tau1, method, self.rtol, on_step)
+        except IntegrationError:
+            if not self.auto or method == "Radau":
+                raise
+            method = "Radau"
+            result = _integrate(fun, jac, tau0, y0, tau1, method, self.rtol, on_step)
+        if method not in self.used:
+            self.used.append(method)
+        return result
+
+    def description(self) -> str:
+        """The methods that ran, in order of first use, joined by "+" (e.g. "LSODA+fortran-dop853")."""
+        return "+".join(self.used)
+
+
+class _StepRecorder:
+    """The ``on_step`` of a period: records accepted steps (tau, scaled core), stops at contact loss.
+
+    Contact is lost when abar falls below ``contact_loss_abar`` (model docstring). One recorder
+    serves a period's attempts: after a retry with Radau, steps are appended only past the last
+    one recorded.
+    """
+
+    def __init__(self, period: Period):
+        self.period = period
+        self.dim, self.loss = period.dim, period.m.contact_loss_abar
+        self.steps: list[tuple[float, list[float]]] = []
+        self.lost_at = math.nan
+
+    def __call__(self, tau: float, y: Array) -> bool:
+        core = y[: self.dim].tolist()
+        if self.period.abar(core[-1]) < self.loss:
+            self.lost_at = tau
+            return True
+        if not self.steps or tau > self.steps[-1][0]:
+            self.steps.append((tau, core))
+        return False
+
+
+def run_period(period: Period, integrators: Integrators, full: bool, transient: bool = False) -> Run:
+    """Integrate one period, stopping at contact loss; records accepted steps and the range of u."""
+    recorder = _StepRecorder(period)
+    fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
+    y0 = period.full_start() if full else period.core_start()
+    _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)
+    u = [core[-1] for _, core in recorder.steps]
+    return Run(period, recorder.lost_at, y_end, recorder.steps, (min(u), max(u)))
+
+
+# --- Scales ----------------------------------------------------------------------------------------
+
+
+def v_scale_estimate(model: Model, abar: float) -> float:
+    """A guess of the half range of v = rate (abar - abar(0)) over a period.
+
+    The smaller of the frozen-contact value (abar fixed, v' = x(Phi(abar, deltabar(tau))), the
+    limit omega_check -> infinity) and the quasi-static one (v follows the JKR compliance, rate
+    eps); only used to scale the first integration, later ones use the observed range.
+    """
+    tau = np.linspace(0.0, TWO_PI, 257)
+    d = model.deltabar0 - model.eps * np.sin(tau)
+    gap = np.maximum(abar * abar - d, 1e-150)
+    law = model.excitation.law
+    x = np.clip(law.speed(gap * gap / abar), -SPEED_CAP * model.rate, SPEED_CAP * model.rate)
+    u = np.concatenate([[0.0], np.cumsum(0.5 * (x[1:] + x[:-1]) * np.diff(tau))])
+    frozen = 0.5 * float(u.max() - u.min())
+    return max(min(frozen, model.rate * model.eps), _v_scale_floor(model, abar))
+
+
+def _v_scale_floor(model: Model, abar: float) -> float:
+    """Smallest scale of v: a change of abar below the resolution of abar itself."""
+    return 1e-14 * model.rate * abar
+
+
+def x_scale(model: Model, start: Array) -> float:
+    """S = max(eps, |xbar|, |xbar'|) of the compliant start (floored at 1e-280), 1 for the rigid fixation."""
+    return max(model.eps, abs(float(start[0])), abs(float(start[1])), 1e-280) if model.compliant else 1.0
+
+
+def observed_v_scale(run: Run) -> float:
+    """Half range of v over the run (the natural scale of the next run), floored."""
+    lo, hi = run.u_range
+    half = 0.5 * (hi - lo) * run.period.v_scale
+    return max(half, _v_scale_floor(run.period.m, float(run.period.start[-1])))
+
+
+def periodic_to_rounding(run: Run, integrators: Integrators) -> bool:
+    """Whether the run returns to its start to the accuracy of the integration.
+
+    Each scaled core component within _PERIODIC_RESIDUAL_FACTOR rtol of the scaled range, where
+    the abar component also passes when its drift is below the resolution of abar itself (a
+    contact that does not move: its scaled range is then meaningless).
+    """
+    period = run.period
+    residual = np.abs(run.y_end[: period.dim] - np.array(period.core_start()))
+    tolerance = _PERIODIC_RESIDUAL_FACTOR * integrators.rtol * scaled_core_range(run)
+    abar_drift = residual[-1] * period.v_scale / period.m.rate
+    abar_ok = residual[-1] <= tolerance or abar_drift <= 4.0 * np.finfo(float).eps * float(period.start[-1])
+    return bool(abar_ok and np.all(residual[:-1] <= tolerance))
+
+
+def scaled_core_range(run: Run) -> float:
+    """Largest magnitude of the scaled core over the accepted steps (O(1) when the scales fit)."""
+    return max(1.0, max(abs(c) for _, core in run.steps for c in core))
+
+

@@ -1,0 +1,345 @@
+"""What a periodic orbit of the full model is reported as, where the shooting starts it, and the transient.
+
+:class:`SteadyState` is the record of a converged period (:func:`summarise`) or of a failure
+(:func:`failure_record`); :func:`frozen_start` is the limit omega_check -> infinity of the orbit
+(abar frozen over a period) that starts the shooting; :func:`transient` integrates period after
+period from the static state, the brute-force reference of the shooting.
+
+Outputs
+-------
+Means and first harmonics are integrals over the converged period carried along as extra ODE
+components (so they share the integrator's error control), in the base-motion time tau = omega t
+with h - h0 = h1 sin tau (Eq. 11):
+
+    y(tau) ~ y_m + y_c cos tau + y_s sin tau,  y_c = (1/pi) int y cos tau,  y_s = (1/pi) int y sin tau.
+
+The paper's harmonics (Eqs. 30, 31, 107, 108) refer to the shifted time t' = t + phi/omega of
+Eq. (25), i.e. to a phase chosen so that a - a_m ~ A sin(omega t'); they follow from these by the
+rotation by phi. A is half the peak-to-peak range of a over the period, its extremes (where x = 0,
+Phi = 1) located by root finding between accepted steps; Abar = omega A/v0 = omega_check c_o A/a_o
+(Eq. 45); w_eff/w0 = (mean sqrt(w/w0))^2 (Eq. 18); the peak front speed max |x| is taken at the
+extremes of Phi, located the same way.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any, Literal, NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy.optimize import brentq
+
+from vibroadhesion.core.groups import PHAT_JKR
+from vibroadhesion.simulation.integrators import (
+    IntegrationError,
+    Integrator,
+    Integrators,
+    Period,
+    Run,
+    observed_v_scale,
+    run_period,
+    v_scale_estimate,
+    x_scale,
+)
+from vibroadhesion.simulation.model import (
+    SPEED_CAP,
+    TWO_PI,
+    Array,
+    BaseExcitation,
+    Model,
+    SpringFixation,
+    absolute_start,
+)
+
+Status = Literal["converged", "contact_loss", "not_converged", "integration_failure", "speed_unresolved"]
+#: Floquet multipliers: complex, except that :func:`numpy.linalg.eigvals` returns them as real
+#: numbers when all of them are real (compliant fixation).
+Multipliers = NDArray[np.inexact[Any]]
+
+#: A periodic orbit is trusted only if its peak speed stays below this fraction of the cap.
+_RESOLVED_SPEED_FRACTION = 1e-3
+#: Largest contact radius abar a search tries (the frozen start, the rigid shooting).
+MAX_ABAR = 1e4
+
+
+
+# --- Records ---------------------------------------------------------------------------------------
+
+
+class SteadyState(NamedTuple):
+    """Periodic steady state found by shooting (module docstring for the definitions).
+
+    Harmonic coefficients refer to tau = omega t with h - h0 = h1 sin tau. The numbers are NaN
+    for ``contact_loss``, ``not_converged`` and ``integration_failure`` (``start_state`` is then
+    the last state tried); ``speed_unresolved`` keeps them but flags that the orbit came within
+    1e-3 of the numerical speed cap. ``tau_contact_loss`` is finite only for ``contact_loss``.
+    """
+
+    status: Status
+    message: str
+    start_state: Array  # state at tau = 0 mod 2pi: (abar,) rigid, (xbar, dxbar/dtau, abar) compliant
+    abar_m: float  # a_m / a_o, mean over the period
+    abar: float  # internal variable Abar = omega A / v0 (Eq. 45)
+    a_over_am: float  # A / a_m, A = half the peak-to-peak range of a
+    a1_over_am: float  # first-harmonic amplitude of a over a_m
+    a_c: float  # first-harmonic cosine coefficient of a / a_o
+    a_s: float  # first-harmonic sine coefficient of a / a_o
+    w_eff_ratio: float  # w_eff / w0 = (mean sqrt(w/w0))^2, Eq. (18)
+    pm_over_abs_pjkr: float  # mean(P) / |P_JKR| = mean(Phat)/(3/4); tensile mean force negative
+    phat_m: float
+    phat_c: float
+    phat_s: float
+    deltabar_m: float
+    deltabar_c: float
+    deltabar_s: float
+    peak_speed: float  # max |adot| / v0 over the period
+    peak_speed_in_range: bool | None  # inside ``speed_range`` (None when no range is given)
+    floquet_multipliers: Multipliers
+    stable: bool  # all |multipliers| < 1
+    periodicity_residual: float  # max_i |y_i(2pi) - y_i(0)| / scale_i (abar: relative to abar(0))
+    iterations: int  # one-period integrations of the shooting (finite-difference ones not counted)
+    integrator: str
+    tau_contact_loss: float
+
+
+class Transient(NamedTuple):
+    """Brute-force integration period after period (the states at tau = 2 pi k)."""
+
+    status: Literal["completed", "contact_loss"]
+    states: Array  # (periods completed + 1, state dimension), same layout as SteadyState.start_state
+    tau_contact_loss: float
+
+
+# --- Analysis of a converged period --------------------------------------------------------------
+
+
+def _refine_roots(
+    run: Run, integrators: Integrators, g: Callable[[Period, float, list[float]], float]
+) -> list[tuple[float, list[float]]]:
+    """Points (tau, scaled core) where g changes sign between accepted steps, by Brent + re-integration.
+
+    The state inside a step is obtained by integrating from the step's start, so the root is
+    located to ~1e-14 in tau on the integrated solution itself. A sign change that re-integration
+    does not reproduce (g at rounding level, as for a contact that does not move) is dropped.
+    """
+    period = run.period
+    values = [g(period, t, core) for t, core in run.steps]
+    roots = []
+    for k in range(len(run.steps) - 1):
+        if values[k] == 0.0:
+            roots.append(run.steps[k])
+            continue
+        if values[k] * values[k + 1] >= 0.0:
+            continue
+        tau_k, core_k = run.steps[k]
+        in_step = (period, integrators, tau_k, core_k)
+        tau_end = run.steps[k + 1][0]
+        if values[k] * g(period, tau_end, _state_in_step(tau_end, *in_step)) >= 0.0:
+            continue
+        tau_root = brentq(_g_in_step, tau_k, tau_end, args=(g, *in_step), xtol=1e-14, rtol=1e-15)
+        roots.append((tau_root, _state_in_step(tau_root, *in_step)))
+    return roots
+
+
+def _state_in_step(
+    tau: float, period: Period, integrators: Integrators, tau_k: float, core_k: list[float]
+) -> list[float]:
+    """Scaled core at ``tau`` inside the accepted step that starts at (tau_k, core_k), re-integrated."""
+    if tau == tau_k:
+        return core_k
+    return integrators.run(period.core_rhs, period.core_jacobian, tau_k, core_k, tau)[1].tolist()
+
+
+def _g_in_step(tau: float, g: Callable[[Period, float, list[float]], float], period: Period, integrators: Integrators,
+               tau_k: float, core_k: list[float]) -> float:
+    """g at ``tau`` on the re-integrated solution inside a step (:func:`_state_in_step`)."""
+    return g(period, tau, _state_in_step(tau, period, integrators, tau_k, core_k))
+
+
+def _turning(period: Period, tau: float, core: list[float]) -> float:
+    """abar (Phi - 1) = gap^2 - abar: zero where x = 0, i.e. at the extremes of a (Eqs. 5', 6')."""
+    abar, d, _ = period.contact_at(tau, core)
+    return (abar * abar - d) ** 2 - abar
+
+
+def _dphi_dtau(period: Period, tau: float, core: list[float]) -> float:
+    """dPhi/dtau = Phi_a a' + Phi_d deltabar': zero at the extremes of Phi, hence of the speed (Eq. 6')."""
+    abar, d, contact = period.contact_at(tau, core)
+    gap = abar * abar - d
+    phi_a, phi_d = gap * (3 * abar * abar + d) / (abar * abar), -2.0 * gap / abar
+    return phi_a * contact[0] / period.m.rate + phi_d * period.deltabar_rate(tau, core)
+
+
+def summarise(
+    model: Model, run: Run, integrators: Integrators, multipliers: Multipliers,
+    residual: float, iterations: int, speed_range: tuple[float, float] | None,
+) -> SteadyState:
+    """The record of a converged period: quadratures, refined extremes of a and of Phi."""
+    period = run.period
+    dim, rate, v_scale = model.dim, model.rate, period.v_scale
+    quad = run.y_end[dim + period.n_var :]
+    a0 = float(period.start[-1])
+    # Extremes of a (x = 0) and of Phi (of the speed, which decreases with Phi).
+    u_values = [0.0, *(core[-1] for _, core in _refine_roots(run, integrators, _turning))]
+    u_values.append(float(run.y_end[dim - 1]))
+    half_range = 0.5 * (max(u_values) - min(u_values)) * v_scale  # in v units: = Abar
+    candidates = [*run.steps, *_refine_roots(run, integrators, _dphi_dtau)]
+    peak_speed = max(abs(period.contact_at(t, core)[2][0]) for t, core in candidates)
+
+    abar_m = a0 + quad[0] * v_scale / (TWO_PI * rate)
+    a_c, a_s = quad[1] * v_scale / (math.pi * rate), quad[2] * v_scale / (math.pi * rate)
+    phat_m, phat_c, phat_s = quad[4] / TWO_PI, quad[5] / math.pi, quad[6] / math.pi
+    d_m, d_c, d_s = model.deltabar0, 0.0, -model.eps
+    if model.compliant:
+        d_m += quad[7] * period.x_scale / TWO_PI
+        d_c += quad[8] * period.x_scale / math.pi
+        d_s += quad[9] * period.x_scale / math.pi
+    in_range = None if speed_range is None else bool(speed_range[0] <= peak_speed <= speed_range[1])
+    status: Status = "converged"
+    message = "periodic steady state"
+    if peak_speed > _RESOLVED_SPEED_FRACTION * SPEED_CAP * rate:
+        status = "speed_unresolved"
+        message = f"peak |d abar/d tau| = {peak_speed / rate:.3g} is within 1e-3 of the numerical speed cap"
+    return SteadyState(
+        status=status, message=message, start_state=period.start.copy(), abar_m=abar_m,
+        abar=half_range, a_over_am=half_range / (rate * abar_m), a1_over_am=math.hypot(a_c, a_s) / abar_m,
+        a_c=a_c, a_s=a_s, w_eff_ratio=(quad[3] / TWO_PI) ** 2, pm_over_abs_pjkr=phat_m / -PHAT_JKR,
+        phat_m=phat_m, phat_c=phat_c, phat_s=phat_s, deltabar_m=d_m, deltabar_c=d_c, deltabar_s=d_s,
+        peak_speed=peak_speed, peak_speed_in_range=in_range, floquet_multipliers=multipliers,
+        stable=bool(np.all(np.abs(multipliers) < 1.0)), periodicity_residual=residual, iterations=iterations,
+        integrator=integrators.description(), tau_contact_loss=math.nan,
+    )
+
+
+def failure_record(status: Status, message: str, model: Model, start: Array, iterations: int,
+                   integrators: Integrators, tau_loss: float = math.nan) -> SteadyState:
+    """The record of a failure: ``status`` and ``message``, the last state tried, every number NaN.
+
+    ``tau_loss`` is the tau of contact loss (``contact_loss`` only); the multipliers are NaN too
+    and ``stable`` is False.
+    """
+    nan = math.nan
+    return SteadyState(
+        status, message, np.asarray(start, dtype=float).copy(), nan, nan, nan, nan, nan, nan, nan, nan, nan,
+        nan, nan, nan, nan, nan, nan, None, np.full(model.dim, nan, dtype=complex), False, nan, iterations,
+        integrators.description(), tau_loss,
+    )
+
+
+
+# --- The frozen-contact limit: where the shooting starts -----------------------------------------
+
+
+def _frozen_drift(model: Model, abar: float, deltabar_mean: float, amplitude: float, samples: int = 512) -> float:
+    """Mean front speed <x(Phi(abar, deltabar(tau)))> over a period, abar frozen.
+
+    deltabar(tau) = deltabar_mean - amplitude sin tau (the phase does not change the mean).
+    Its root is the limit omega_check -> infinity of the steady contact radius: the contact cannot
+    drift over a period. Periodic trapezoid rule on ``samples`` points; where abar^2 <= deltabar
+    the contact closes at the capped speed.
+    """
+    tau = np.linspace(0.0, TWO_PI, samples, endpoint=False)
+    gap = abar * abar - (deltabar_mean - amplitude * np.sin(tau))
+    cap = SPEED_CAP * model.rate
+    x = np.full_like(tau, cap)
+    valid = gap > 0
+    x[valid] = model.excitation.law.speed(np.maximum(gap[valid] ** 2 / abar, 1e-300))
+    return float(np.mean(np.clip(x, -cap, cap)))
+
+
+def _frozen_excitation(model: Model, abar: float) -> tuple[float, complex]:
+    """(mean deltabar, complex amplitude of xbar) with the contact radius frozen at ``abar``.
+
+    Rigid: (deltabar0, 0). Compliant: with abar fixed, Phat = 2 abar deltabar - (2/3) abar^3 is
+    linear in deltabar = xbar + deltabar0 - eps sin tau, so Eq. (3') is a linear oscillator with
+    the contact stiffness 2 abar (units of E* a_o): with sigma = c_o/kappa,
+    mean xbar = (mu/(kappa c_o^2) - sigma (2 abar deltabar0 - (2/3) abar^3))/(1 + 2 abar sigma), and
+    xbar - mean = Im(X e^{i tau}), X = 2 abar sigma eps/(1 + 2 abar sigma - omega_bar^2 + 2i zeta omega_bar)
+    (the denominator is kept away from 0 at an undamped resonance: a guess, not a result).
+    """
+    if not model.compliant:
+        return model.deltabar0, 0j
+    sigma = model.compliance
+    stiffness = 1.0 + 2.0 * abar * sigma
+    x_mean = (model.force_offset - sigma * (2.0 * abar * model.deltabar0 - (2.0 / 3.0) * abar**3)) / stiffness
+    denominator = complex(stiffness - model.omega_bar**2, 2.0 * model.zeta * model.omega_bar)
+    if abs(denominator) < 1e-2 * stiffness:
+        denominator = 1e-2 * stiffness * (denominator / abs(denominator) if denominator != 0 else 1.0)
+    return x_mean + model.deltabar0, 2.0 * abar * sigma * model.eps / denominator
+
+
+def _frozen_orbit_drift(abar: float, model: Model) -> float:
+    """Mean front speed of the frozen contact ``abar`` under its frozen excitation (rigid or spring).
+
+    :func:`_frozen_drift` with the contact displacement deltabar = mean + Im((X - eps) e^{i tau})
+    of :func:`_frozen_excitation` (limit omega_check -> infinity of Eqs. 3', 6').
+    """
+    d_mean, x_hat = _frozen_excitation(model, abar)
+    return _frozen_drift(model, abar, d_mean, abs(x_hat - model.eps))
+
+
+def frozen_start(model: Model) -> Array | None:
+    """Start of the periodic orbit in the limit omega_check -> infinity (a guess for the shooting).
+
+    The contact radius is the largest root of the frozen drift (:func:`_frozen_drift`) with the
+    contact displacement deltabar = mean + Im((X - eps) e^{i tau}) of :func:`_frozen_excitation`;
+    None when no root is bracketed.
+    """
+    hi = 1.0
+    while _frozen_orbit_drift(hi, model) > 0:
+        hi *= 2.0
+        if hi > MAX_ABAR:
+            return None
+    lo = 0.5 * hi
+    while _frozen_orbit_drift(lo, model) <= 0:
+        lo, hi = 0.5 * lo, lo
+        if lo < 1e-3:
+            return None
+    abar = brentq(_frozen_orbit_drift, lo, hi, args=(model,), xtol=1e-12)
+    if not model.compliant:
+        return np.array([abar])
+    d_mean, x_hat = _frozen_excitation(model, abar)
+    return np.array([d_mean - model.deltabar0 + x_hat.imag, x_hat.real, abar])
+
+
+
+# --- Brute-force transient -----------------------------------------------------------------------
+
+
+def transient(
+    excitation: BaseExcitation,
+    fixation: SpringFixation | None = None,
+    *,
+    periods: int,
+    initial_state: ArrayLike | None = None,
+    rtol: float = 1e-12,
+    integrator: Integrator = "auto",
+    contact_loss_abar: float = 1e-3,
+) -> Transient:
+    """Brute-force integration from the static state (or ``initial_state``) over ``periods`` periods.
+
+    The reference the shooting is checked against; each period is integrated from the state the
+    previous one ended in (the front displacement v is re-based every period, so abar keeps
+    full precision). Raises :class:`RuntimeError` if the integrator fails.
+    """
+    if periods < 1:
+        raise ValueError("periods must be at least 1")
+    model = Model(excitation, fixation, contact_loss_abar)
+    state = absolute_start(model, initial_state)
+    integrators = Integrators(integrator, rtol)
+    states = [state]
+    v_scale = v_scale_estimate(model, float(state[-1]))
+    for k in range(periods):
+        period = Period(model, state, v_scale, x_scale(model, state))
+        try:
+            run = run_period(period, integrators, full=False, transient=True)
+        except IntegrationError as error:
+            raise RuntimeError(f"transient integration failed in period {k + 1}: {error}") from error
+        if not math.isnan(run.lost_at):
+            return Transient("contact_loss", np.array(states), TWO_PI * k + run.lost_at)
+        v_scale = observed_v_scale(run)
+        state = period.absolute(run.y_end.tolist())
+        states.append(state)
+    return Transient("completed", np.array(states), math.nan)

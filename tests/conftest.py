@@ -1,0 +1,81 @@
+"""The paper's constants, written once for every test, and the pipeline's artefacts as a fixture.
+
+Constants: the values the paper prints, each with its place in the paper (the text of Sec. 3.4,
+Sec. 3.5.3 and the captions of Figs. 4-8). Test modules import them (``from conftest import CHI0``)
+because many are needed at import time (parametrize lists, module-level fixations); a test that
+deliberately uses another value writes that value itself. ``data/setup.yaml`` holds the same
+numbers for the pipeline; ``tests/test_data.py`` checks that file against these.
+
+Fixture ``pipeline_results``: the ``results/`` directory of one ``snakemake -c2 all validation`` run
+(about 3-5 min on 2 cores) in a temporary copy of the repository (the files ``git ls-files``
+lists, as they are in the working tree), made once per session. Set the environment variable
+``VIBROADHESION_RESULTS`` to a finished results directory (for example ``results`` after your own
+run) to use it instead of running the pipeline.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+
+# --- rig and material, Sec. 3.4 -----------------------------------------------------------------
+RADIUS = 51.5e-3  # m, indenter radius R (Sec. 3.4; captions of Figs. 6 and 8)
+YOUNGS_MODULUS = 2.8e6  # Pa, equilibrium modulus E of the PDMS sample (Sec. 3.4, Sec. 4)
+STORAGE_FACTOR = 2.0  # E amplified by 2 for the storage modulus at omega <= 2500 rad/s (Sec. 3.4)
+POISSON_RATIO = 0.5  # not printed: incompressible PDMS, the value that reproduces chi0 below (Eq. 64)
+REDUCED_MODULUS = STORAGE_FACTOR * YOUNGS_MODULUS / (1 - POISSON_RATIO**2)  # E* = 2E/(1 - nu^2), Pa
+
+# --- published Gent-Schultz fit, Fig. 4 caption ------------------------------------------------
+W0 = 0.236  # J/m^2
+N_PUBLISHED = 0.531  # exponent n
+V0 = 44.5e-6  # m/s (printed "um", a velocity; docs/errata.md)
+
+# --- dimensionless groups of the paper's figures -----------------------------------------------
+CHI0 = 2.589e-2  # Sec. 3.5.3 (Fig. 5 text) and Sec. 3.5.4 (Fig. 6 text); Eq. (64)
+ETA1 = 3.883e-4  # eta1 = h1/R for h1 = 20 um, R = 51.5 mm (Sec. 3.5.3, Fig. 5 text)
+NU0 = 1.227e-5  # nu0 = v0/(omega0 R) (Sec. 3.5.3, Fig. 5 text; printed there as "v0")
+C_O = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0  # a_o/R, text below Eq. (86)
+
+# --- test conditions ---------------------------------------------------------------------------
+FREQUENCIES_HZ = (200.0, 300.0, 400.0)  # excitation frequencies (Sec. 3.5.3; Fig. 4)
+OMEGA_BAR_200HZ = 17.85  # omega/omega0 at 200 Hz (Sec. 3.5.3; 26.78 and 35.7 at 300 and 400 Hz)
+AMPLITUDES_UM = (20.0, 40.0, 60.0, 80.0, 100.0)  # base amplitudes h1 (captions of Figs. 6, 7, 8)
+
+
+def _copy_tracked_files(dest: Path) -> Path:
+    """Copy the files git tracks, as they are in the working tree, into ``dest`` (a fresh clone's content)."""
+    listed = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True, text=True, check=True).stdout
+    for name in filter(None, listed.split("\0")):
+        source = ROOT / name
+        if source.is_file():  # a tracked file deleted in the working tree is not copied
+            (dest / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(source, dest / name)
+    return dest
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """A test that uses the pipeline's artefacts (fixture ``pipeline_results``) is a ``pipeline`` test."""
+    for item in items:
+        if "pipeline_results" in getattr(item, "fixturenames", ()):
+            item.add_marker(pytest.mark.pipeline)
+
+
+@pytest.fixture(scope="session")
+def pipeline_results(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """``results/`` of ``<venv>/bin/snakemake -c2 all validation`` in a copy of the repository, or $VIBROADHESION_RESULTS."""
+    finished = os.environ.get("VIBROADHESION_RESULTS")
+    if finished:
+        return Path(finished)
+    work = _copy_tracked_files(tmp_path_factory.mktemp("repository"))
+    snakemake = Path(sys.prefix) / "bin" / "snakemake"
+    out = subprocess.run([str(snakemake), "-c2", "all", "validation"], cwd=work, capture_output=True, text=True,
+                         timeout=3600)
+    assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+    return work / "results"
