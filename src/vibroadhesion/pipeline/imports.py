@@ -15,7 +15,7 @@ from __future__ import annotations
 import ast
 import json
 from collections.abc import Iterable, Iterator
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 PACKAGE = "vibroadhesion"
@@ -32,7 +32,8 @@ def _is_type_checking(node: ast.AST) -> bool:
 
 def _runtime_statements(body: list[ast.stmt]) -> Iterator[ast.AST]:
     """Every statement in ``body`` and in the blocks nested in it (functions, classes, if, try, with, loops,
-    match), except the body of ``if TYPE_CHECKING:``. Imports are statements: expressions need no visit."""
+    match), except the body of ``if TYPE_CHECKING:``. Imports are statements: expressions need no visit.
+    """
     stack: list[ast.AST] = list(body)
     while stack:
         node = stack.pop()
@@ -46,7 +47,8 @@ def _runtime_statements(body: list[ast.stmt]) -> Iterator[ast.AST]:
 
 def imported_names(source: str, where: str) -> set[str]:
     """Dotted names of the package that the Python ``source`` imports; ``from a import b`` gives ``a`` and ``a.b``
-    (``b`` may be a module or a name in ``a``). ``where`` names the source in the error of a relative import."""
+    (``b`` may be a module or a name in ``a``). ``where`` names the source in the error of a relative import.
+    """
     names: set[str] = set()
     for node in _runtime_statements(ast.parse(source).body):
         if isinstance(node, ast.Import):
@@ -69,12 +71,12 @@ def _code_of(path: Path) -> str:
     return "\n".join(line for line in lines if not line.lstrip().startswith(("%", "!")))
 
 
-@lru_cache(maxsize=None)
+@cache
 def _imports_of(path: Path) -> frozenset[str]:
     return frozenset(imported_names(_code_of(path), str(path)))
 
 
-@lru_cache(maxsize=None)
+@cache
 def module_file(name: str, src: Path) -> Path | None:
     """The file of module ``name`` under ``src`` (a package's ``__init__.py``), or None (not a module)."""
     base = src.joinpath(*name.split("."))
@@ -95,7 +97,8 @@ def _modules_run_by(name: str, src: Path) -> Iterator[Path]:
 
 def import_closure(sources: Iterable[str | Path], root: str | Path = ".") -> list[str]:
     """``sources`` (scripts or notebooks, relative to ``root``) and every module of the package under
-    ``root/src`` they import, directly or through other modules: sorted paths relative to ``root``."""
+    ``root/src`` they import, directly or through other modules: sorted paths relative to ``root``.
+    """
     root = Path(root)
     src = root / "src"
     seen: set[Path] = set()

@@ -26,7 +26,8 @@ def fig4_table(
 ) -> pd.DataFrame:
     """Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
     exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
-    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0))."""
+    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0)).
+    """
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frames = []
     lead = predict_pulloff("leading", params["leading"], np.nan, h1_um, **geometry)

@@ -1,5 +1,6 @@
 """Fig. 5: passage through resonance of a compliantly fixed indenter (refined model, Eqs. 87, 90-96),
-traced by continuation."""
+traced by continuation.
+"""
 
 from __future__ import annotations
 

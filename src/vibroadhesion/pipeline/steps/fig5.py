@@ -20,7 +20,8 @@ def _floats(value: object) -> list[float]:
 
 def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple[CompliantFixation, dict[float, float]]:
     """Fig. 5's base parameters (chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu; Eqs. 64-66) at the figure's
-    amplitude, with kappa = 1 and zeta = 0 to be replaced, and omega_bar = omega/omega0 at each test frequency."""
+    amplitude, with kappa = 1 and zeta = 0 to be replaced, and omega_bar = omega/omega0 at each test frequency.
+    """
     omega0 = float(setup_entry(setup, "fixation.natural_frequency"))
     h1_um = float(setup_entry(setup, "test_conditions.fig5_amplitude"))
     base = CompliantFixation(chi0=chi0, eta1=float(groups.eta1(h1_um * 1e-6, setup.radius)),
@@ -32,7 +33,8 @@ def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple
 def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, markers_out: str | Path,
               counts_out: str | Path, omega_bar_min: float, omega_bar_max: float, count_points: int) -> None:
     """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta) of data/setup.yaml; folds,
-    the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar."""
+    the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar.
+    """
     setup, params, chi0 = rig(setup_json, fit_json)
     base, experiments = compliant_base(setup, params, chi0)
     kappas = _floats(setup_entry(setup, "fixation.stiffness_ratio_kappa"))

@@ -12,7 +12,8 @@ from vibroadhesion.pipeline.artefacts import write_json
 
 def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figures_use: str) -> None:
     """Fit w0, n, v0 to the measured rows with each model level (Eqs. 71-72, 106); no rows: the published
-    parameters pass through. ``figures_use`` names the fit the figures take their parameters from."""
+    parameters pass through. ``figures_use`` names the fit the figures take their parameters from.
+    """
     setup = data.read_canonical_setup(setup_json)
     rows = data.read_canonical_pulloff(pulloff_csv)
     published = GentSchultzParameters(setup.w0, setup.n, setup.v0)

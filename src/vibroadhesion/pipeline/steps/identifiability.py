@@ -1,5 +1,6 @@
 """Steps of the identifiability rules: what the simulated pull-off determines of w0, n, v0, and which
-model level recovers them (sensitivities, Cramer-Rao standard errors, fits)."""
+model level recovers them (sensitivities, Cramer-Rao standard errors, fits).
+"""
 
 from __future__ import annotations
 
@@ -19,7 +20,8 @@ from vibroadhesion.pipeline.steps.inputs import rig
 
 def sensitivity_run(setup_json: str | Path, fit_json: str | Path, out: str | Path, parameter: str, sign: str) -> None:
     """Simulated pull-off (rigid fixation, every test frequency and amplitude of the rig) with ``parameter``
-    scaled by exp(+h) (``sign`` "plus") or exp(-h) ("minus")."""
+    scaled by exp(+h) (``sign`` "plus") or exp(-h) ("minus").
+    """
     setup, params, _ = rig(setup_json, fit_json)
     shifted = identifiability.perturbed(GentSchultzParameters(**params), parameter, {"plus": 1, "minus": -1}[sign])
     h1 = np.asarray(setup.amplitudes_um, dtype=float)

@@ -1,5 +1,6 @@
 """Steps of the validation rules: every model level against the direct simulation (errors and their
-summary), and Fig. 5's folded resonance swept up and down with the simulation."""
+summary), and Fig. 5's folded resonance swept up and down with the simulation.
+"""
 
 from __future__ import annotations
 
@@ -20,7 +21,8 @@ from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, set
 def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | Path, errors_out: str | Path,
                  summary_out: str | Path) -> None:
     """Relative error of every level against the simulation on the rigid grid, and its summary (largest
-    error per level and quantity, overall and at the test frequencies)."""
+    error per level and quantity, overall and at the test frequencies).
+    """
     setup, params, _ = rig(setup_json, fit_json)
     errors = validation.relative_errors(pd.read_csv(grid_csv))
     summary = validation.error_summary(errors, list(experiment_omega_check(setup, params["v0"]).values()))
@@ -34,7 +36,8 @@ def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Pat
                     curve_range: tuple[float, float]) -> None:
     """The simulated compliant case of data/setup.yaml (kappa, zeta) swept up and down over ``points``
     log-spaced omega_bar (Floquet stability), and the refined model's curve of that case traced over
-    Fig. 5's ``curve_range`` (Eqs. 87, 90) within the sweep's range, as Fig. 5 draws it."""
+    Fig. 5's ``curve_range`` (Eqs. 87, 90) within the sweep's range, as Fig. 5 draws it.
+    """
     setup, params, chi0 = rig(setup_json, fit_json)
     base, _ = compliant_base(setup, params, chi0)
     p = replace(base, kappa=float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
