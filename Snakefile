@@ -1,6 +1,8 @@
 # Vibroadhesion pipeline: `snakemake -c2` regenerates the figures, the fit and their report pages;
 # `snakemake -c2 validation` adds the checks against the direct simulation (slower; see README).
-# Rules live in workflow/rules/*.smk; settings in workflow/config.yaml (schema-validated).
+# Rules live in workflow/rules/*.smk and run workflow/scripts/<rule>.py (Snakemake's `script:`), each
+# a few lines calling one function of vibroadhesion.pipeline.steps; settings in workflow/config.yaml
+# (schema-validated; grids and switches only: every physical value is in data/setup.yaml).
 from snakemake.utils import min_version, validate
 
 min_version("9.0")
@@ -15,19 +17,20 @@ validate(config, "workflow/schemas/config.schema.yaml")
 include: "workflow/rules/common.smk"
 include: "workflow/rules/ingest.smk"
 include: "workflow/rules/fit.smk"
+include: "workflow/rules/simulation.smk"
 include: "workflow/rules/figures.smk"
-include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/validation.smk"
 include: "workflow/rules/identifiability.smk"
+include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/report.smk"
 
 
 rule all:
     default_target: True
     input:
-        "results/fit/gent_schultz.json",
+        rules.fit_gent_schultz.output,
         expand("results/{fig}/{fig}.{ext}", fig=FIGURES, ext=["csv", "pdf", "png"]),
-        "results/report/index.html",
+        expand(rules.report_index.output, index="index"),
 
 
 rule validation:
@@ -35,10 +38,10 @@ rule validation:
     identifiability of the Gent-Schultz parameters from the virtual pull-off experiment, the
     speed-against-error benchmarks, and their report pages."""
     input:
-        "results/validation/rigid_error_maps.png",
-        "results/validation/compliant_sweep.png",
-        "results/validation/virtual_pulloff.csv",
-        "results/validation/identifiability/fits.csv",
-        "results/validation/identifiability/information.csv",
-        "results/benchmarks/speed_vs_error.csv",
-        "results/report/validation_index.html",
+        rules.validation_plot.output.png,
+        rules.validation_compliant_plot.output.png,
+        rules.virtual_pulloff_gather.output,
+        rules.identifiability.output.fits,
+        rules.identifiability.output.information,
+        rules.benchmark_speed_vs_error.output.csv,
+        expand(rules.report_index.output, index="validation_index"),

@@ -22,7 +22,8 @@ import pandas as pd
 from vibroadhesion.core import groups
 
 from vibroadhesion.experiments import validation
-from vibroadhesion.pipeline.artefacts import save_figure, write_csv
+from vibroadhesion.pipeline.artefacts import write_csv
+from vibroadhesion.pipeline.figures import save_figure
 from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.pipeline.data import read_canonical_setup
 from vibroadhesion.core.ratelaw import GentSchultz

@@ -16,9 +16,10 @@ import matplotlib.pyplot as plt
 import pandas as pd
 import pytest
 
-from vibroadhesion.pipeline.artefacts import save_figure, write_csv, write_json
+from vibroadhesion.pipeline.artefacts import write_csv, write_json
 from vibroadhesion.pipeline.atomic import atomic_path, create_beside
 from vibroadhesion.pipeline.data import main as data_main
+from vibroadhesion.pipeline.figures import save_figure
 
 ROOT = Path(__file__).resolve().parents[1]
 UMASKS = {0o022: 0o644, 0o077: 0o600}  # umask -> the mode a file created with 0o666 gets

@@ -18,7 +18,7 @@ from conftest import CHI0, ETA1, N_PUBLISHED, NU0, OMEGA_BAR_200HZ
 from scipy.optimize import root
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.pipeline import figures
+from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import (
     NOTCH_FLOOR,
     CompliantFixation,
@@ -150,7 +150,7 @@ def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
         abar_m, abar = newton_at_frequency(omega_bar, FOLDING, LAW, (static, 1e-14))
         assert abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
-    curves, _, _ = figures.fig5_tables(FOLDING, [1e-3], [0.0], N_PUBLISHED, {}, (0.1, 50.0), 20)
+    curves, _, _ = fig5_tables(FOLDING, [1e-3], [0.0], N_PUBLISHED, {}, (0.1, 50.0), 20)
     exact = curves[curves["branch"] == "anti-resonance"]
     assert len(exact) == 1 and exact["omega_bar"].iloc[0] == 1.0 and exact["Abar"].iloc[0] == 0.0
     assert exact["abar_m"].iloc[0] == static

@@ -90,10 +90,16 @@ def test_shipped_setup_loads() -> None:
     assert setup.amplitudes_um == AMPLITUDES_UM
     assert (setup.w0, setup.n, setup.v0) == (W0, N_PUBLISHED, V0)
     assert setup.sources["indenter.radius"].startswith("Sec. 3.4:")
-    assert len(setup.sources) == 15 and all(s.strip() for s in setup.sources.values())
-    # the compliant fixation of Fig. 5: assumed values, each with its reasoning (Sec. 3.5.3 gives none)
+    assert len(setup.sources) == 19 and all(s.strip() for s in setup.sources.values())
+    # Fig. 5's amplitude and marked test frequency (its caption)
+    assert setup.values["test_conditions.fig5_amplitude"] == 20.0
+    assert setup.values["test_conditions.fig5_highlight_frequency"] == 200.0
+    assert setup.sources["test_conditions.fig5_amplitude"].startswith("Fig. 5 caption")
+    # the compliant fixation of Fig. 5, and the case of it the simulation checks: assumed values, each
+    # with its reasoning (Sec. 3.5.3 gives none)
     assert setup.fixation == {"natural_frequency": 70.42, "stiffness_ratio_kappa": (0.001, 0.01),
-                              "weight_ratio_mu": 0.0, "damping_ratio_zeta": (0.0, 0.01, 0.05)}
+                              "weight_ratio_mu": 0.0, "damping_ratio_zeta": (0.0, 0.01, 0.05),
+                              "simulated_stiffness_ratio_kappa": 0.001, "simulated_damping_ratio_zeta": 0.01}
     assert all(setup.sources[f"fixation.{k}"].startswith(("assumed", "derived")) for k in setup.fixation)
     assert setup.units["gent_schultz_published.v0"] == "m/s"
     assert setup.values["test_conditions.frequencies"] == FREQUENCIES_HZ

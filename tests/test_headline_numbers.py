@@ -34,8 +34,8 @@ import pytest
 from conftest import FREQUENCIES_HZ, RADIUS, ROOT, V0
 
 ARTEFACTS = {
-    "rigid_grid": "validation/rigid_grid.csv",
-    "virtual_pulloff": "validation/virtual_pulloff.csv",
+    "rigid_grid": "simulation/rigid_grid.csv",
+    "virtual_pulloff": "simulation/virtual_pulloff.csv",
     "compliant_sweep": "validation/compliant_sweep.csv",
     "fig5_markers": "fig5/fig5_markers.csv",
     "fits": "validation/identifiability/fits.csv",

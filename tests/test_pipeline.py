@@ -2,13 +2,19 @@
 
 References: the issue's acceptance criteria (artefacts exist with the stated columns; a second
 run has nothing to do; a data edit reruns the fit, the figures and the report and nothing
-else; bad input stops the run with one line naming file, row and column and leaves no
-partial outputs), the papermill convention of exactly one ``parameters`` cell, and byte-level
+else; a code edit reruns exactly the rules whose step imports the module, checked against an
+independent record of the imports (the modules Python loads, and the import instructions in the
+bytecode of every function); bad input stops the run with one line naming file, row and column
+and leaves no partial outputs; the rules run from a path with spaces, the project's and the
+interpreter's), the papermill convention of exactly one ``parameters`` cell, and byte-level
 determinism of the writers.
 """
 
 from __future__ import annotations
 
+import functools
+import json
+import os
 import re
 import shutil
 import subprocess
@@ -21,23 +27,26 @@ import pandas as pd
 import pytest
 from conftest import AMPLITUDES_UM, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
-from vibroadhesion.pipeline.artefacts import save_figure, write_csv
-from vibroadhesion.pipeline.figures import fig4_table, plot_fig4
+from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.pipeline.artefacts import write_csv
+from vibroadhesion.pipeline.figures import plot_fig4, save_figure
+from vibroadhesion.pipeline.imports import import_closure
+from vibroadhesion.pipeline.pages import PAGES
 
 ROOT = Path(__file__).resolve().parents[1]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
 DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot", "fig5_data", "fig5_plot",
               "fig6_data", "fig6_plot", "fig7_data", "fig7_plot", "fig8_data", "fig8_plot",
-              "validation_rigid", "validation_gather", "virtual_pulloff", "virtual_pulloff_fixation",
-              "execute_notebook", "render_page", "report_index", "all"}
+              "simulation_rigid", "simulation_rigid_grid", "virtual_pulloff", "virtual_pulloff_fixation",
+              "report_page", "report_index", "all"}
 # What `snakemake -c2 validation` adds to a finished default run: the checks against the simulation
 # (including the compliant virtual pull-off; the default run made the rigid one for Figs. 4 and 7).
-VALIDATION_RULES = {"validation_plot", "validation_compliant", "validation_compliant_plot", "pulloff_sensitivity",
-                    "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
-                    "identifiability_fit", "identifiability", "benchmark_j_integrals", "benchmark_simulate", "benchmark_speed_vs_error", "execute_notebook",
-                    "render_page", "report_index", "validation"}
+VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_compliant", "validation_compliant_plot",
+                    "pulloff_sensitivity", "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
+                    "identifiability_fit", "identifiability", "benchmark_j_integrals", "benchmark_simulate",
+                    "benchmark_speed_vs_error", "report_page", "report_index", "validation"}
 
 
 def _copy_repo(dest: Path) -> Path:
@@ -90,10 +99,11 @@ def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: 
         assert rows["frequency_hz"].nunique(dropna=False) == n_freq
     assert fig4.loc[fig4["model"] == "leading", "frequency_hz"].isna().all()
     assert (results / "fit/gent_schultz.json").exists()
-    virtual = pd.read_csv(results / "validation/virtual_pulloff_rigid.csv")
+    virtual = pd.read_csv(results / "simulation/virtual_pulloff_rigid.csv")
     assert set(virtual["fixation"]) == {"rigid"}
     assert {"fixation", "frequency_hz", "h1_um", "model", "pulloff_ratio", "pulloff_mN"} <= set(virtual.columns)
-    assert not (results / "validation/virtual_pulloff/compliant_200Hz.csv").exists()
+    assert not (results / "simulation/virtual_pulloff/compliant_200Hz.csv").exists()
+    assert not (results / "validation").exists()  # the figures read no validation output
     for page in ("index", "fig3", "fig4", "fig5", "fig6", "fig7", "fig8", "fit"):
         assert (results / "report" / f"{page}.html").stat().st_size > 0
 
@@ -124,7 +134,7 @@ def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
         planned = _planned_rules(pipeline_run)
     finally:
         module.write_text(original)
-    assert planned == {"fig8_data", "fig8_plot", "execute_notebook", "render_page", "report_index", "all"}
+    assert planned == {"fig8_data", "fig8_plot", "report_page", "report_index", "all"}
 
 
 @pytest.mark.pipeline
@@ -164,3 +174,165 @@ def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> Non
         save_figure(plot_fig4(table, measured, 57.27), tmp_path / f"f{k}.pdf", tmp_path / f"f{k}.png")
         digests.append([(tmp_path / f"{s}{k}.{e}").read_bytes() for s, e in (("t", "csv"), ("f", "pdf"), ("f", "png"))])
     assert digests[0] == digests[1]
+
+
+# --- Code dependencies: the import closure of each rule's step, against an independent record -----
+
+# Run in a fresh interpreter: import the package modules named on the command line, then, until
+# nothing new loads, every module named by an IMPORT_NAME instruction in the bytecode of a function
+# (or method) of a loaded package module; print the files of the package modules Python loaded.
+_REFERENCE = r"""
+import dis, importlib, sys, types
+
+def loaded():
+    return {n: m for n, m in list(sys.modules.items()) if n.split(".")[0] == "vibroadhesion"}
+
+def functions(module):
+    for obj in vars(module).values():
+        members = vars(obj).values() if isinstance(obj, type) and obj.__module__ == module.__name__ else [obj]
+        for f in members:
+            f = getattr(f, "__func__", getattr(f, "fget", f))
+            if isinstance(f, types.FunctionType) and f.__module__ == module.__name__:
+                yield f.__code__
+
+def nested(code):
+    yield code
+    for const in code.co_consts:
+        if isinstance(const, types.CodeType):
+            yield from nested(const)
+
+def imports(code):
+    instructions = list(dis.get_instructions(code))
+    for k, ins in enumerate(instructions):
+        if ins.opname == "IMPORT_NAME" and ins.argval.split(".")[0] == "vibroadhesion":
+            yield ins.argval, instructions[k - 1].argval or ()
+
+def load(name):
+    try:
+        importlib.import_module(name)
+    except ModuleNotFoundError:  # ``from a import b`` with b a name in module a, not a module
+        pass
+
+for name in sys.argv[1:]:
+    load(name)
+done = set()
+while len(done) < len(loaded()):
+    for name, module in loaded().items():
+        if name in done:
+            continue
+        done.add(name)
+        for code in (c for top in functions(module) for c in nested(top)):
+            for target, fromlist in imports(code):
+                load(target)
+                for item in fromlist:
+                    load(f"{target}.{item}")
+print("\n".join(sorted(m.__file__ for m in loaded().values())))
+"""
+
+
+def _named_modules(path: Path) -> list[str]:
+    """Modules of the package a script or notebook names in its import lines (read as text, no ast)."""
+    text = path.read_text()
+    if path.suffix == ".ipynb":
+        text = "\n".join("".join(c["source"]) for c in json.loads(text)["cells"] if c["cell_type"] == "code")
+    names = []
+    for line in text.splitlines():
+        m = re.match(r"\s*(?:from\s+(vibroadhesion[\w.]*)\s+import\s+([\w, ]+)|import\s+(vibroadhesion[\w.]*))", line)
+        if m and m.group(1):
+            names += [m.group(1)] + [f"{m.group(1)}.{n.strip()}" for n in m.group(2).split(",")]
+        elif m:
+            names.append(m.group(3))
+    return names
+
+
+@functools.lru_cache(maxsize=None)
+def _reference_closure(path: Path) -> frozenset[str]:
+    """Package files (relative to the repository) that running ``path`` loads, by the record above."""
+    out = subprocess.run([sys.executable, "-c", _REFERENCE, *_named_modules(path)], capture_output=True, text=True,
+                         check=True, cwd=ROOT)
+    return frozenset(Path(f).resolve().relative_to(ROOT).as_posix() for f in out.stdout.split())
+
+
+_SOURCES = sorted((ROOT / "workflow/scripts").glob("*.py")) + sorted((ROOT / "notebooks").glob("*.ipynb"))
+
+
+@pytest.mark.parametrize("source", _SOURCES, ids=lambda p: p.name)
+def test_import_closure_equals_the_modules_python_loads(source: Path) -> None:
+    closure = set(import_closure([source.relative_to(ROOT)], ROOT)) - {source.relative_to(ROOT).as_posix()}
+    reference = _reference_closure(source)
+    assert closure == reference, (closure - reference, reference - closure)
+
+
+def _adapter_closures() -> dict[str, set[str]]:
+    """rule -> package files its adapter loads (reference), and report_page -> those of the default pages."""
+    closures = {p.stem: set(_reference_closure(p)) for p in (ROOT / "workflow/scripts").glob("*.py")}
+    closures["report_page"] |= set().union(*(_reference_closure(ROOT / f"notebooks/{page}.ipynb") for page, _ in PAGES))
+    return closures
+
+
+def _downstream(workdir: Path, rules: set[str]) -> set[str]:
+    """``rules`` and every rule that consumes their outputs, directly or not (Snakemake's rule graph)."""
+    out = _snakemake(workdir, "--rulegraph", "--forceall")
+    assert out.returncode == 0, out.stderr
+    names = dict(re.findall(r"^\s*(\d+)\[label = \"(\w+)\"", out.stdout, re.MULTILINE))
+    edges = re.findall(r"^\s*(\d+) -> (\d+)", out.stdout, re.MULTILINE)
+    found, todo = set(rules), list(rules)
+    while todo:
+        rule = todo.pop()
+        for a, b in edges:
+            if names[a] == rule and names[b] not in found:
+                found.add(names[b])
+                todo.append(names[b])
+    return found
+
+
+@pytest.mark.pipeline
+@pytest.mark.parametrize("module", ["src/vibroadhesion/core/jkr.py", "src/vibroadhesion/models/refined.py",
+                                    "src/vibroadhesion/pipeline/figures.py", "src/vibroadhesion/pipeline/data.py"])
+def test_editing_a_module_reruns_exactly_the_rules_whose_step_imports_it(pipeline_run: Path, module: str) -> None:
+    """Planned: the rules whose adapter loads ``module`` (by the independent record) and the rules downstream
+    of them, nothing else. (A dry run names one reason per job: a job downstream of a rerun says so even
+    when it imports the module too, so the planned set, not the reasons, is compared.)"""
+    default_rules = _planned_rules(pipeline_run, "--forceall")
+    importers = {rule for rule, files in _adapter_closures().items() if module in files and rule in default_rules}
+    assert importers, f"no rule of the default target imports {module}"
+    path = pipeline_run / module
+    original = path.read_text()
+    try:
+        path.write_text(original + "\n# edited\n")
+        planned = _planned_rules(pipeline_run)
+    finally:
+        path.write_text(original)
+    expected = _downstream(pipeline_run, importers)
+    assert importers <= planned and planned == expected, planned ^ expected
+
+
+# --- Paths with spaces and the cost of a DAG build ---------------------------------------------------
+
+
+@pytest.mark.pipeline
+def test_rules_run_with_project_and_interpreter_under_paths_with_spaces(tmp_path: Path) -> None:
+    (tmp_path / "a project with spaces").mkdir()
+    work = _copy_repo(tmp_path / "a project with spaces")
+    (work / "the venv").symlink_to(Path(sys.prefix), target_is_directory=True)
+    python = work / "the venv" / "bin" / "python"
+    out = subprocess.run([str(python), "-m", "snakemake", "-c2", "results/report/fig3.html"], cwd=work,
+                         capture_output=True, text=True, timeout=900, env={**os.environ, "PATH": os.defpath})
+    assert out.returncode == 0, out.stderr[-4000:]
+    for artefact in ("fit/gent_schultz.json", "fig3/fig3.csv", "fig3/fig3.png", "report/fig3.html"):
+        assert (work / "results" / artefact).stat().st_size > 0, artefact
+
+
+def test_building_the_dag_imports_no_numerics() -> None:
+    """The modules the Snakefile imports (pages, import closure) load none of the numerics stack."""
+    code = ("import sys, vibroadhesion.pipeline.imports, vibroadhesion.pipeline.pages; "
+            "print(' '.join(m for m in ('numpy', 'pandas', 'scipy', 'matplotlib') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == ""
+
+
+@pytest.mark.parametrize("step", sorted(p.stem for p in (ROOT / "src/vibroadhesion/pipeline/steps").glob("*.py")))
+def test_only_plot_steps_import_matplotlib(step: str) -> None:
+    code = f"import sys, vibroadhesion.pipeline.steps.{step}; print('matplotlib' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == str(step == "plots")

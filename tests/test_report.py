@@ -5,7 +5,7 @@ from pathlib import Path
 import pytest
 
 from vibroadhesion.pipeline import report
-from vibroadhesion.pipeline.report import PAGES, VALIDATION_PAGES, write_index
+from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES, write_index
 
 
 @pytest.mark.parametrize(("name", "pages", "other"), [("index", PAGES, VALIDATION_PAGES),

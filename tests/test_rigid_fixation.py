@@ -17,7 +17,10 @@ import pytest
 from conftest import AMPLITUDES_UM, CHI0, N_PUBLISHED, RADIUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.pipeline import figures
+from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT
+from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
+from vibroadhesion.experiments.figure_tables.fig8 import fig8_table
+from vibroadhesion.experiments.figure_tables.rigid import FIG6_COLUMNS, fig6_table, fig7_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact, nominal_point_contact_closure, rigid_amplitude_squared
@@ -127,8 +130,8 @@ def test_large_amplitude_at_low_frequency_is_reported_outside_the_model_not_cras
     """h1 = 100 um .. 1 mm at omega_check = 10 gives A/a_m > 1 (geometrically impossible): the
     table keeps the rows with finite values so the figure can shade them, and the counts the
     fig6 rule logs follow from the column. The 20 um, 200 Hz point of the paper is inside A <= 0.1 a_m."""
-    table = figures.fig6_table([20.0, 100.0, 1000.0], np.array([1e1, 3.0e6]), chi0=CHI0, radius=RADIUS, n=N_PUBLISHED)
-    assert np.isfinite(table[figures.FIG6_COLUMNS].to_numpy()).all()
+    table = fig6_table([20.0, 100.0, 1000.0], np.array([1e1, 3.0e6]), chi0=CHI0, radius=RADIUS, n=N_PUBLISHED)
+    assert np.isfinite(table[FIG6_COLUMNS].to_numpy()).all()
     low = table[table["omega_check"] == 1e1]
     assert (low["A_over_am"] > 1).all()
     # A/a_m from Eq. (45) and Eq. (86) (docs/errata.md E1), recomputed from the table's own columns
@@ -136,7 +139,7 @@ def test_large_amplitude_at_low_frequency_is_reported_outside_the_model_not_cras
     recomputed = table["Abar"] / (table["omega_check"] * c_o * table["abar_m"])
     assert np.allclose(table["A_over_am"], recomputed, rtol=1e-14, atol=0)
     experiment = table[(table["h1_um"] == 20.0) & (table["omega_check"] == 3.0e6)]
-    assert float(experiment["A_over_am"].iloc[0]) < figures.APPLICABILITY_LIMIT
+    assert float(experiment["A_over_am"].iloc[0]) < APPLICABILITY_LIMIT
 
 
 # ----------------------------------------------------------------- Fig. 7: omega_check -> infinity
@@ -152,17 +155,17 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
     """Reference: Fig. 4's leading-order pull-off, Eq. (72) (frequency independent). Eq. (106)'s
     frequency term is (3 Abar/(chi0 omega_check))^2 relative to the first: below 1e-20 at
     HIGH_OMEGA_CHECK, so the Fig. 7 table must equal Fig. 4's to 1e-9 there (and at omega_check = inf)."""
-    fig7 = figures.fig7_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n], math.inf]), chi0=CHI0, radius=RADIUS, n=n)
+    fig7 = fig7_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n], math.inf]), chi0=CHI0, radius=RADIUS, n=n)
     w0 = W0  # J/m^2, Fig. 4 caption; E* chosen so that Eq. (64) gives chi0 = CHI0
     params = GentSchultzParameters(w0=w0, n=n, v0=V0)
-    fig4 = figures.fig4_table({"leading": params, "refined": params}, [200.0], np.array(AMPLITUDES_UM),
+    fig4 = fig4_table({"leading": params, "refined": params}, [200.0], np.array(AMPLITUDES_UM),
                               radius=RADIUS, reduced_modulus=9 * math.pi * w0 / (RADIUS * CHI0**3))
     leading = fig4[fig4["model"] == "leading"].set_index("h1_um")["ratio"]
     for omega_check, rows in fig7.groupby("omega_check"):
         got = rows.set_index("h1_um")["ratio"]
         assert np.allclose(got.to_numpy(), leading.loc[got.index].to_numpy(), rtol=1e-9, atol=0), omega_check
     # and the refined ratio approaches it from below at finite frequency (delta_s only adds, Eq. 106)
-    finite = figures.fig7_table(AMPLITUDES_UM, np.array([1e3]), chi0=CHI0, radius=RADIUS, n=n)
+    finite = fig7_table(AMPLITUDES_UM, np.array([1e3]), chi0=CHI0, radius=RADIUS, n=n)
     assert np.all(finite["ratio"].to_numpy() < leading.loc[finite["h1_um"]].to_numpy())
 
 
@@ -173,8 +176,8 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
 def test_fig8_storage_stiffness_tends_to_flat_punch_as_omega_check_to_infinity(n: float) -> None:
     """Greenwood–Johnson: S'/(2E* a_m) -> 1 as omega_check -> infinity (Eq. 119). The deviation is
     O(r^2), r = delta_s/delta_c of Eq. (120) ~ Abar/omega_check; at HIGH_OMEGA_CHECK below 1e-9."""
-    fig6 = figures.fig6_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n]]), chi0=CHI0, radius=RADIUS, n=n)
-    fig8 = figures.fig8_table(fig6, chi0=CHI0, n=n)
+    fig6 = fig6_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n]]), chi0=CHI0, radius=RADIUS, n=n)
+    fig8 = fig8_table(fig6, chi0=CHI0, n=n)
     assert np.allclose(fig8["S_storage_rel"], 1.0, rtol=0, atol=1e-9)
     assert np.all(np.abs(fig8["S_loss_rel"]) < 1e-4) and np.all(np.abs(fig8["phase_rad"]) < 1e-4)
 
@@ -218,7 +221,7 @@ def test_fig8_along_fig6_grid_goes_from_one_third_to_one_monotonically() -> None
     """Across the figure's range (omega_check 1e1 .. 1e9) the storage stiffness lies between the two
     limits 1/3 and 1 and increases with frequency for every amplitude (paper's Fig. 8)."""
     grid = np.logspace(1, 9, 81)
-    fig8 = figures.fig8_table(figures.fig6_table(AMPLITUDES_UM, grid, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED),
+    fig8 = fig8_table(fig6_table(AMPLITUDES_UM, grid, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED),
                               chi0=CHI0, n=N_PUBLISHED)
     for _, rows in fig8.groupby("h1_um"):
         s = rows.sort_values("omega_check")["S_storage_rel"].to_numpy()

@@ -1,34 +1,64 @@
-# Helpers shared by the rules.
+# Helpers shared by the rules: the rig's test conditions (read at DAG time) and each rule's code.
 import sys
-from pathlib import Path
 
-# Run every step with the interpreter that runs Snakemake (the project's virtual environment),
-# whether or not that environment is activated in the shell.
+import yaml
+
+from vibroadhesion.pipeline.imports import import_closure
+
+# Each step is workflow/scripts/<name>.py, run by `script:` with the interpreter that runs Snakemake
+# (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
 PYTHON = sys.executable
 
 FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
 
-def code(*modules):
-    """Package sources a rule depends on, plus the lock: editing any of them reruns the rule.
-
-    Snakemake does not track imported code by itself; listing the files as inputs makes a
-    change of their content trigger a rerun of exactly the rules that use them.
-    """
-    return [str(next(Path("src/vibroadhesion").glob(f"*/{m}.py"))) for m in modules] + ["environment.lock"]
+def _rig_values(group, entry):
+    """A list of data/setup.yaml (validated by the ingest step) as wildcard values, 200.0 -> "200"."""
+    with open(config["data"]["setup"], encoding="utf-8") as stream:
+        return [f"{float(v):g}" for v in yaml.safe_load(stream)[group][entry]["value"]]
 
 
-NUMERICS = [
-    "ratelaw",
-    "integrals",
-    "roots",
-    "scan",
-    "groups",
-    "jkr",
-    "leading_order",
-    "leading_pulloff",
-    "refined",
-    "pulloff",
-]
-#: The simulation sub-package, module by module (model -> integrators -> orbits -> shooting).
-SIMULATION = ["model", "integrators", "orbits", "shooting"]
+# The rig's test frequencies (Hz) and base amplitudes (um): one job per value where a rule splits.
+FREQUENCIES = _rig_values("test_conditions", "frequencies")
+AMPLITUDES = _rig_values("test_conditions", "amplitudes")
+
+
+def code(*sources):
+    """The code a job runs, as inputs: the adapter scripts (workflow/scripts/<name>.py) or other scripts and
+    notebooks named, every package module they import (vibroadhesion.pipeline.imports), and the lock.
+    Editing any of them reruns the job; a module its step does not import cannot."""
+    paths = [s if s.endswith((".py", ".ipynb")) else f"workflow/scripts/{s}.py" for s in sources]
+    return import_closure(paths) + ["environment.lock"]
+
+
+# The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
+TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
+
+
+def page_inputs(wildcards):
+    """The artefacts a page reads (its papermill parameters), and the rule timings for the benchmarks page."""
+    inputs = dict(PAGE_INPUTS[wildcards.page])
+    if wildcards.page == "benchmarks":
+        inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
+    return inputs
+
+
+def page_parameters(wildcards):
+    """papermill parameters: the path of every artefact the page reads (strings)."""
+    parameters = {name: str(path) for name, path in PAGE_INPUTS[wildcards.page].items()}
+    if wildcards.page == "benchmarks":
+        parameters["rule_tsv_glob"] = "results/benchmarks/rules/*.tsv"
+    return parameters
+
+
+# Snakemake 9 runs a Python `script:` as `{py_exec} {fname:q}` with the interpreter unquoted, so every such
+# rule fails when the .venv lies under a path with spaces (snakemake/snakemake#2645, open). There, and only
+# there, run it quoted; this project uses no conda environment or container, the cases the original handles.
+if any(c.isspace() for c in sys.executable):
+    from snakemake.script import PythonScript
+
+    def _execute_quoted(self, fname, edit=False):
+        """PythonScript.execute_script with the interpreter quoted for the shell."""
+        self._execute_cmd("{py_exec:q} {fname:q}", py_exec=sys.executable, fname=fname, is_python_script=True)
+
+    PythonScript.execute_script = _execute_quoted

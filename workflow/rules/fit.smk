@@ -1,9 +1,9 @@
 rule fit_gent_schultz:
     """Least-squares Gent–Schultz fit with the leading-order and the refined model (Sec. 3.4)."""
     input:
-        setup="results/data/setup.json",
-        pulloff="results/data/pulloff.csv",
-        code=code(*NUMERICS, "fitting", "data", "cli", "artefacts"),
+        setup=rules.ingest.output.setup,
+        pulloff=rules.ingest.output.pulloff,
+        code=code("fit_gent_schultz"),
     output:
         "results/fit/gent_schultz.json",
     params:
@@ -12,6 +12,9 @@ rule fit_gent_schultz:
         "results/logs/fit_gent_schultz.log",
     benchmark:
         "results/benchmarks/rules/fit_gent_schultz.tsv"
-    shell:
-        "{PYTHON} -m vibroadhesion.pipeline.cli fit --setup {input.setup} --pulloff {input.pulloff} "
-        "--figures-use {params.figures_use} --out {output} 2>&1 | tee {log}"
+    script:
+        "../scripts/fit_gent_schultz.py"
+
+
+# The rig and the fit every model rule starts from.
+RIG = {"setup": rules.ingest.output.setup, "fit": rules.fit_gent_schultz.output[0]}

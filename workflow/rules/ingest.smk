@@ -3,12 +3,15 @@ rule ingest:
     input:
         setup=config["data"]["setup"],
         pulloff=config["data"]["pulloff"],
-        code=code("data"),
-        schemas=["src/vibroadhesion/pipeline/schemas/setup.schema.json", "src/vibroadhesion/pipeline/schemas/pulloff.schema.json"],
+        schemas=[
+            "src/vibroadhesion/pipeline/schemas/setup.schema.json",
+            "src/vibroadhesion/pipeline/schemas/pulloff.schema.json",
+        ],
+        code=code("ingest"),
     output:
         setup="results/data/setup.json",
         pulloff="results/data/pulloff.csv",
     log:
         "results/logs/ingest.log",
-    shell:
-        "{PYTHON} -m vibroadhesion.pipeline.data {input.setup} {input.pulloff} {output.setup} {output.pulloff} 2>&1 | tee {log}"
+    script:
+        "../scripts/ingest.py"

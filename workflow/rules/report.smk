@@ -1,81 +1,54 @@
-# Report: each page is a notebook executed by papermill, then rendered to HTML by nbconvert.
-from vibroadhesion.pipeline.report import PAGES as REPORT_PAGES, VALIDATION_PAGES as VALIDATION_REPORT_PAGES
+# Report: each page is a notebook executed by papermill and exported to HTML by nbconvert, in one job.
+from vibroadhesion.pipeline.pages import PAGES as REPORT_PAGES, VALIDATION_PAGES as VALIDATION_REPORT_PAGES
 
+FIT_JSON, SETUP_JSON = RIG["fit"], RIG["setup"]
 PAGE_INPUTS = {
-    "fig3": {"fig_csv": "results/fig3/fig3.csv", "fig_png": "results/fig3/fig3.png",
-             "fit_json": "results/fit/gent_schultz.json"},
-    "fig4": {"fig_csv": "results/fig4/fig4.csv", "fig_png": "results/fig4/fig4.png",
-             "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json",
-             "pulloff_csv": "results/data/pulloff.csv", "virtual_csv": "results/validation/virtual_pulloff_rigid.csv"},
-    "fig5": {"fig_csv": "results/fig5/fig5.csv", "fig_png": "results/fig5/fig5.png",
-             "markers_csv": "results/fig5/fig5_markers.csv", "counts_csv": "results/fig5/fig5_solution_count.csv",
-             "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
-    **{fig: {"fig_csv": f"results/{fig}/{fig}.csv", "fig_png": f"results/{fig}/{fig}.png",
-             "fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"}
-       for fig in ("fig6", "fig7", "fig8")},
-    "validation": {"grid_csv": "results/validation/rigid_grid.csv", "errors_csv": "results/validation/rigid_errors.csv",
-                   "summary_csv": "results/validation/rigid_error_summary.csv",
-                   "maps_png": "results/validation/rigid_error_maps.png",
-                   "sweep_csv": "results/validation/compliant_sweep.csv",
-                   "sweep_png": "results/validation/compliant_sweep.png",
-                   "virtual_csv": "results/validation/virtual_pulloff.csv",
-                   "setup_json": "results/data/setup.json", "fit_json": "results/fit/gent_schultz.json"},
-    "fit": {"fit_json": "results/fit/gent_schultz.json", "setup_json": "results/data/setup.json"},
-    "identifiability": {"fits_csv": "results/validation/identifiability/fits.csv",
-                        "information_csv": "results/validation/identifiability/information.csv",
-                        "sensitivity_csv": "results/validation/identifiability/sensitivity.csv",
-                        "virtual_csv": "results/validation/virtual_pulloff_rigid.csv", "fit_json": "results/fit/gent_schultz.json"},
-    "benchmarks": {"bench_csv": "results/benchmarks/j_integrals.csv", "bench_txt": "results/benchmarks/j_integrals.txt",
-                   "simulate_txt": "results/benchmarks/simulate.txt",
-                   "speed_txt": "results/benchmarks/speed_vs_error.txt", "speed_png": "results/benchmarks/speed_vs_error.png",
-                   "rule_tsvs": [f"results/benchmarks/rules/{r}.tsv" for r in ("fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data")]},
+    "fig3": {"fig_csv": rules.fig3_data.output[0], "fig_png": rules.fig3_plot.output.png, "fit_json": FIT_JSON},
+    "fig4": {"fig_csv": rules.fig4_data.output[0], "fig_png": rules.fig4_plot.output.png, "fit_json": FIT_JSON,
+             "setup_json": SETUP_JSON, "pulloff_csv": rules.ingest.output.pulloff, "virtual_csv": VIRTUAL_RIGID},
+    "fig5": {"fig_csv": rules.fig5_data.output.csv, "fig_png": rules.fig5_plot.output.png,
+             "markers_csv": rules.fig5_data.output.markers, "counts_csv": rules.fig5_data.output.counts,
+             "setup_json": SETUP_JSON, "fit_json": FIT_JSON},
+    **{fig: {"fig_csv": getattr(rules, f"{fig}_data").output[0], "fig_png": getattr(rules, f"{fig}_plot").output.png,
+             "fit_json": FIT_JSON, "setup_json": SETUP_JSON} for fig in ("fig6", "fig7", "fig8")},
+    "validation": {"grid_csv": rules.simulation_rigid_grid.output[0], "errors_csv": rules.validation_errors.output.errors,
+                   "summary_csv": rules.validation_errors.output.summary, "maps_png": rules.validation_plot.output.png,
+                   "sweep_csv": rules.validation_compliant.output.csv, "sweep_png": rules.validation_compliant_plot.output.png,
+                   "virtual_csv": rules.virtual_pulloff_gather.output[0], "setup_json": SETUP_JSON, "fit_json": FIT_JSON},
+    "fit": {"fit_json": FIT_JSON, "setup_json": SETUP_JSON},
+    "identifiability": {"fits_csv": rules.identifiability.output.fits, "information_csv": rules.identifiability.output.information,
+                        "sensitivity_csv": rules.identifiability.output.sensitivity, "virtual_csv": VIRTUAL_RIGID,
+                        "fit_json": FIT_JSON},
+    "benchmarks": {"bench_csv": rules.benchmark_j_integrals.output.csv, "bench_txt": rules.benchmark_j_integrals.output.txt,
+                   "simulate_txt": rules.benchmark_simulate.output[0], "speed_txt": rules.benchmark_speed_vs_error.output.txt,
+                   "speed_png": rules.benchmark_speed_vs_error.output.png},
 }
-
-
-def papermill_parameters(wildcards, input):
-    """-r NAME PATH for every artefact the page reads (paths as strings: -r, not -p)."""
-    args = [f"-r {name} {getattr(input, name)}" for name in PAGE_INPUTS[wildcards.page] if name != "rule_tsvs"]
-    if wildcards.page == "benchmarks":
-        args.append("-r rule_tsv_glob 'results/benchmarks/rules/*.tsv'")
-    return " ".join(args)
-
-
-rule execute_notebook:
-    """Run one report notebook with papermill on the pipeline's artefacts."""
+rule report_page:
+    """Execute one report notebook on the pipeline's artefacts and export it to a self-contained HTML page."""
     input:
-        unpack(lambda wc: PAGE_INPUTS[wc.page]),
+        unpack(page_inputs),
         notebook="notebooks/{page}.ipynb",
-        code=code("report", "data", "groups", "jkr"),
+        code=lambda wildcards: code("report_page", f"notebooks/{wildcards.page}.ipynb"),
     output:
-        "results/report/notebooks/{page}.ipynb",
+        notebook="results/report/notebooks/{page}.ipynb",
+        html="results/report/{page}.html",
     params:
-        parameters=papermill_parameters,
+        parameters=page_parameters,
+    wildcard_constraints:
+        page="|".join(PAGE_INPUTS),
     log:
-        "results/logs/notebook_{page}.log",
-    shell:
-        "{PYTHON} -m papermill --no-progress-bar -k python3 --cwd . {input.notebook} {output} {params.parameters} "
-        "> {log} 2>&1 || (cat {log} >&2; exit 1)"
-
-
-rule render_page:
-    """Render an executed notebook to a self-contained HTML page."""
-    input:
-        "results/report/notebooks/{page}.ipynb",
-    output:
-        "results/report/{page}.html",
-    log:
-        "results/logs/render_{page}.log",
+        "results/logs/report_page_{page}.log",
     localrule: True
-    shell:
-        "{PYTHON} -m nbconvert --to html --output-dir results/report --output {wildcards.page} {input} > {log} 2>&1"
+    script:
+        "../scripts/report_page.py"
 
 
 rule report_index:
     """Index of the figure pages (default target) or of the validation pages (``validation`` target)."""
     input:
-        lambda wc: expand("results/report/{page}.html",
-                          page=[stem for stem, _ in (REPORT_PAGES if wc.index == "index" else VALIDATION_REPORT_PAGES)]),
-        code=code("report"),
+        pages=lambda wc: expand(rules.report_page.output.html,
+                                page=[stem for stem, _ in (REPORT_PAGES if wc.index == "index" else VALIDATION_REPORT_PAGES)]),
+        code=code("report_index"),
     output:
         "results/report/{index}.html",
     wildcard_constraints:
@@ -83,5 +56,5 @@ rule report_index:
     log:
         "results/logs/report_{index}.log",
     localrule: True
-    shell:
-        "{PYTHON} -c 'from vibroadhesion.pipeline.report import write_index; write_index(\"{output}\")' > {log} 2>&1"
+    script:
+        "../scripts/report_index.py"

@@ -245,7 +245,7 @@ COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "statu
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
                   reduced_modulus: float, fixation: simulation.SpringFixation | None = None,
                   progress: ProgressBar | None = None, predictions: bool = True) -> pd.DataFrame:
-    """Rows of results/validation/virtual_pulloff/{fixation}_{frequency}Hz.csv.
+    """Rows of results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv.
 
     The simulated (virtual) experiment and, unless ``predictions`` is false, the predictions of the
     module docstring, for the rigid (``fixation=None``) or the spring fixation. ``progress`` advances

@@ -4,4 +4,4 @@
 Layer 5: imports from every layer below; nothing imports from it.
 """
 
-__all__ = ["data", "artefacts", "figures", "report", "cli"]
+__all__ = ["data", "artefacts", "imports", "figures", "pages", "report", "steps"]

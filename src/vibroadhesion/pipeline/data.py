@@ -508,13 +508,25 @@ def _write_atomically(outputs: list[tuple[Path, str]]) -> None:
             tmp.write_text(text, encoding="utf-8", newline="")
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    """``python -m vibroadhesion.pipeline.data SETUP PULLOFF OUT_JSON OUT_CSV``.
+def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path, out_csv: str | Path) -> str:
+    """Validate both inputs and write their canonical copies atomically (rule ``ingest``).
 
-    Validates both inputs; on success writes the canonical setup JSON (values, units, sources)
-    and the canonical pull-off CSV (no comments; columns frequency_hz, h1_um, pulloff_mN,
-    source; floats written with repr) atomically and returns 0. On a :class:`DataError` prints
-    its one-line message to stderr, writes nothing and returns 1.
+    The canonical setup JSON keeps values, units and sources; the canonical pull-off CSV has no
+    comments, the columns frequency_hz, h1_um, pulloff_mN, source and floats written with repr.
+    Raises :class:`DataError` (nothing written) on a bad input; returns a one-line summary.
+    """
+    setup, doc = _parse_setup(setup_yaml)
+    rows = load_pulloff(pulloff_csv)
+    setup_text = json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+    _write_atomically([(Path(out_json), setup_text), (Path(out_csv), _pulloff_csv_text(rows))])
+    return f"validated {setup_yaml} ({len(setup.sources)} entries) and {pulloff_csv} ({len(rows)} rows)"
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """``python -m vibroadhesion.pipeline.data SETUP PULLOFF OUT_JSON OUT_CSV``: :func:`ingest` from the shell.
+
+    Returns 0 on success; on a :class:`DataError` prints its one-line message to stderr, writes
+    nothing and returns 1.
     """
     parser = argparse.ArgumentParser(prog="python -m vibroadhesion.pipeline.data", description=__doc__.splitlines()[0])
     parser.add_argument("setup", help="data/setup.yaml")
@@ -523,18 +535,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("out_csv", help="canonical pull-off rows (CSV)")
     args = parser.parse_args(argv)
     try:
-        setup, doc = _parse_setup(args.setup)
-        rows = load_pulloff(args.pulloff)
+        print(ingest(args.setup, args.pulloff, args.out_json, args.out_csv))
     except DataError as exc:
         print(str(exc), file=sys.stderr)
         return 1
-    setup_text = json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
-    try:
-        _write_atomically([(Path(args.out_json), setup_text), (Path(args.out_csv), _pulloff_csv_text(rows))])
     except OSError as exc:
         print(f"error: cannot write output: {exc.strerror or type(exc).__name__}", file=sys.stderr)
         return 1
-    print(f"validated {args.setup} ({len(setup.sources)} entries) and {args.pulloff} ({len(rows)} rows)")
     return 0
 
 

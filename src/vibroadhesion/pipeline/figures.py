@@ -1,44 +1,55 @@
-"""Numbers behind each figure (tables) and their drawings (plots), kept apart.
-
-A ``figN_table`` function computes the numbers of Fig. N from model parameters and returns
-the DataFrame that the pipeline writes as ``results/figN/figN.csv``; a ``plot_figN`` function
-draws that table (and nothing it would have to recompute with a solver), so restyling a plot
-never reruns a solve.
+"""Drawings of the figures (plots): each ``plot_figN`` draws the table that
+:mod:`vibroadhesion.experiments.figure_tables` computed (and nothing it would have to recompute
+with a solver), so restyling a plot never reruns a solve. :func:`save_figure` writes PDF and PNG
+without time stamps. The only module of the package that imports matplotlib.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
-import matplotlib.pyplot as plt
-import numpy as np
-import pandas as pd
+import matplotlib
 
-from vibroadhesion.models.compliant import CompliantFixation, ResponseCurve, static_abar_m, trace_response_curve
-from vibroadhesion.core.integrals import j_integrals, j_integrals_large_abar
-from vibroadhesion.models import exact_averaging
-from vibroadhesion.core import groups
-from vibroadhesion.core.jkr import pulloff_force
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model, PulloffPrediction, predict_pulloff
-from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
-from vibroadhesion.models.stiffness import dynamic_stiffness
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+import pandas as pd  # noqa: E402
 
-FIG3_COLUMNS = ["n", "Abar", "J0", "Jc1", "J1"]
-FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
+from vibroadhesion.core.integrals import j_integrals_large_abar  # noqa: E402
+from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
+from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
+
+if TYPE_CHECKING:
+    from matplotlib.typing import RcKeyType
+
+STYLE: dict[RcKeyType, Any] = {
+    "font.size": 9,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "legend.fontsize": 7.5,
+    "figure.dpi": 100,
+    "savefig.dpi": 200,
+    "path.simplify": False,
+    "svg.hashsalt": "vibroadhesion",
+}
+plt.rcParams.update(STYLE)
+
+_PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
+_PNG_METADATA = {"Software": None}
+
+
+def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
+    """Save ``fig`` as PDF and PNG without time stamps, then close it."""
+    with atomic_path(pdf) as tmp:
+        fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight")
+    with atomic_path(png) as tmp:
+        fig.savefig(tmp, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
+    plt.close(fig)
 
 
 # --- Fig. 3: the J-integrals -------------------------------------------------------------
-
-
-def fig3_table(exponents: Sequence[float], abar: np.ndarray) -> pd.DataFrame:
-    """J0, Jc1, J1 (Eqs. 28, 29, 36 for the Gent–Schultz law, Eq. 77) on ``abar`` for each n."""
-    frames = []
-    for n in sorted(set(float(n) for n in exponents)):
-        j0, jc1, j1 = j_integrals(abar, n)
-        frames.append(pd.DataFrame({"n": n, "Abar": abar, "J0": j0, "Jc1": jc1, "J1": j1}))
-    return pd.concat(frames, ignore_index=True)[FIG3_COLUMNS]
 
 
 def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[float]) -> plt.Figure:
@@ -68,38 +79,6 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
 
 
 # --- Fig. 4: pull-off amplification -------------------------------------------------------
-
-
-def fig4_table(
-    params: Mapping[Model, GentSchultzParameters],
-    frequencies_hz: Sequence[float],
-    h1_um: np.ndarray,
-    *,
-    radius: float,
-    reduced_modulus: float,
-) -> pd.DataFrame:
-    """Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
-    exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
-    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0))."""
-    geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
-    frames = []
-    lead = predict_pulloff("leading", params["leading"], np.nan, h1_um, **geometry)
-    frames.append(_fig4_frame("leading", np.nan, h1_um, lead))
-    p = params["leading"]
-    exact = exact_averaging.pulloff_at_critical_radius(np.asarray(h1_um) * 1e-6 / radius,
-                                                       groups.chi0(p.w0, reduced_modulus, radius), GentSchultz(p.n))
-    frames.append(_fig4_frame("exact_averaging", np.nan, h1_um, PulloffPrediction(
-        exact.abar, exact.alpha, exact.ratio, -pulloff_force(p.w0, radius) * exact.ratio * 1e3)))
-    for f in frequencies_hz:
-        frames.append(_fig4_frame("refined", f, h1_um, predict_pulloff("refined", params["refined"], f, h1_um, **geometry)))
-    return pd.concat(frames, ignore_index=True)[FIG4_COLUMNS]
-
-
-def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred) -> pd.DataFrame:
-    return pd.DataFrame(
-        {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.abar_cr,
-         "J0": pred.j0, "ratio": pred.ratio, "pulloff_mN": pred.pulloff_mN}
-    )
 
 
 def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
@@ -138,42 +117,6 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
 
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
-
-FIG6_COLUMNS = ["h1_um", "omega_check", "Abar", "abar_m", "w_eff_ratio", "A_over_am"]
-FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "ratio"]
-FIG8_COLUMNS = ["h1_um", "omega_check", "S_storage_rel", "S_loss_rel", "phase_rad"]
-
-#: The asymptotic model needs A << a_m; the paper takes A <= 0.1 a_m as its region (Sec. 3.5.3).
-APPLICABILITY_LIMIT = 0.1
-
-
-def fig6_table(h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float) -> pd.DataFrame:
-    """Nominal point contact of a rigidly fixed indenter (Eqs. 122–123, 49, corrected 98)."""
-    h1 = np.asarray(h1_um, dtype=float)[:, None]
-    sol = nominal_point_contact(h1 * 1e-6 / radius, omega_check[None, :], chi0, GentSchultz(n))
-    return pd.DataFrame(
-        {"h1_um": np.broadcast_to(h1, sol.abar.shape).ravel(), "omega_check": np.broadcast_to(omega_check, sol.abar.shape).ravel(),
-         "Abar": sol.abar.ravel(), "abar_m": sol.abar_m.ravel(), "w_eff_ratio": sol.w_eff_ratio.ravel(),
-         "A_over_am": sol.a_over_am.ravel()}
-    )[FIG6_COLUMNS]
-
-
-def fig7_table(h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float) -> pd.DataFrame:
-    """Refined pull-off estimate against omega_check (Eq. 106) for each amplitude."""
-    h1 = np.asarray(h1_um, dtype=float)[:, None]
-    est = pulloff_refined(h1 * 1e-6 / radius, chi0, omega_check[None, :], GentSchultz(n))
-    return pd.DataFrame(
-        {"h1_um": np.broadcast_to(h1, est.abar_cr.shape).ravel(), "omega_check": np.broadcast_to(omega_check, est.abar_cr.shape).ravel(),
-         "Abar_cr": est.abar_cr.ravel(), "ratio": est.ratio.ravel()}
-    )[FIG7_COLUMNS]
-
-
-def fig8_table(fig6: pd.DataFrame, *, chi0: float, n: float) -> pd.DataFrame:
-    """Dynamic contact stiffness (Eqs. 117–121) along the Fig. 6 solution: no new solve."""
-    s = dynamic_stiffness(fig6["Abar"].to_numpy(), fig6["abar_m"].to_numpy(), chi0, fig6["omega_check"].to_numpy(), GentSchultz(n))
-    return pd.DataFrame({"h1_um": fig6["h1_um"], "omega_check": fig6["omega_check"], "S_storage_rel": s.storage_rel,
-                         "S_loss_rel": s.loss_rel, "phase_rad": s.phase_rad})[FIG8_COLUMNS]
-
 
 def _by_amplitude(table: pd.DataFrame):
     return table.groupby("h1_um", sort=True)
@@ -266,53 +209,6 @@ def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 
 # --- Fig. 5: compliant fixation, passage through resonance ---------------------------------
-
-FIG5_COLUMNS = ["chi0", "eta1", "nu0", "zeta", "kappa", "mu", "branch", "omega_bar", "Abar", "abar_m", "A_over_am"]
-FIG5_MARKER_COLUMNS = ["kind", "frequency_hz", *FIG5_COLUMNS]
-FIG5_COUNT_COLUMNS = ["zeta", "kappa", "omega_bar", "solutions"]
-
-
-def _fig5_rows(p: CompliantFixation, branch: Sequence[str], x: np.ndarray, curve: ResponseCurve) -> pd.DataFrame:
-    return pd.DataFrame({"chi0": p.chi0, "eta1": p.eta1, "nu0": p.nu0, "zeta": p.zeta, "kappa": p.kappa, "mu": p.mu,
-                         "branch": branch, "omega_bar": np.exp(x[:, 0]), "Abar": np.exp(x[:, 2]),
-                         "abar_m": np.exp(x[:, 1]), "A_over_am": curve.a_over_am(x)})[FIG5_COLUMNS]
-
-
-def fig5_tables(
-    base: CompliantFixation, kappas: Sequence[float], zetas: Sequence[float], n: float,
-    experiment_omega_bar: Mapping[float, float], omega_bar_range: tuple[float, float], count_points: int,
-) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
-    """Fig. 5 for every (kappa, zeta): the traced curves, the markers (folds, test frequencies), and
-    the number of solutions on a log grid of omega_bar.
-
-    ``branch`` names the monotone segment of the curve in trace order: "lower-k"/"upper-k" for the
-    two pieces below/above the exact anti-resonance (zeta = 0), "full-k" otherwise; k counts the
-    folds passed. The exact anti-resonance point (Abar = 0 at omega_bar = 1, zeta = 0) is a row
-    with branch "anti-resonance".
-    """
-    law = GentSchultz(n)
-    curves, markers, counts = [], [], []
-    grid = np.geomspace(*omega_bar_range, count_points)
-    for kappa in kappas:
-        for zeta in zetas:
-            p = replace(base, kappa=kappa, zeta=zeta)
-            curve = trace_response_curve(p, law, omega_bar_range)
-            names = ("lower", "upper") if len(curve.pieces) == 2 else ("full",)
-            for name, piece in zip(names, curve.pieces):
-                segment = np.concatenate([[0], np.cumsum(np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0]))])
-                curves.append(_fig5_rows(p, [f"{name}-{k}" for k in segment], piece.points, curve))
-            if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
-                curves.append(_fig5_rows(p, ["anti-resonance"], np.array([[0.0, np.log(static_abar_m(p)), -np.inf]]), curve))
-            markers.append(_fig5_rows(p, ["fold"] * len(curve.folds), curve.folds, curve).assign(kind="fold", frequency_hz=np.nan))
-            for f, omega_bar in sorted(experiment_omega_bar.items()):
-                solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)] for am, a in curve.solutions_at(omega_bar, law)])
-                markers.append(_fig5_rows(p, ["experiment"] * len(solutions), solutions.reshape(-1, 3), curve)
-                               .assign(kind="experiment", frequency_hz=f))
-            counts.append(pd.DataFrame({"zeta": zeta, "kappa": kappa, "omega_bar": grid,
-                                        "solutions": [curve.count_at(w) for w in grid]}))
-    return (pd.concat(curves, ignore_index=True), pd.concat(markers, ignore_index=True)[FIG5_MARKER_COLUMNS],
-            pd.concat(counts, ignore_index=True)[FIG5_COUNT_COLUMNS])
-
 
 def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> plt.Figure:
     """A/a_m against omega_bar, one panel per kappa, one colour per zeta; folds and test frequencies marked."""

@@ -1,4 +1,4 @@
-"""Tables and the index page of the rendered report (results/report/).
+"""Tables of the rendered report (results/report/); its pages and index: :mod:`vibroadhesion.pipeline.pages`.
 
 Notebooks in notebooks/ call these functions on the pipeline's artefacts; they hold no model
 code. Every table a page shows is built here, so the pages stay a few lines long.
@@ -6,7 +6,6 @@ code. Every table a page shows is built here, so the pages stay a few lines long
 
 from __future__ import annotations
 
-import html
 import json
 import math
 from collections.abc import Sequence
@@ -18,39 +17,7 @@ import pandas as pd
 from vibroadhesion.pipeline import data
 
 from vibroadhesion.core import groups
-from vibroadhesion.pipeline.artefacts import atomic_path
 from vibroadhesion.core.jkr import pulloff_force
-
-#: (file stem, title) of the pages of the default target (``snakemake -c2``), in the order of its index.
-PAGES: list[tuple[str, str]] = [
-    ("fig3", "Fig. 3 — J-integrals of the Gent–Schultz law"),
-    ("fig4", "Fig. 4 — pull-off amplification against base amplitude"),
-    ("fig5", "Fig. 5 — passage through resonance of a compliantly fixed indenter"),
-    ("fig6", "Fig. 6 — nominal point contact of a rigidly fixed indenter"),
-    ("fig7", "Fig. 7 — refined pull-off estimate against frequency"),
-    ("fig8", "Fig. 8 — dynamic contact stiffness (storage, loss, phase)"),
-    ("fit", "Gent–Schultz fit and parameter provenance"),
-]
-
-#: Pages of the ``validation`` target (``snakemake -c2 validation``): the checks against the simulation.
-VALIDATION_PAGES: list[tuple[str, str]] = [
-    ("validation", "Validation — every model level against the direct simulation"),
-    ("identifiability", "Identifiability — what simulated pull-off data determine, and with which model"),
-    ("benchmarks", "Speed against error: every model level, J-integrals, simulation, rule timings"),
-]
-
-_INDEX_TEXT = {
-    "index": ("reproduction report", """<p>No measured pull-off forces are published in text form; unless you added rows to
-  <code>data/pulloff.csv</code>, the figures use the published Gent–Schultz parameters. Series marked
-  SIMULATED come from the direct simulation of the full model (a virtual experiment), never from measurements.</p>
-  <p>The checks of every model level against the direct simulation, the identifiability of the
-  parameters and the speed-against-error benchmarks are built by <code>snakemake -c2 validation</code>:
-  <a href="validation_index.html">validation pages</a>.</p>"""),
-    "validation_index": ("validation against the direct simulation", """<p>Built by <code>snakemake -c2 validation</code>.
-  Every number on these pages that is not a model prediction is SIMULATED (periodic steady states of the
-  full nonlinear model, <code>vibroadhesion.simulation</code>); none is a measurement.
-  <a href="index.html">Figure pages</a>.</p>"""),
-}
 
 
 def setup_table(setup_json: str | Path) -> pd.DataFrame:
@@ -145,31 +112,3 @@ def rule_timings(tsv_files: Sequence[str | Path]) -> pd.DataFrame:
         t = pd.read_csv(path, sep="\t")
         rows.append({"rule": Path(path).stem, "wall_s": float(t["s"].iloc[0]), "max_rss_MB": float(t["max_rss"].iloc[0])})
     return pd.DataFrame(rows)
-
-
-def write_index(out: str | Path) -> None:
-    """results/report/index.html (figure pages) or validation_index.html (validation pages), by the file name."""
-    stem = Path(out).stem
-    if stem not in _INDEX_TEXT:
-        raise ValueError(f"unknown index {out}: expected index.html or validation_index.html")
-    subtitle, preamble = _INDEX_TEXT[stem]
-    pages = PAGES if stem == "index" else VALIDATION_PAGES
-    items = "\n".join(f'    <li><a href="{html.escape(name)}.html">{html.escape(title)}</a></li>' for name, title in pages)
-    text = f"""<!DOCTYPE html>
-<html lang="en">
-<head><meta charset="utf-8"><title>Vibroadhesion: {subtitle}</title>
-<style>body {{ font-family: sans-serif; max-width: 48em; margin: 2em auto; line-height: 1.5; }}</style></head>
-<body>
-  <h1>An asymptotic model of vibroadhesion — {subtitle}</h1>
-  <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>. Every page is a
-  notebook executed by papermill on the artefacts of the pipeline;
-  the numbers behind each figure are in <code>results/figN/figN.csv</code>.</p>
-  {preamble}
-  <ul>
-{items}
-  </ul>
-</body>
-</html>
-"""
-    with atomic_path(out) as tmp:
-        tmp.write_text(text)

@@ -1,0 +1,10 @@
+"""The numbers behind each figure: one module per figure (or pair of figures sharing a solve), so a
+rule that computes one figure's table depends on the model code of that figure only.
+
+A ``figN_table`` function computes the numbers of Fig. N from model parameters and returns the
+DataFrame the pipeline writes as ``results/figN/figN.csv``; the drawings are in
+:mod:`vibroadhesion.pipeline.figures` and never recompute with a solver.
+"""
+
+#: The asymptotic model needs A << a_m; the paper takes A <= 0.1 a_m as its region (Sec. 3.5.3).
+APPLICABILITY_LIMIT = 0.1

@@ -1,0 +1,76 @@
+"""Steps of the plot rules: draw a table written by a compute rule (no solve) and save PDF and PNG.
+
+The only steps that import matplotlib (through :mod:`vibroadhesion.pipeline.figures`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import pandas as pd
+
+from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.pipeline import figures
+from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, setup_entry
+
+Path_ = str | Path
+
+
+def fig3_plot(fit_json: Path_, csv: Path_, pdf: Path_, png: Path_, panel_n: Sequence[float]) -> None:
+    """Fig. 3: J-integrals of the fitted n with their large-Abar asymptotes (Eqs. 28, 29, 36), and other n."""
+    figures.save_figure(figures.plot_fig3(pd.read_csv(csv), fitted(fit_json)["n"], panel_n), pdf, png)
+
+
+def fig4_plot(setup_json: Path_, fit_json: Path_, pulloff_csv: Path_, virtual_csv: Path_, csv: Path_, pdf: Path_,
+              png: Path_) -> None:
+    """Fig. 4: P_cr/P_JKR (Eqs. 71-72, 106) with the measured rows and the simulated rigid pull-off."""
+    setup = read_canonical_setup(setup_json)
+    jkr_mN = float(-pulloff_force(fitted(fit_json, "leading")["w0"], setup.radius)) * 1e3
+    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN, pd.read_csv(virtual_csv))
+    figures.save_figure(fig, pdf, png)
+
+
+def fig5_plot(setup_json: Path_, csv: Path_, markers_csv: Path_, pdf: Path_, png: Path_) -> None:
+    """Fig. 5: A/a_m through resonance, the paper's dot at the frequency data/setup.yaml names."""
+    highlight_hz = float(setup_entry(read_canonical_setup(setup_json), "test_conditions.fig5_highlight_frequency"))
+    figures.save_figure(figures.plot_fig5(pd.read_csv(csv), pd.read_csv(markers_csv), highlight_hz), pdf, png)
+
+
+def _test_frequencies(setup_json: Path_, fit_json: Path_) -> dict[float, float]:
+    """omega_check (Eq. 105) of the rig's test frequencies at the figures' fit."""
+    return experiment_omega_check(read_canonical_setup(setup_json), fitted(fit_json)["v0"])
+
+
+def fig6_plot(setup_json: Path_, fit_json: Path_, csv: Path_, grid_csv: Path_, pdf: Path_, png: Path_) -> None:
+    """Fig. 6 (Eqs. 122-123, 49, 98) with the simulated steady states and the exact averaging of the rigid grid."""
+    fig = figures.plot_fig6(pd.read_csv(csv), _test_frequencies(setup_json, fit_json), pd.read_csv(grid_csv))
+    figures.save_figure(fig, pdf, png)
+
+
+def fig7_plot(setup_json: Path_, fit_json: Path_, csv: Path_, fig4_csv: Path_, virtual_csv: Path_, pdf: Path_,
+              png: Path_) -> None:
+    """Fig. 7 (Eq. 106) with Fig. 4's leading-order (Eq. 72) and exact-averaging rows and the simulated pull-off."""
+    fig4 = pd.read_csv(fig4_csv)
+    fig = figures.plot_fig7(pd.read_csv(csv), fig4[fig4["model"] == "leading"], _test_frequencies(setup_json, fit_json),
+                            fig4[fig4["model"] == "exact_averaging"], pd.read_csv(virtual_csv))
+    figures.save_figure(fig, pdf, png)
+
+
+def fig8_plot(setup_json: Path_, fit_json: Path_, csv: Path_, pdf: Path_, png: Path_) -> None:
+    """Fig. 8: storage and loss contact stiffness and phase (Eqs. 117-121)."""
+    figures.save_figure(figures.plot_fig8(pd.read_csv(csv), _test_frequencies(setup_json, fit_json)), pdf, png)
+
+
+def validation_plot(setup_json: Path_, fit_json: Path_, grid_csv: Path_, errors_csv: Path_, pdf: Path_,
+                    png: Path_) -> None:
+    """Error maps of every model level against the simulation on the rigid grid."""
+    fig = figures.plot_validation_maps(pd.read_csv(grid_csv), pd.read_csv(errors_csv),
+                                       _test_frequencies(setup_json, fit_json))
+    figures.save_figure(fig, pdf, png)
+
+
+def compliant_sweep_plot(csv: Path_, curve_csv: Path_, pdf: Path_, png: Path_) -> None:
+    """The simulated sweep up and down over the refined curve of the same compliant case (Eqs. 87, 90)."""
+    figures.save_figure(figures.plot_compliant_sweep(pd.read_csv(csv), pd.read_csv(curve_csv)), pdf, png)

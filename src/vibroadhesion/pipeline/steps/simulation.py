@@ -1,0 +1,62 @@
+"""Steps of the simulation rules: the direct simulation of the full model (ground truth) on the rigid
+validation grid and in the virtual pull-off experiment, written under results/simulation/ for the
+figures and the validation to read.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from vibroadhesion.core import groups
+from vibroadhesion.experiments import validation, virtual_pulloff
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.numerics.progress import ProgressBar
+from vibroadhesion.pipeline.artefacts import write_csv
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_entry
+from vibroadhesion.simulation import SpringFixation
+
+
+def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1_um: float,
+               log10_omega_check_min: int, log10_omega_check_max: int) -> None:
+    """Simulation, leading, refined, exact harmonic balance and exact averaging at one amplitude on the
+    whole decades of omega_check and the test frequencies (rigid nominal point contact).
+    """
+    setup, params, chi0 = rig(setup_json, fit_json)
+    omega = validation.validation_frequencies((log10_omega_check_min, log10_omega_check_max),
+                                              list(experiment_omega_check(setup, params["v0"]).values()))
+    rows, progress = [], ProgressBar(len(omega), "frequencies")
+    for w in omega:
+        point = validation.rigid_point(h1_um, float(w), chi0=chi0, radius=setup.radius, n=params["n"])
+        rows.extend(point)
+        simulated = next(r["status"] for r in point if r["model"] == "simulation")
+        progress.advance(1, f"h1 = {h1_um:g} um, omega_check = {w:.6g}: simulation {simulated}")
+    write_csv(pd.DataFrame(rows)[validation.RIGID_GRID_COLUMNS], out)
+
+
+def rigid_grid(parts: Sequence[str | Path], out: str | Path) -> None:
+    """results/simulation/rigid_grid.csv: every amplitude's rows, sorted by (h1, omega_check)."""
+    grid = pd.concat([pd.read_csv(p) for p in parts], ignore_index=True)
+    write_csv(grid.sort_values(["h1_um", "omega_check"], kind="stable").reset_index(drop=True), out)
+
+
+def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, fixation: str,
+                         frequency_hz: float) -> None:
+    """The simulated pull-off at one test frequency and every amplitude of the rig, with the predictions,
+    for the rigid fixation or the simulated compliant case of data/setup.yaml (kappa, zeta; mu, omega0).
+    """
+    setup, params, _ = rig(setup_json, fit_json)
+    spring = None
+    if fixation == "compliant":
+        nu0 = groups.nu0(params["v0"], float(setup_entry(setup, "fixation.natural_frequency")), setup.radius)
+        spring = SpringFixation(float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
+                                float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")), nu0,
+                                float(setup_entry(setup, "fixation.weight_ratio_mu")))
+    h1 = np.asarray(setup.amplitudes_um, dtype=float)
+    table = virtual_pulloff.pulloff_table(GentSchultzParameters(**params), frequency_hz, h1, radius=setup.radius,
+                                          reduced_modulus=setup.reduced_modulus, fixation=spring,
+                                          progress=ProgressBar(len(h1), "amplitudes"))
+    write_csv(table, out)

@@ -1,0 +1,89 @@
+# The direct simulation of the full model (ground truth), upstream of the figures that overlay it and of
+# the validation that compares with it: results/simulation/.
+
+
+rule simulation_rigid:
+    """Simulation, leading, refined, exact harmonic balance and exact averaging at one base amplitude of the
+    rig (one job per amplitude: a cluster runs them in parallel), rigid nominal point contact."""
+    input:
+        **RIG,
+        code=code("simulation_rigid"),
+    output:
+        "results/simulation/rigid/h1_{h1}.csv",
+    params:
+        lo=config["validation"]["log10_omega_check_min"],
+        hi=config["validation"]["log10_omega_check_max"],
+    log:
+        "results/logs/simulation_rigid_h1_{h1}.log",
+    benchmark:
+        "results/benchmarks/rules/simulation_rigid_h1_{h1}.tsv"
+    script:
+        "../scripts/simulation_rigid.py"
+
+
+rule simulation_rigid_grid:
+    """rigid_grid.csv: every level at every amplitude; Fig. 6 overlays its simulated points."""
+    input:
+        parts=expand(rules.simulation_rigid.output[0], h1=AMPLITUDES),
+        code=code("simulation_rigid_grid"),
+    output:
+        "results/simulation/rigid_grid.csv",
+    log:
+        "results/logs/simulation_rigid_grid.log",
+    script:
+        "../scripts/simulation_rigid_grid.py"
+
+
+# Virtual pull-off experiment (simulated; no measured pull-off numbers are published): one job per
+# fixation (rigid, or the simulated compliant case of data/setup.yaml) and test frequency of the rig,
+# then a gather. Its rows never go to data/, which holds measurements.
+
+
+rule virtual_pulloff:
+    """Quasi-static withdrawal of the base through periodic steady states: the simulated pull-off force."""
+    input:
+        **RIG,
+        code=code("virtual_pulloff"),
+    output:
+        "results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv",
+    wildcard_constraints:
+        fixation="rigid|compliant",
+        frequency=r"[0-9.]+",
+    log:
+        "results/logs/virtual_pulloff_{fixation}_{frequency}Hz.log",
+    benchmark:
+        "results/benchmarks/rules/virtual_pulloff_{fixation}_{frequency}Hz.tsv"
+    script:
+        "../scripts/virtual_pulloff.py"
+
+
+rule virtual_pulloff_fixation:
+    """The test frequencies of one fixation in one table. The rigid one is what Figs. 4 and 7 overlay
+    (built by the default target); the compliant one belongs to the validation target."""
+    input:
+        parts=expand(rules.virtual_pulloff.output[0], fixation="{fixation}", frequency=FREQUENCIES),
+        code=code("virtual_pulloff_fixation"),
+    output:
+        "results/simulation/virtual_pulloff_{fixation}.csv",
+    wildcard_constraints:
+        fixation="rigid|compliant",
+    log:
+        "results/logs/virtual_pulloff_{fixation}.log",
+    script:
+        "../scripts/virtual_pulloff_fixation.py"
+
+
+rule virtual_pulloff_gather:
+    """virtual_pulloff.csv: both fixations, the table the README names."""
+    input:
+        parts=expand(rules.virtual_pulloff_fixation.output[0], fixation=["rigid", "compliant"]),
+        code=code("virtual_pulloff_gather"),
+    output:
+        "results/simulation/virtual_pulloff.csv",
+    log:
+        "results/logs/virtual_pulloff_gather.log",
+    script:
+        "../scripts/virtual_pulloff_gather.py"
+
+
+VIRTUAL_RIGID = expand(rules.virtual_pulloff_fixation.output[0], fixation="rigid")[0]
