@@ -141,14 +141,7 @@ def fit_gent_schultz(
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
 
     free: tuple[str, ...] = ("w0", "n")
-    if model != "refined":
-        v0_note = f"v0 not identifiable: the {model} model is frequency independent, v0 does not enter it"
-    elif len(frequencies) < 2:
-        v0_note = f"v0 not identifiable: the rows span {len(frequencies)} frequency (at least 2 needed)"
-    elif len(rows) <= 3:
-        v0_note = f"v0 not identifiable: {len(rows)} rows leave no degree of freedom for a third parameter"
-    else:
-        v0_note = ""
+    v0_note = _v0_note_before_fit(model, len(frequencies), len(rows))
     if len(rows) <= 2:
         summary.update(status="published", note=f"{len(rows)} rows cannot determine w0 and n: published values kept",
                        parameters=_parameter_table(published, (), (), None), v0_identifiable=False,
@@ -165,6 +158,27 @@ def fit_gent_schultz(
             else:
                 free, fit = ("w0", "n", "v0"), with_v0
 
+    summary.update(_fitted_summary(rows, fit, free, v0_note))
+    return summary
+
+
+def _v0_note_before_fit(model: Model, frequencies: int, rows: int) -> str:
+    """Why v0 cannot be freed whatever the fit gives (empty if it may be).
+
+    v0 enters only the refined level (Eq. 106 through omega R/v0, Eq. 105), and needs two
+    frequencies and a spare degree of freedom.
+    """
+    if model != "refined":
+        return f"v0 not identifiable: the {model} model is frequency independent, v0 does not enter it"
+    if frequencies < 2:
+        return f"v0 not identifiable: the rows span {frequencies} frequency (at least 2 needed)"
+    if rows <= 3:
+        return f"v0 not identifiable: {rows} rows leave no degree of freedom for a third parameter"
+    return ""
+
+
+def _fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...], v0_note: str) -> dict[str, Any]:
+    """Status, estimates, covariance (Gauss-Newton, J^T J at the optimum, in logarithms), residuals."""
     inside = tuple(name for name in free if name not in fit["at_bound"])
     columns = [free.index(name) for name in inside]
     theta = np.array([getattr(fit["params"], name) for name in inside])
@@ -172,22 +186,21 @@ def fit_gent_schultz(
     cov = fit["s2"] * np.linalg.inv(jac.T @ jac) * np.outer(theta, theta)
     bound_note = "; ".join(f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
                            f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"])
-    summary.update(
-        status="at_bound" if fit["at_bound"] else "fitted",
-        note=bound_note,
-        free_parameters=list(free),
-        at_bound=fit["at_bound"],
-        parameters=_parameter_table(fit["params"], free, inside, cov),
-        covariance={"parameters": list(inside), "matrix": cov.tolist()},
-        residuals_mN=[{"line": int(line), "residual": float(r * obs)}
-                      for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"], strict=True)],
-        rms_relative_residual=float(np.sqrt(np.mean(fit["residuals"] ** 2))),
-        v0_identifiable="v0" in free,
-        v0_note=v0_note,
-        function_evaluations=fit["nfev"],
-        optimizer_message=fit["message"],
-    )
-    return summary
+    return {
+        "status": "at_bound" if fit["at_bound"] else "fitted",
+        "note": bound_note,
+        "free_parameters": list(free),
+        "at_bound": fit["at_bound"],
+        "parameters": _parameter_table(fit["params"], free, inside, cov),
+        "covariance": {"parameters": list(inside), "matrix": cov.tolist()},
+        "residuals_mN": [{"line": int(line), "residual": float(r * obs)}
+                         for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"], strict=True)],
+        "rms_relative_residual": float(np.sqrt(np.mean(fit["residuals"] ** 2))),
+        "v0_identifiable": "v0" in free,
+        "v0_note": v0_note,
+        "function_evaluations": fit["nfev"],
+        "optimizer_message": fit["message"],
+    }
 
 
 def _parameter_table(params: GentSchultzParameters, free: tuple[str, ...], inside: tuple[str, ...],

@@ -29,6 +29,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from vibroadhesion import simulation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models import exact_averaging, exact_harmonic_balance
@@ -37,7 +38,6 @@ from vibroadhesion.models.leading_order import mean_force_over_pulloff
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.numerics.roots import NoRootError
-from vibroadhesion import simulation
 
 MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
 QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")

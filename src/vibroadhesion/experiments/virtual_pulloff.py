@@ -67,6 +67,7 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
+from vibroadhesion import simulation
 from vibroadhesion.core import groups
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
@@ -79,7 +80,6 @@ from vibroadhesion.models.leading_order import Fixation
 from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.numerics.roots import NoRootError
-from vibroadhesion import simulation
 
 Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
 
@@ -138,28 +138,17 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
     The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
     """
     sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
-    solved = 0
-
-    def excitation(d0: float) -> simulation.BaseExcitation:
-        return simulation.BaseExcitation(law, chi0, eta1, omega_check, deltabar0=d0)
-
-    def orbit(d0: float, state: np.ndarray | None) -> simulation.SteadyState:
-        nonlocal solved
-        solved += 1
-        if state is None:
-            return simulation.steady_state(excitation(d0), fixation, initial_state=None)
-        return simulation.steady_state(excitation(d0), fixation, initial_state=state, max_iterations=iterations)
-
+    run = _Withdrawal(law, chi0, eta1, omega_check, fixation, iterations)
     family: list[tuple[float, simulation.SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
     d0, state = 0.0, None
     for _ in range(max_steps):
-        orbit_k = orbit(d0, state)
+        orbit_k = run.orbit(d0, state)
         if orbit_k.status != "converged":
             if not family:
-                return _ended(orbit_k.status, solved)
+                return _ended(orbit_k.status, run.solved)
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(excitation(d0), fixation, family[-1][1], orbit_k.status), solved)
+                return _ended(_end_of_family(run.excitation(d0), fixation, family[-1][1], orbit_k.status), run.solved)
             failure = (d0, orbit_k.status)
         else:
             family.append((d0, orbit_k))
@@ -167,36 +156,75 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
                 failure = None
             if len(family) >= 3 and family[-1][1].phat_m > family[-2][1].phat_m:
                 break
-        d_last, last = family[-1]
-        if len(family) >= 2:
-            previous = family[-2][1]
-            stiffness = (last.phat_m - previous.phat_m) / (last.deltabar_m - previous.deltabar_m)
-        else:
-            stiffness = 2.0 * last.abar_m
-        stiffness = min(max(stiffness, 0.0), 2.0 * last.abar_m)
-        d0 = d_last - step * (1.0 + sigma * stiffness)
-        if failure is not None:
-            gap = d_last - failure[0]
-            # within step 2^-halvings of it, the failed deltabar0 itself is tried once more
-            d0 = failure[0] if gap <= step * 2.0**-halvings else max(d0, d_last - 0.5 * gap)
-        state = _predicted_state(family, d0, sigma * stiffness)
+        d0, state = _next_offset(family, failure, step, sigma, halvings)
     else:
-        return _ended("not_converged", solved)
+        return _ended("not_converged", run.solved)
     bracket = family[-3:]  # (hi, mid, lo): the middle orbit is the most tensile so far
     (hi, _), (mid, middle), (lo, _) = bracket
-    cache: dict[float, simulation.SteadyState] = {mid: middle}
-
-    def mean_force(d: float) -> float:
-        if d not in cache:
-            cache[d] = orbit(d, _interpolated_state(bracket, d))
-        return cache[d].phat_m if cache[d].status == "converged" else math.inf
-
-    minimize_scalar(mean_force, bounds=(lo, hi), method="bounded", options={"xatol": 1e-4 * step})
-    d_best = min(cache, key=mean_force)  # every evaluation is cached: the most tensile orbit found
-    at = cache[d_best]
+    run.cache = {mid: middle}
+    minimize_scalar(run.mean_force, bounds=(lo, hi), args=(bracket,), method="bounded",
+                    options={"xatol": 1e-4 * step})
+    d_best = min(run.cache, key=run.cached_force)  # every evaluation is cached: the most tensile orbit found
+    at = run.cache[d_best]
     return VirtualPulloff("pulloff", float(at.phat_m / PHAT_JKR), float(d_best), float(at.abar_m),
                           float(pulloff_closure(math.sqrt(at.w_eff_ratio))), float(at.w_eff_ratio),
-                          float(at.a_over_am), solved)
+                          float(at.a_over_am), run.solved)
+
+
+class _Withdrawal:
+    """One quasi-static withdrawal: the orbits solved at base offsets deltabar0, counted and cached."""
+
+    def __init__(self, law: GentSchultz, chi0: float, eta1: float, omega_check: float,
+                 fixation: simulation.SpringFixation | None, iterations: int) -> None:
+        """Excitation of Eq. (11) at (chi0, eta1, omega_check); ``iterations`` caps predicted shootings."""
+        self.law, self.chi0, self.eta1, self.omega_check = law, chi0, eta1, omega_check
+        self.fixation, self.iterations = fixation, iterations
+        self.solved = 0
+        self.cache: dict[float, simulation.SteadyState] = {}
+
+    def excitation(self, d0: float) -> simulation.BaseExcitation:
+        """The base excitation at offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
+        return simulation.BaseExcitation(self.law, self.chi0, self.eta1, self.omega_check, deltabar0=d0)
+
+    def orbit(self, d0: float, state: np.ndarray | None) -> simulation.SteadyState:
+        """The periodic steady state at ``d0``: from the static state (``state`` None) or a predicted one."""
+        self.solved += 1
+        if state is None:
+            return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=None)
+        return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=state,
+                                       max_iterations=self.iterations)
+
+    def mean_force(self, d: float, bracket: list[tuple[float, simulation.SteadyState]]) -> float:
+        """Phat_m of the orbit at ``d`` (solved once, from the bracket's interpolation); inf where none converges."""
+        if d not in self.cache:
+            self.cache[d] = self.orbit(d, _interpolated_state(bracket, d))
+        return self.cached_force(d)
+
+    def cached_force(self, d: float) -> float:
+        """Phat_m of the cached orbit at ``d``; inf where it did not converge (never the most tensile)."""
+        return self.cache[d].phat_m if self.cache[d].status == "converged" else math.inf
+
+
+def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tuple[float, str] | None,
+                 step: float, sigma: float, halvings: int) -> tuple[float, np.ndarray]:
+    """The next base offset and its predicted start state (module docstring: base step step (1 + sigma S)).
+
+    S = dPhat_m/ddeltabar_m from the last two orbits (2 abar_m, the static JKR stiffness of Eq. 4',
+    from one), clipped to [0, 2 abar_m]. After a failure the step goes at most half-way to it, and the
+    failed offset itself once the family lies within step 2^-halvings of it.
+    """
+    d_last, last = family[-1]
+    if len(family) >= 2:
+        previous = family[-2][1]
+        stiffness = (last.phat_m - previous.phat_m) / (last.deltabar_m - previous.deltabar_m)
+    else:
+        stiffness = 2.0 * last.abar_m
+    stiffness = min(max(stiffness, 0.0), 2.0 * last.abar_m)
+    d0 = d_last - step * (1.0 + sigma * stiffness)
+    if failure is not None:
+        gap = d_last - failure[0]
+        d0 = failure[0] if gap <= step * 2.0**-halvings else max(d0, d_last - 0.5 * gap)
+    return d0, _predicted_state(family, d0, sigma * stiffness)
 
 
 def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
