@@ -227,7 +227,8 @@ def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tu
     return d0, _predicted_state(family, d0, sigma * stiffness)
 
 
-def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float, sigma_stiffness: float) -> np.ndarray:
+def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float,
+                     sigma_stiffness: float) -> np.ndarray:
     """Start state for the orbit at ``d0``, extrapolated from the family.
 
     Linear extrapolation from the last two orbits of the family; from one orbit, its state with the

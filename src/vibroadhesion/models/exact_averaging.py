@@ -127,12 +127,12 @@ def nominal_point_contact(
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
     etahat = amplitude_in_contact_units(eta1, chi0).ravel()
-    abar_m = np.ones_like(etahat)
+    flat_abar_m = np.ones_like(etahat)
     moving = etahat > 0
     if np.any(moving):
-        abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 1.0)
-    cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
-    abar_m, abar, alpha = (v.reshape(eta1.shape) for v in (abar_m, cycle.abar, cycle.alpha))
+        flat_abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 1.0)
+    cycle = frozen_radius_cycle(etahat / np.sqrt(flat_abar_m), law)
+    abar_m, abar, alpha = (v.reshape(eta1.shape) for v in (flat_abar_m, cycle.abar, cycle.alpha))
     return NominalPointContact(
         abar,
         abar_m,

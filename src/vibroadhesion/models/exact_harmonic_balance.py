@@ -102,7 +102,7 @@ the smaller one, which continues the refined solution.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
+from typing import Generic, NamedTuple, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -122,18 +122,20 @@ from vibroadhesion.models.refined import nominal_point_contact as refined_nomina
 from vibroadhesion.numerics.roots import NoRootError
 
 Array = NDArray[np.float64]
+#: The coefficients' type: arrays over amplitudes (:func:`exact_harmonics`) or floats at one (``_AtAmplitude.at``).
+Value = TypeVar("Value", Array, float)
 
 
-class ExactHarmonics(NamedTuple):
+class ExactHarmonics(NamedTuple, Generic[Value]):
     """Means and first harmonics (Eqs. 30–31) of deltabar and Phat for the ansatz of Eq. (25), exact."""
 
-    mean_indentation: Array  # mean deltabar
-    indentation_cos: Array  # deltabar_c
-    indentation_sin: Array  # deltabar_s
-    mean_force: Array  # mean Phat
-    force_cos: Array  # Phat_c
-    force_sin: Array  # Phat_s
-    mean_sqrt_w: Array  # J0 = mean sqrt(w/w0); w_eff/w0 = J0^2 (Eq. 18)
+    mean_indentation: Value  # mean deltabar
+    indentation_cos: Value  # deltabar_c
+    indentation_sin: Value  # deltabar_s
+    mean_force: Value  # mean Phat
+    force_cos: Value  # Phat_c
+    force_sin: Value  # Phat_s
+    mean_sqrt_w: Value  # J0 = mean sqrt(w/w0); w_eff/w0 = J0^2 (Eq. 18)
 
 
 def _even_odd_parts(abar: Array, law: RateLaw) -> tuple[Array, Array]:
@@ -165,7 +167,7 @@ def _k_integrals(
     )
 
 
-def _coefficients(a: Array, e: Array, s_even: Array, s_odd: Array) -> ExactHarmonics:
+def _coefficients(a: Array, e: Array, s_even: Array, s_odd: Array) -> ExactHarmonics[Array]:
     """The seven coefficients for rows (abar_m, epsilon) and the matching rows of S, D (module docstring)."""
     t, _, weights = folded_rule()
     w = np.pi * weights[:, 0]  # the rule's weights for int_0^(pi/2) dt
@@ -190,7 +192,7 @@ def _coefficients(a: Array, e: Array, s_even: Array, s_odd: Array) -> ExactHarmo
     )
 
 
-def exact_harmonics(abar_m: ArrayLike, abar: ArrayLike, epsilon: ArrayLike, law: RateLaw) -> ExactHarmonics:
+def exact_harmonics(abar_m: ArrayLike, abar: ArrayLike, epsilon: ArrayLike, law: RateLaw) -> ExactHarmonics[Array]:
     """Exact means and first harmonics of deltabar and Phat (module docstring), broadcast over the inputs.
 
     ``epsilon`` = A/a_o = Abar/(omega_check c_o) must satisfy 0 <= epsilon < abar_m.
@@ -226,7 +228,7 @@ class _AtAmplitude:
         self._e = np.array([epsilon])
         self._parts = _even_odd_parts(np.array([abar]), law)
 
-    def at(self, abar_m: float) -> ExactHarmonics:
+    def at(self, abar_m: float) -> ExactHarmonics[float]:
         return ExactHarmonics(*(float(v[0]) for v in _coefficients(np.array([abar_m]), self._e, *self._parts)))
 
     def mean_indentation_slope(self, abar_m: float) -> float:
@@ -277,7 +279,7 @@ class _RigidBranch:
     def __init__(self, etahat: float, omega_check: float, c_o: float, deltabar0: float, law: RateLaw) -> None:
         self.etahat, self.scale, self.deltabar0, self.law = etahat, omega_check * c_o, deltabar0, law
 
-    def state(self, z: float) -> tuple[float, ExactHarmonics] | None:
+    def state(self, z: float) -> tuple[float, ExactHarmonics[float]] | None:
         """(abar_m, coefficients) at Abar = e^z, or None where the ansatz has no stable state (A >= a_m)."""
         amplitude = _AtAmplitude(math.exp(z), math.exp(z) / self.scale, self.law)
         abar_m = amplitude.stable_mean_radius(self.deltabar0)
@@ -359,7 +361,10 @@ def rigid_fixation(
     lo, hi = _bracket_lowest_root(branch, math.log(start) - 2.0, what)
     z = brentq(lambda y: branch.log_excess(y), lo, hi, xtol=1e-14, rtol=1e-15)
     abar = math.exp(z)
-    abar_m, h = branch.state(z)
+    state = branch.state(z)
+    if state is None:  # brentq's root lies inside the bracket, where every state exists (_bracket_lowest_root)
+        raise NoRootError(f"{what}: no stable state at the root Abar = {abar:.6g}")
+    abar_m, h = state
     residuals = ((h.mean_indentation - deltabar0) / max(abs(deltabar0), abar_m**2),
                  math.hypot(h.indentation_cos, h.indentation_sin) / etahat - 1.0)
     if max(abs(r) for r in residuals) > RESIDUAL_TOLERANCE:
