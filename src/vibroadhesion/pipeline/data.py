@@ -11,7 +11,8 @@ a single line ``"<file>, row <r>, column <c>: <what is wrong>"``:
   ``sample.poisson_ratio.value`` (list items as ``...value[1]``).
 
 Row 0 means the file as a whole (it cannot be read).
-``python -m vibroadhesion.pipeline.data SETUP PULLOFF OUT_JSON OUT_CSV`` validates both files and writes canonical copies atomically (see :func:`main`).
+``python -m vibroadhesion.pipeline.data SETUP PULLOFF OUT_JSON OUT_CSV`` validates both files and
+writes canonical copies atomically (see :func:`main`).
 """
 
 from __future__ import annotations
@@ -117,7 +118,8 @@ def _node_lines(path: str | Path, node: yaml.Node) -> dict[tuple[Any, ...], tupl
                     raise DataError(path, row, dotted(prefix), "keys must be plain text names")
                 key = key_node.value
                 if key in seen:
-                    raise DataError(path, row, dotted(prefix + (key,)), f"duplicate key (first given at row {seen[key]})")
+                    raise DataError(path, row, dotted(prefix + (key,)),
+                                    f"duplicate key (first given at row {seen[key]})")
                 seen[key] = row
                 lines[prefix + (key,)] = (row, value_node.start_mark.line + 1)
                 walk(value_node, prefix + (key,))
@@ -149,15 +151,18 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
     ``key_line``, e.g. for a missing or unknown key).
     """
     if doc is None:
-        raise DataError(path, 1, "(document)", "file is empty; expected the groups indenter, sample, test_conditions, gent_schultz_published")
+        raise DataError(path, 1, "(document)",
+                        "file is empty; expected the groups indenter, sample, test_conditions, gent_schultz_published")
     if not isinstance(doc, dict):
-        raise DataError(path, locate((), False), "(document)", f"expected a mapping of groups at the top level, got {kind_of(doc)}")
+        raise DataError(path, locate((), False), "(document)",
+                        f"expected a mapping of groups at the top level, got {kind_of(doc)}")
     for bad in _iter_nonfinite(doc):
         raise DataError(path, locate(bad, False), dotted(bad), "value must be a finite number (got nan or inf)")
     errors = []
     for error in schema_validator("setup").iter_errors(doc):
         node_path, message, key_line = schema_message(error)
-        row = locate(node_path if not key_line or error.validator == "additionalProperties" else node_path[:-1], key_line)
+        parent_key = key_line and error.validator != "additionalProperties"
+        row = locate(node_path[:-1] if parent_key else node_path, key_line)
         # an unknown key (often a misspelt one) is reported before the missing key it stands for
         errors.append((error.validator != "additionalProperties", row, KEYWORD_ORDER.get(error.validator, 9),
                        dotted(node_path), message))
@@ -318,7 +323,7 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
         cells = _split(path, line_no, line, "(row)")
         if len(cells) != len(header):
             _field_count_error(path, line_no, header, cells)
-        row = dict(zip(header, cells))
+        row = dict(zip(header, cells, strict=True))
         record: dict[str, Any] = {c: _number(path, line_no, c, row[c]) for c in NUMERIC_COLUMNS}
         record["source"] = row["source"].strip()
         errors = []
@@ -346,7 +351,8 @@ def _check_header(path: Path, line_no: int, header: list[str]) -> None:
     expected = ",".join(PULLOFF_COLUMNS)
     if len(header) == 1 and (";" in header[0] or "\t" in header[0]):
         sep = "';'" if ";" in header[0] else "a tab"
-        raise DataError(path, line_no, "header", f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
+        raise DataError(path, line_no, "header",
+                        f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
     seen: set[str] = set()
     for name in header:
         if not name:
@@ -387,7 +393,8 @@ def _pulloff_csv_text(frame: pd.DataFrame) -> str:
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(PULLOFF_COLUMNS)
     for rec in frame.itertuples(index=False):
-        writer.writerow([repr(float(rec.frequency_hz)), repr(float(rec.h1_um)), repr(float(rec.pulloff_mN)), str(rec.source)])
+        writer.writerow([repr(float(rec.frequency_hz)), repr(float(rec.h1_um)), repr(float(rec.pulloff_mN)),
+                         str(rec.source)])
     return buf.getvalue()
 
 

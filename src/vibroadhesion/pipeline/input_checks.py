@@ -24,6 +24,7 @@ class DataError(ValueError):
     """One-line message: '<file>, row <r>, column <c>: <what is wrong>'."""
 
     def __init__(self, path: str | Path, row: int, column: str, message: str) -> None:
+        """Locate the problem: ``path`` of the file, 1-based ``row`` (0: the whole file), ``column``."""
         self.path, self.row, self.column = str(path), int(row), str(column)
         self.message = " ".join(str(message).split())  # one line, whatever the source text
         super().__init__(f"{self.path}, row {self.row}, column {self.column}: {self.message}")
@@ -32,12 +33,14 @@ class DataError(ValueError):
 @cache
 def schema(name: str) -> dict[str, Any]:
     """The packaged JSON schema ``name`` (``"setup"`` or ``"pulloff"``)."""
-    text = resources.files("vibroadhesion.pipeline").joinpath("schemas", f"{name}.schema.json").read_text(encoding="utf-8")
+    schema_file = resources.files("vibroadhesion.pipeline").joinpath("schemas", f"{name}.schema.json")
+    text = schema_file.read_text(encoding="utf-8")
     return json.loads(text)
 
 
 @cache
 def schema_validator(name: str) -> Draft202012Validator:
+    """A validator for the packaged JSON schema ``name`` (built once per name)."""
     return Draft202012Validator(schema(name))
 
 
@@ -52,6 +55,7 @@ def _fmt(value: object) -> str:
 
 
 def kind_of(value: object) -> str:
+    """What ``value`` is, in words, for a message ("the number 2.0", "a list", ...)."""
     if value is None:
         return "an empty value"
     if isinstance(value, bool):
@@ -112,6 +116,7 @@ KEYWORD_ORDER = {"required": 0, "additionalProperties": 1, "type": 2, "exclusive
 
 
 def dotted(path: Sequence[Any]) -> str:
+    """A key path as the message's column: ``sample.poisson_ratio.value``, list items as ``[1]``."""
     out = ""
     for part in path:
         out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
@@ -119,6 +124,7 @@ def dotted(path: Sequence[Any]) -> str:
 
 
 def read_text(path: Path) -> str:
+    """The UTF-8 text of ``path`` (a BOM is dropped); :class:`DataError` when unreadable or not UTF-8."""
     try:
         raw = path.read_bytes()
     except OSError as exc:

@@ -19,7 +19,9 @@ def _floats(value: object) -> list[float]:
 
 
 def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple[CompliantFixation, dict[float, float]]:
-    """Fig. 5's base parameters (chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu; Eqs. 64-66) at the figure's
+    """Fig. 5's base parameters at the figure's amplitude.
+
+    Fig. 5's base parameters (chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu; Eqs. 64-66) at the figure's
     amplitude, with kappa = 1 and zeta = 0 to be replaced, and omega_bar = omega/omega0 at each test frequency.
     """
     omega0 = float(setup_entry(setup, "fixation.natural_frequency"))
@@ -32,8 +34,9 @@ def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple
 
 def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, markers_out: str | Path,
               counts_out: str | Path, omega_bar_min: float, omega_bar_max: float, count_points: int) -> None:
-    """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta) of data/setup.yaml; folds,
-    the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar.
+    """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta) of data/setup.yaml.
+
+    Folds, the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
     base, experiments = compliant_base(setup, params, chi0)
@@ -45,6 +48,7 @@ def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, mar
     write_csv(markers, markers_out)
     write_csv(counts, counts_out)
     for (kappa, zeta), rows in markers[markers["kind"] == "fold"].groupby(["kappa", "zeta"]):
-        print(f"kappa = {kappa:g}, zeta = {zeta:g}: folds at omega_bar = " + ", ".join(f"{w:.6f}" for w in rows["omega_bar"]))
+        folds = ", ".join(f"{w:.6f}" for w in rows["omega_bar"])
+        print(f"kappa = {kappa:g}, zeta = {zeta:g}: folds at omega_bar = {folds}")
     several = counts[counts["solutions"] > 1]
     print(f"{len(curves)} points traced; {len(several)} of {len(counts)} grid frequencies with more than one solution")

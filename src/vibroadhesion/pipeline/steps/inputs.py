@@ -29,8 +29,9 @@ def experiment_omega_check(setup: Setup, v0: float) -> dict[float, float]:
 
 
 def setup_entry(setup: Setup, key: str) -> float | tuple[float, ...]:
-    """The value of an optional entry ``"group.entry"`` of data/setup.yaml (e.g. of the assumed compliant
-    fixation); a ValueError names it when the file does not give it.
+    """The value of an optional entry ``"group.entry"`` of data/setup.yaml (e.g. of the assumed compliant fixation).
+
+    A ValueError names it when the file does not give it.
     """
     if key not in setup.values:
         raise ValueError(f"this step needs the entry {key} in data/setup.yaml (with value, unit and source)")

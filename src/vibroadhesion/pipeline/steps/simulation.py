@@ -1,6 +1,7 @@
-"""Steps of the simulation rules: the direct simulation of the full model (ground truth) on the rigid
-validation grid and in the virtual pull-off experiment, written under results/simulation/ for the
-figures and the validation to read.
+"""Steps of the simulation rules.
+
+The direct simulation of the full model (ground truth) on the rigid validation grid and in the virtual pull-off
+experiment, written under results/simulation/ for the figures and the validation to read.
 """
 
 from __future__ import annotations
@@ -22,7 +23,9 @@ from vibroadhesion.simulation import SpringFixation
 
 def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1_um: float,
                log10_omega_check_min: int, log10_omega_check_max: int) -> None:
-    """Simulation, leading, refined, exact harmonic balance and exact averaging at one amplitude on the
+    """Every model level and the simulation at one amplitude on the rigid grid.
+
+    Simulation, leading, refined, exact harmonic balance and exact averaging at one amplitude on the
     whole decades of omega_check and the test frequencies (rigid nominal point contact).
     """
     setup, params, chi0 = rig(setup_json, fit_json)
@@ -45,7 +48,9 @@ def rigid_grid(parts: Sequence[str | Path], out: str | Path) -> None:
 
 def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, fixation: str,
                          frequency_hz: float) -> None:
-    """The simulated pull-off at one test frequency and every amplitude of the rig, with the predictions,
+    """The simulated pull-off at one test frequency, with the predictions.
+
+    The simulated pull-off at one test frequency and every amplitude of the rig, with the predictions,
     for the rigid fixation or the simulated compliant case of data/setup.yaml (kappa, zeta; mu, omega0).
     """
     setup, params, _ = rig(setup_json, fit_json)

@@ -1,5 +1,7 @@
-"""Steps of the validation rules: every model level against the direct simulation (errors and their
-summary), and Fig. 5's folded resonance swept up and down with the simulation.
+"""Steps of the validation rules.
+
+Every model level against the direct simulation (errors and their summary), and Fig. 5's folded resonance swept up
+and down with the simulation.
 """
 
 from __future__ import annotations
@@ -20,7 +22,9 @@ from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, set
 
 def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | Path, errors_out: str | Path,
                  summary_out: str | Path) -> None:
-    """Relative error of every level against the simulation on the rigid grid, and its summary (largest
+    """Relative error of every level against the simulation on the rigid grid.
+
+    Relative error of every level against the simulation on the rigid grid, and its summary (largest
     error per level and quantity, overall and at the test frequencies).
     """
     setup, params, _ = rig(setup_json, fit_json)
@@ -34,7 +38,9 @@ def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | P
 def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Path, curve_out: str | Path,
                     omega_bar_min: float, omega_bar_max: float, points: int,
                     curve_range: tuple[float, float]) -> None:
-    """The simulated compliant case of data/setup.yaml (kappa, zeta) swept up and down over ``points``
+    """The simulated compliant case swept through resonance, with the refined curve.
+
+    The simulated compliant case of data/setup.yaml (kappa, zeta) swept up and down over ``points``
     log-spaced omega_bar (Floquet stability), and the refined model's curve of that case traced over
     Fig. 5's ``curve_range`` (Eqs. 87, 90) within the sweep's range, as Fig. 5 draws it.
     """
