@@ -66,6 +66,10 @@ _SETUP_LISTS: dict[str, tuple[str, str]] = {
 }
 
 
+#: The value of an entry of data/setup.yaml: a number or a list of numbers.
+SetupValue = float | tuple[float, ...]
+
+
 @dataclass(frozen=True)
 class Setup:
     """Validated contents of ``data/setup.yaml`` (SI units, amplitudes in micrometres)."""
@@ -82,8 +86,8 @@ class Setup:
     n: float
     v0: float  # m/s
     sources: dict[str, str]  # "group.entry" -> source text
-    fixation: dict[str, object] = field(default_factory=dict)  # optional group: entry -> raw value
-    values: dict[str, object] = field(default_factory=dict)  # "group.entry" -> value (float or tuple)
+    fixation: dict[str, SetupValue] = field(default_factory=dict)  # optional group: entry -> value
+    values: dict[str, SetupValue] = field(default_factory=dict)  # "group.entry" -> value
     units: dict[str, str] = field(default_factory=dict)  # "group.entry" -> unit
 
     @property
@@ -94,7 +98,8 @@ class Setup:
 # ----------------------------------------------------------------------------- setup.yaml
 
 
-class _Loader(yaml.SafeLoader):
+# yaml has no type information in the lock (no py.typed, no stubs), so its classes are Any to mypy.
+class _Loader(yaml.SafeLoader):  # type: ignore[misc]
     """Safe loader that also reads ``1e-3`` / ``2E6`` as floats (YAML 1.2 style)."""
 
 
@@ -173,7 +178,9 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
     def value(group: str, entry: str) -> Any:
         return doc[group][entry]["value"]
 
-    sources, values, units = {}, {}, {}
+    sources: dict[str, str] = {}
+    values: dict[str, SetupValue] = {}
+    units: dict[str, str] = {}
     for group, entries in doc.items():
         for entry, spec in entries.items():
             key = f"{group}.{entry}"
@@ -182,9 +189,11 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
             values[key] = tuple(float(x) for x in v) if isinstance(v, list) else float(v)
             units[key] = spec["unit"]
     fixation = {entry: values[f"fixation.{entry}"] for entry in doc.get("fixation", {})}
+    scalars: dict[str, Any] = {name: float(value(*where)) for name, where in _SETUP_FIELDS.items()}
+    lists: dict[str, Any] = {name: tuple(float(x) for x in value(*where)) for name, where in _SETUP_LISTS.items()}
     return Setup(
-        **{name: float(value(*where)) for name, where in _SETUP_FIELDS.items()},
-        **{name: tuple(float(x) for x in value(*where)) for name, where in _SETUP_LISTS.items()},
+        **scalars,
+        **lists,
         sources=sources,
         fixation=fixation,
         values=values,

@@ -17,6 +17,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from matplotlib.axes import Axes  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.patches import Rectangle  # noqa: E402
 
 from vibroadhesion.core.integrals import j_integrals_large_abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
@@ -41,7 +44,7 @@ _PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
 _PNG_METADATA = {"Software": None}
 
 
-def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
+def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
     """Save ``fig`` as PDF and PNG without time stamps, then close it."""
     with atomic_path(pdf) as tmp:
         fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight")
@@ -53,7 +56,7 @@ def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
 # --- Fig. 3: the J-integrals -------------------------------------------------------------
 
 
-def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[float]) -> plt.Figure:
+def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[float]) -> Figure:
     """(a) J0, -Jc1, J1 for the fitted n with their large-Abar asymptotes; (b) J0, -Jc1 for several n."""
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     rows = table[np.isclose(table["n"], n_fitted)]
@@ -94,7 +97,7 @@ def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
 
 
 def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
-              virtual: pd.DataFrame | None = None) -> plt.Figure:
+              virtual: pd.DataFrame | None = None) -> Figure:
     """Fig. 4: P_cr/P_JKR against h1.
 
     P_cr/P_JKR against h1: leading-order, refined and exact-averaging curves, measured rows by source,
@@ -128,16 +131,16 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
 
-def _by_amplitude(table: pd.DataFrame):
+def _by_amplitude(table: pd.DataFrame) -> Any:
     return table.groupby("h1_um", sort=True)
 
 
-def _mark_frequencies(ax: plt.Axes, experiment_omega_check: Mapping[float, float]) -> None:
+def _mark_frequencies(ax: Axes, experiment_omega_check: Mapping[float, float]) -> None:
     for k, (_f, w) in enumerate(sorted(experiment_omega_check.items())):
         ax.axvline(w, color="0.5", lw=0.7, ls=(0, (1, 2)), label="test frequencies 200/300/400 Hz" if k == 0 else None)
 
 
-def shade_amplitude_regions(ax: plt.Axes) -> None:
+def shade_amplitude_regions(ax: Axes) -> None:
     """Shade A > a_m (geometrically impossible) and A <= 0.1 a_m (the model applies) on an A/a_m axis."""
     lo, hi = ax.get_ylim()
     ax.axhspan(1.0, max(hi, 10.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
@@ -146,7 +149,7 @@ def shade_amplitude_regions(ax: plt.Axes) -> None:
 
 
 def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float],
-              validation: pd.DataFrame | None = None) -> plt.Figure:
+              validation: pd.DataFrame | None = None) -> Figure:
     """(a) Abar, (b) abar_m, (c) w_eff/w0, (d) A/a_m against omega_check, regions of (d) shaded.
 
     With the validation grid: the simulated steady states of the full model (filled markers) and the
@@ -177,7 +180,7 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 
 def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float],
-              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None) -> plt.Figure:
+              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None) -> Figure:
     """(a) Abar_cr and (b) P_cr/P_JKR against omega_check.
 
     Dashed: the leading-order values (Eq. 72); dotted: the exact high-frequency averaging with the same criterion
@@ -208,7 +211,7 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     return fig
 
 
-def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
+def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> Figure:
     """Storage and loss contact stiffness relative to 2E*a_m, and the phase, against omega_check."""
     fig, axes = plt.subplots(1, 3, figsize=(11.0, 3.5), constrained_layout=True)
     panels = [("S_storage_rel", r"$\tilde S'/(2E^*a_m)$"), ("S_loss_rel", r"$\tilde S''/(2E^*a_m)$"),
@@ -226,7 +229,7 @@ def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 # --- Fig. 5: compliant fixation, passage through resonance ---------------------------------
 
-def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> plt.Figure:
+def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> Figure:
     """A/a_m against omega_bar, one panel per kappa, one colour per zeta; folds and test frequencies marked."""
     kappas = sorted(curves["kappa"].unique())
     fig, axes = plt.subplots(1, len(kappas), figsize=(4.6 * len(kappas), 4.6), layout="constrained", squeeze=False)
@@ -258,7 +261,7 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
 
 def plot_validation_maps(
     grid: pd.DataFrame, errors: pd.DataFrame, experiment_omega_check: Mapping[float, float]
-) -> plt.Figure:
+) -> Figure:
     """One error map per model level.
 
     The largest relative error over Abar, abar_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the simulation, per (h1,
@@ -282,7 +285,7 @@ def plot_validation_maps(
             ax.text(j, i, f"{100 * r.error:.2g}%", ha="center", va="center", fontsize=6,
                     color="w" if r.error < 1e-2 else "k")
             if not r.applicable:
-                ax.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
+                ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
         ax.set_xticks(range(len(omegas)), [f"{w:.2g}" for w in omegas], rotation=90, fontsize=7)
         ax.set_yticks(range(len(amplitudes)), [f"{h:g}" for h in amplitudes])
         ax.set(title=model, xlabel=r"$\check{\omega}$")
@@ -293,7 +296,7 @@ def plot_validation_maps(
     return fig
 
 
-def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> plt.Figure:
+def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
     """A/a_m against omega_bar through the folded resonance.
 
     The refined model's traced curve and the simulated orbits swept up and down (open markers: unstable orbit,

@@ -45,7 +45,7 @@ def fig4_table(
     return pd.concat(frames, ignore_index=True)[FIG4_COLUMNS]
 
 
-def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred) -> pd.DataFrame:
+def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: PulloffPrediction) -> pd.DataFrame:
     return pd.DataFrame(
         {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.abar_cr,
          "J0": pred.j0, "ratio": pred.ratio, "pulloff_mN": pred.pulloff_mN}

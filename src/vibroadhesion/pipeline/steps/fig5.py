@@ -10,11 +10,11 @@ from vibroadhesion.core import groups
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import CompliantFixation
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.data import Setup
-from vibroadhesion.pipeline.steps.inputs import rig, setup_entry
+from vibroadhesion.pipeline.data import Setup, SetupValue
+from vibroadhesion.pipeline.steps.inputs import rig, setup_entry, setup_number
 
 
-def _floats(value: object) -> list[float]:
+def _floats(value: SetupValue) -> list[float]:
     return [float(x) for x in np.atleast_1d(value)]
 
 
@@ -24,11 +24,11 @@ def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple
     Fig. 5's base parameters (chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu; Eqs. 64-66) at the figure's
     amplitude, with kappa = 1 and zeta = 0 to be replaced, and omega_bar = omega/omega0 at each test frequency.
     """
-    omega0 = float(setup_entry(setup, "fixation.natural_frequency"))
-    h1_um = float(setup_entry(setup, "test_conditions.fig5_amplitude"))
+    omega0 = setup_number(setup, "fixation.natural_frequency")
+    h1_um = setup_number(setup, "test_conditions.fig5_amplitude")
     base = CompliantFixation(chi0=chi0, eta1=float(groups.eta1(h1_um * 1e-6, setup.radius)),
                              nu0=groups.nu0(params["v0"], omega0, setup.radius), kappa=1.0,
-                             mu=float(setup_entry(setup, "fixation.weight_ratio_mu")), zeta=0.0)
+                             mu=setup_number(setup, "fixation.weight_ratio_mu"), zeta=0.0)
     return base, {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
 
 

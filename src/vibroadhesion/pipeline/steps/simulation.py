@@ -17,7 +17,7 @@ from vibroadhesion.experiments import validation, virtual_pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_entry
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_number
 from vibroadhesion.simulation import SpringFixation
 
 
@@ -56,10 +56,10 @@ def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str 
     setup, params, _ = rig(setup_json, fit_json)
     spring = None
     if fixation == "compliant":
-        nu0 = groups.nu0(params["v0"], float(setup_entry(setup, "fixation.natural_frequency")), setup.radius)
-        spring = SpringFixation(float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
-                                float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")), nu0,
-                                float(setup_entry(setup, "fixation.weight_ratio_mu")))
+        nu0 = groups.nu0(params["v0"], setup_number(setup, "fixation.natural_frequency"), setup.radius)
+        spring = SpringFixation(setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
+                                setup_number(setup, "fixation.simulated_damping_ratio_zeta"), nu0,
+                                setup_number(setup, "fixation.weight_ratio_mu"))
     h1 = np.asarray(setup.amplitudes_um, dtype=float)
     table = virtual_pulloff.pulloff_table(GentSchultzParameters(**params), frequency_hz, h1, radius=setup.radius,
                                           reduced_modulus=setup.reduced_modulus, fixation=spring,

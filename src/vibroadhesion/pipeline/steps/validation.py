@@ -17,7 +17,7 @@ from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.fig5 import compliant_base
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_entry
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_number
 
 
 def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | Path, errors_out: str | Path,
@@ -46,9 +46,9 @@ def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Pat
     """
     setup, params, chi0 = rig(setup_json, fit_json)
     base, _ = compliant_base(setup, params, chi0)
-    p = replace(base, kappa=float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
-                zeta=float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")))
-    table = validation.compliant_sweep(p, params["n"], np.geomspace(omega_bar_min, omega_bar_max, points),
+    p = replace(base, kappa=setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
+                zeta=setup_number(setup, "fixation.simulated_damping_ratio_zeta"))
+    table = validation.compliant_sweep(p, params["n"], list(np.geomspace(omega_bar_min, omega_bar_max, points)),
                                        ProgressBar(2 * points, "frequencies"))
     curve, _, _ = fig5_tables(base, [p.kappa], [p.zeta], params["n"], {}, curve_range, 2)
     write_csv(table, out)
