@@ -8,8 +8,18 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
-from conftest import (AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, POISSON_RATIO, RADIUS, REDUCED_MODULUS,
-                      STORAGE_FACTOR, V0, W0, YOUNGS_MODULUS)
+from conftest import (
+    AMPLITUDES_UM,
+    FREQUENCIES_HZ,
+    N_PUBLISHED,
+    POISSON_RATIO,
+    RADIUS,
+    REDUCED_MODULUS,
+    STORAGE_FACTOR,
+    V0,
+    W0,
+    YOUNGS_MODULUS,
+)
 from jsonschema import Draft202012Validator
 
 from vibroadhesion.pipeline import data
