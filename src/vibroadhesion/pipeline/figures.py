@@ -100,7 +100,7 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
               virtual: pd.DataFrame | None = None) -> Figure:
     """Fig. 4: P_cr/P_JKR against h1.
 
-    P_cr/P_JKR against h1: leading-order, refined and exact-averaging curves, measured rows by source,
+    Leading-order, refined and exact-averaging curves, measured rows by source,
     and the simulated pull-off of the rigidly fixed virtual experiment (its own, labelled series: not measurements).
     """
     fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)

@@ -33,8 +33,8 @@ def _is_type_checking(node: ast.AST) -> bool:
 def _runtime_statements(body: list[ast.stmt]) -> Iterator[ast.AST]:
     """Every statement in ``body`` and in the blocks nested in it.
 
-    Every statement in ``body`` and in the blocks nested in it (functions, classes, if, try, with, loops,
-    match), except the body of ``if TYPE_CHECKING:``. Imports are statements: expressions need no visit.
+    The blocks are those of functions, classes, if, try, with, loops and match; the body of
+    ``if TYPE_CHECKING:`` is left out. Imports are statements: expressions need no visit.
     """
     stack: list[ast.AST] = list(body)
     while stack:
@@ -100,10 +100,10 @@ def _modules_run_by(name: str, src: Path) -> Iterator[Path]:
 
 
 def import_closure(sources: Iterable[str | Path], root: str | Path = ".") -> list[str]:
-    """Package modules imported by ``sources``, directly or through other modules.
+    """``sources`` and every package module they import, directly or through other modules.
 
-    ``sources`` (scripts or notebooks, relative to ``root``) and every module of the package under
-    ``root/src`` they import, directly or through other modules: sorted paths relative to ``root``.
+    ``sources`` are scripts or notebooks relative to ``root``, the package's modules are under
+    ``root/src``; the result is sorted paths relative to ``root``.
     """
     root = Path(root)
     src = root / "src"

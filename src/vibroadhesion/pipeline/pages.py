@@ -1,7 +1,6 @@
-"""The pages of the rendered report and their index.
+"""The pages of the rendered report (results/report/) and their index.
 
-The pages of the rendered report (results/report/) and their index, with the standard library only,
-so the Snakefile can read the list of pages without importing the numerics stack.
+With the standard library only, so the Snakefile can read the list of pages without importing the numerics stack.
 
 Each page is a notebook of notebooks/ executed by papermill and exported to HTML by nbconvert
 (:mod:`vibroadhesion.pipeline.steps.report`); its tables come from :mod:`vibroadhesion.pipeline.report`.

@@ -1,7 +1,6 @@
 """Fig. 5: passage through resonance of a compliantly fixed indenter.
 
-Fig. 5: passage through resonance of a compliantly fixed indenter (refined model, Eqs. 87, 90-96),
-traced by continuation.
+Refined model (Eqs. 87, 90-96), traced by continuation.
 """
 
 from __future__ import annotations

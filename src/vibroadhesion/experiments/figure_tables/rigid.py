@@ -1,7 +1,6 @@
 """Figs. 6 and 7: rigidly fixed indenter, refined model.
 
-Figs. 6 and 7: rigidly fixed indenter, refined model (nominal point contact, Eqs. 122-123, 49, corrected 98;
-pull-off estimate, Eq. 106).
+Nominal point contact (Eqs. 122-123, 49, corrected 98) and the pull-off estimate (Eq. 106).
 """
 
 from __future__ import annotations

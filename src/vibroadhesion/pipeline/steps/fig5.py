@@ -21,8 +21,8 @@ def _floats(value: SetupValue) -> list[float]:
 def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple[CompliantFixation, dict[float, float]]:
     """Fig. 5's base parameters at the figure's amplitude.
 
-    Fig. 5's base parameters (chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu; Eqs. 64-66) at the figure's
-    amplitude, with kappa = 1 and zeta = 0 to be replaced, and omega_bar = omega/omega0 at each test frequency.
+    chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu (Eqs. 64-66), with kappa = 1 and zeta = 0 to be
+    replaced, and omega_bar = omega/omega0 at each test frequency.
     """
     omega0 = setup_number(setup, "fixation.natural_frequency")
     h1_um = setup_number(setup, "test_conditions.fig5_amplitude")

@@ -23,8 +23,8 @@ from vibroadhesion.pipeline.steps.inputs import rig
 def sensitivity_run(setup_json: str | Path, fit_json: str | Path, out: str | Path, parameter: str, sign: str) -> None:
     """Simulated pull-off with one parameter scaled by exp(+h) or exp(-h).
 
-    Simulated pull-off (rigid fixation, every test frequency and amplitude of the rig) with ``parameter``
-    scaled by exp(+h) (``sign`` "plus") or exp(-h) ("minus").
+    Rigid fixation, every test frequency and amplitude of the rig; ``parameter`` is scaled by exp(+h)
+    when ``sign`` is "plus", by exp(-h) when it is "minus".
     """
     setup, params, _ = rig(setup_json, fit_json)
     shifted = identifiability.perturbed(GentSchultzParameters(**params), parameter, {"plus": 1, "minus": -1}[sign])

@@ -18,8 +18,8 @@ from vibroadhesion.pipeline.atomic import atomic_path
 def page(notebook: str | Path, executed: str | Path, html: str | Path, parameters: Mapping[str, str]) -> None:
     """Execute ``notebook`` and write the executed notebook and its HTML page.
 
-    Execute ``notebook`` with ``parameters`` (artefact paths, injected after its ``parameters`` cell)
-    in a fresh kernel run from the working directory; write the executed notebook and its HTML page.
+    ``parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell; the
+    kernel is a fresh one, run from the working directory.
     """
     with atomic_path(executed) as tmp:
         nb = papermill.execute_notebook(str(notebook), str(tmp), parameters=dict(parameters), kernel_name="python3",

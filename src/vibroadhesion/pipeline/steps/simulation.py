@@ -25,8 +25,8 @@ def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1
                log10_omega_check_min: int, log10_omega_check_max: int) -> None:
     """Every model level and the simulation at one amplitude on the rigid grid.
 
-    Simulation, leading, refined, exact harmonic balance and exact averaging at one amplitude on the
-    whole decades of omega_check and the test frequencies (rigid nominal point contact).
+    The levels are leading, refined, exact harmonic balance and exact averaging (rigid nominal point
+    contact); the grid is the whole decades of omega_check and the test frequencies.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
     omega = validation.validation_frequencies((log10_omega_check_min, log10_omega_check_max),
@@ -50,8 +50,8 @@ def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str 
                          frequency_hz: float) -> None:
     """The simulated pull-off at one test frequency, with the predictions.
 
-    The simulated pull-off at one test frequency and every amplitude of the rig, with the predictions,
-    for the rigid fixation or the simulated compliant case of data/setup.yaml (kappa, zeta; mu, omega0).
+    Every amplitude of the rig, for the rigid fixation or the simulated compliant case of
+    data/setup.yaml (kappa, zeta; mu, omega0).
     """
     setup, params, _ = rig(setup_json, fit_json)
     spring = None

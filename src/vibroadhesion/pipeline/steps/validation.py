@@ -24,8 +24,7 @@ def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | P
                  summary_out: str | Path) -> None:
     """Relative error of every level against the simulation on the rigid grid.
 
-    Relative error of every level against the simulation on the rigid grid, and its summary (largest
-    error per level and quantity, overall and at the test frequencies).
+    Also its summary: the largest error per level and quantity, overall and at the test frequencies.
     """
     setup, params, _ = rig(setup_json, fit_json)
     errors = validation.relative_errors(pd.read_csv(grid_csv))
@@ -40,8 +39,8 @@ def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Pat
                     curve_range: tuple[float, float]) -> None:
     """The simulated compliant case swept through resonance, with the refined curve.
 
-    The simulated compliant case of data/setup.yaml (kappa, zeta) swept up and down over ``points``
-    log-spaced omega_bar (Floquet stability), and the refined model's curve of that case traced over
+    The case is data/setup.yaml's (kappa, zeta), swept up and down over ``points`` log-spaced
+    omega_bar (Floquet stability); the refined model's curve of that case traced over
     Fig. 5's ``curve_range`` (Eqs. 87, 90) within the sweep's range, as Fig. 5 draws it.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
