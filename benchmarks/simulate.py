@@ -20,8 +20,8 @@ import time
 
 import numpy as np
 
-from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.simulation import BaseExcitation, SpringFixation, steady_state, transient
 
 CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5

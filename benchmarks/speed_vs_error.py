@@ -20,13 +20,12 @@ import matplotlib.pyplot as plt
 import pandas as pd
 
 from vibroadhesion.core import groups
-
-from vibroadhesion.experiments import validation
-from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.figures import save_figure
-from vibroadhesion.experiments.benchmarking import machine_description
-from vibroadhesion.pipeline.data import read_canonical_setup
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments import validation
+from vibroadhesion.experiments.benchmarking import machine_description
+from vibroadhesion.pipeline.artefacts import write_csv
+from vibroadhesion.pipeline.data import read_canonical_setup
+from vibroadhesion.pipeline.figures import save_figure
 
 
 def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:

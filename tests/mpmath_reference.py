@@ -38,7 +38,7 @@ def _breakpoints(abar: mp.mpf) -> list:
     return sorted(points)
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def j_integrals_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
     """(J0, Jc1, J1) at ``DIGITS`` significant digits for the Gent–Schultz law."""
     # Jc1 is a difference of two O(1) halves that cancel to O(A^n) for small A: carry

@@ -15,9 +15,12 @@ import mpmath as mp
 import numpy as np
 import pytest
 from conftest import CHI0, ETA1, N_PUBLISHED, NU0, OMEGA_BAR_200HZ
-from scipy.optimize import root
 from mpmath_reference import j_integrals_mp
+from scipy.optimize import root
+from test_leading_order_steady_state import printed_eq_67_log_excess, printed_eq_87_terms
 
+from vibroadhesion.core.integrals import j_integrals
+from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import (
     NOTCH_FLOOR,
@@ -32,19 +35,15 @@ from vibroadhesion.models.compliant import (
     static_abar_m,
     trace_response_curve,
 )
+from vibroadhesion.models.leading_pulloff import pulloff_closure
+from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 from vibroadhesion.numerics.continuation import (
     ContinuationSettings,
-    Curve,
     _corrected_at,
     crossings,
     locate_folds,
     trace,
 )
-from test_leading_order_steady_state import printed_eq_67_log_excess, printed_eq_87_terms
-from vibroadhesion.core.integrals import j_integrals
-from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models.leading_pulloff import pulloff_closure
-from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 
 LAW = GentSchultz(N_PUBLISHED)
 SCAN = np.linspace(-40.0, 40.0, 4001)  # ln Abar grid of the independent root scan
@@ -56,7 +55,8 @@ FOLDING = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.0)  # th
 
 def test_continuation_follows_the_unit_circle_through_both_folds_of_x() -> None:
     """F(x, y) = x^2 + y^2 - 1 with parameter x: folds at (1, 0) and (-1, 0). Starting at (0, -1)
-    towards +x the trace passes both and comes back; folds located to 1e-12, points on the circle to 1e-12."""
+    towards +x the trace passes both and comes back; folds located to 1e-12, points on the circle to 1e-12.
+    """
     circle = lambda p: (p[:, 0] ** 2 + p[:, 1] ** 2 - 1.0)[:, None]  # noqa: E731
     visited_upper_half = []
 
@@ -85,7 +85,8 @@ def folded() -> tuple:
 def test_corrected_point_lies_on_the_circle_in_the_arclength_hyperplane() -> None:
     """From x0 = (0, -1) along t0 = (1, 0), sigma = 0.6: the point of the unit circle with x = 0.6 is
     (0.6, -0.8) and its unit tangent oriented along t0 is (0.8, 0.6) (closed forms). Point to 1e-12 (the
-    corrector's tolerance on F), tangent to 1e-8 (central differences with step 1e-7: rounding ~1e-9)."""
+    corrector's tolerance on F), tangent to 1e-8 (central differences with step 1e-7: rounding ~1e-9).
+    """
     circle = lambda p: (p[:, 0] ** 2 + p[:, 1] ** 2 - 1.0)[:, None]  # noqa: E731
     x0, t0, settings = np.array([0.0, -1.0]), np.array([1.0, 0.0]), ContinuationSettings()
     jac0 = np.array([[0.0, -2.0]])  # F'(x0), exact
@@ -96,7 +97,8 @@ def test_corrected_point_lies_on_the_circle_in_the_arclength_hyperplane() -> Non
 def test_continuation_passes_both_folds_and_reaches_the_end_of_the_range(folded) -> None:
     """kappa = 1e-3, zeta = 0 folds near omega_bar = 10.6 and 11.1. The trace locates two folds
     (the Jacobian in (ln abar_m, ln Abar) is singular there: smallest/largest singular value < 1e-6),
-    and continues to omega_bar = 50 on the upper piece."""
+    and continues to omega_bar = 50 on the upper piece.
+    """
     assert len(folded.folds) == 2
     lo, hi = sorted(np.exp(folded.folds[:, 0]))
     assert 10.0 < lo < hi < 12.0
@@ -113,7 +115,8 @@ def test_continuation_passes_both_folds_and_reaches_the_end_of_the_range(folded)
 def test_three_solutions_between_the_folds_each_satisfying_eqs_87_and_90_to_1e10(folded) -> None:
     """Between the folds the curve crosses omega_bar three times. Each crossing, polished by Newton,
     satisfies the printed polynomial Eqs. (87) and (90) to 1e-10 relative, and the three are the
-    three roots found independently by the scalar scan (no continuation) to 1e-9."""
+    three roots found independently by the scalar scan (no continuation) to 1e-9.
+    """
     lo, hi = sorted(np.exp(folded.folds[:, 0]))
     for omega_bar in (lo + 0.05 * (hi - lo), 0.5 * (lo + hi), hi - 0.05 * (hi - lo)):
         on_curve = sorted(folded.solutions_at(omega_bar, LAW), key=lambda s: s[1])
@@ -134,7 +137,8 @@ def test_three_solutions_between_the_folds_each_satisfying_eqs_87_and_90_to_1e10
 def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the_notch(folded) -> None:
     """Appendix B: at omega_bar = 1 and zeta = 0 the forcing vanishes and Abar = 0 exactly. The two
     pieces run from each end of the range into the notch, ending when A/a_m < NOTCH_FLOOR, from below
-    and from above omega_bar = 1; the approach is to the static contact radius (Eq. 82)."""
+    and from above omega_bar = 1; the approach is to the static contact radius (Eq. 82).
+    """
     lower, upper = folded.pieces
     for piece, side in ((lower, -1.0), (upper, 1.0)):
         end = piece.points[-1]
@@ -145,7 +149,8 @@ def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the
 
 def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -> None:
     """Just off omega_bar = 1 (1 +- 1e-9) Newton from the static state converges to Abar < 1e-12 and
-    abar_m within 1e-9 of the static root of Eq. (82); the Fig. 5 table carries the exact point."""
+    abar_m within 1e-9 of the static root of Eq. (82); the Fig. 5 table carries the exact point.
+    """
     static = static_abar_m(FOLDING)
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
         abar_m, abar = newton_at_frequency(omega_bar, FOLDING, LAW, (static, 1e-14))
@@ -159,7 +164,8 @@ def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -
 @pytest.mark.parametrize(("abar_m", "j0", "mu"), [(0.3, 1.0, 1e-6), (1.0, 2.5, 0.0), (4.0, 1.3, 1e-6)])
 def test_mean_balance_excess_is_printed_eq_87_over_its_j0_part(abar_m: float, j0: float, mu: float) -> None:
     """positive/negative - 1 of Eq. (87) = (sum of the printed terms) / (minus its J0 terms), 30 digits;
-    tolerance 1e-13 times the largest term over the J0 part (a few roundings per term)."""
+    tolerance 1e-13 times the largest term over the J0 part (a few roundings per term).
+    """
     kappa = 0.1
     with mp.workdps(30):
         terms = printed_eq_87_terms(abar_m, mp.mpf(j0), kappa, mu)
@@ -172,7 +178,8 @@ def test_mean_balance_excess_is_printed_eq_87_over_its_j0_part(abar_m: float, j0
 def test_amplitude_residual_at_a_cr_tends_to_half_the_log_of_printed_eq_67(kappa, omega_bar, zeta) -> None:
     """Eq. (90) along a_m = a_cr (Eq. 61) in logarithms becomes Eqs. (67)-(69) as omega_check -> infinity: with
     nu0 = 1e-15 it equals half ln of the printed Eq. (67) over eta1^2 (30-digit J's) up to the refined terms
-    of Eqs. (94), (96), O(Abar nu0/omega_bar); tolerance 1e-12 + 10 Abar nu0/omega_bar."""
+    of Eqs. (94), (96), O(Abar nu0/omega_bar); tolerance 1e-12 + 10 Abar nu0/omega_bar.
+    """
     nu0 = 1e-15
     p = CompliantFixation(CHI0, ETA1, nu0, kappa, 0.0, zeta)
     for abar in (0.01, 3.0, 1e4):
@@ -198,7 +205,8 @@ def test_static_contact_radius_solves_eq_82() -> None:
 def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, zeta: float) -> None:
     """kappa = 1e12: Eq. (87) -> abar_m^(3/2) = J0 (Eq. 123) and Eq. (90) -> Eq. (100), so the solution is
     Fig. 6's nominal point contact at omega_check = omega_bar/nu0; with a_m = a_cr it is Fig. 7's Eq. (106).
-    The differences are O(1/kappa): tolerance 1e-6."""
+    The differences are O(1/kappa): tolerance 1e-6.
+    """
     p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e12, mu=0.0, zeta=zeta)
     (abar_m, abar), = solutions_by_scan(omega_bar, p, LAW, SCAN)
     rigid = nominal_point_contact(ETA1, omega_bar / NU0, CHI0, LAW)
@@ -216,7 +224,8 @@ def free_indenter(beta: float, mu: float, n: float, start: tuple[float, float]) 
     = beta eta1 (Eq. 57), and Eq. (59), P_m = m g, reads c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] = mu / c_o^2.
     Solved with scipy's hybrid root finder on these printed equations (J-integrals checked against
     mpmath in test_integrals), independently of the compliant-fixation code; ``start`` (abar_m, Abar) is
-    only the initial guess."""
+    only the initial guess.
+    """
     c = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0
 
     def equations(v: np.ndarray) -> list[float]:
@@ -234,7 +243,8 @@ def free_indenter(beta: float, mu: float, n: float, start: tuple[float, float]) 
 def test_soft_fixation_reproduces_the_free_indenter_eqs_57_to_59(beta: float) -> None:
     """kappa = 1e-10 at omega_bar = sqrt(beta/kappa) (so m omega^2 = beta E* R stays fixed), zeta = 0, mu = 1e-5:
     the refined compliant solution tends to the leading-order free indenter. Differences: O(kappa/beta) from
-    k, O(1/omega_check) from the refined terms (omega_check ~ 1e9 here): tolerance 1e-6."""
+    k, O(1/omega_check) from the refined terms (omega_check ~ 1e9 here): tolerance 1e-6.
+    """
     kappa, mu = 1e-10, 1e-5
     p = CompliantFixation(CHI0, ETA1, NU0, kappa=kappa, mu=mu, zeta=0.0)
     omega_bar = math.sqrt(beta / kappa)

@@ -8,12 +8,23 @@ from pathlib import Path
 
 import pandas as pd
 import pytest
-from conftest import (AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, POISSON_RATIO, RADIUS, REDUCED_MODULUS,
-                      STORAGE_FACTOR, V0, W0, YOUNGS_MODULUS)
+from conftest import (
+    AMPLITUDES_UM,
+    FREQUENCIES_HZ,
+    N_PUBLISHED,
+    POISSON_RATIO,
+    RADIUS,
+    REDUCED_MODULUS,
+    STORAGE_FACTOR,
+    V0,
+    W0,
+    YOUNGS_MODULUS,
+)
 from jsonschema import Draft202012Validator
 
 from vibroadhesion.pipeline import data
-from vibroadhesion.pipeline.data import DataError, Setup, load_pulloff, load_setup, main
+from vibroadhesion.pipeline.data import Setup, load_pulloff, load_setup, main
+from vibroadhesion.pipeline.input_checks import DataError, schema
 
 ROOT = Path(__file__).resolve().parents[1]
 SETUP_YAML = ROOT / "data" / "setup.yaml"
@@ -73,9 +84,9 @@ def _line_of(path: Path, needle: str, nth: int = 0) -> int:
 
 @pytest.mark.parametrize("name", ["setup", "pulloff"])
 def test_schemas_are_valid_draft_2020_12(name: str) -> None:
-    schema = data.schema(name)
-    assert schema["$schema"] == "https://json-schema.org/draft/2020-12/schema"
-    Draft202012Validator.check_schema(schema)
+    schema_doc = schema(name)
+    assert schema_doc["$schema"] == "https://json-schema.org/draft/2020-12/schema"
+    Draft202012Validator.check_schema(schema_doc)
 
 
 def test_shipped_setup_loads() -> None:

@@ -23,6 +23,8 @@ from conftest import C_O, CHI0, N_PUBLISHED, RADIUS
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
+from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius_ratio
+from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.exact_averaging import (
     mean_state,
     nominal_point_contact,
@@ -30,8 +32,6 @@ from vibroadhesion.models.exact_averaging import (
     pulloff_at_force_minimum,
 )
 from vibroadhesion.models.frozen_radius import NoSteadyStateError, _exponential_nodes, frozen_radius_cycle
-from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius_ratio
-from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact as j_model_nominal_point_contact
 
 N_VALUES = [0.05, N_PUBLISHED, 1.0, 4.0]
@@ -104,7 +104,8 @@ def test_alpha_star_matches_30_digit_mpmath_root(n: float) -> None:
     """Reference: the drift condition I_cl = I_op solved in mpmath (30 digits). Tolerances:
     alpha* 1e-13 relative (the brief), Abar 1e-12 relative, alpha* - beta (the minimum of sqrt(w/w0))
     1e-12 relative (it is 9e-5 for n = 4, beta = 3, and resolved to full precision because
-    it is the solver's unknown)."""
+    it is the solver's unknown).
+    """
     betas = CASES[n]
     cycle = frozen_radius_cycle(np.array(betas), GentSchultz(n))
     for k, beta in enumerate(betas):
@@ -150,7 +151,8 @@ def small_beta_coefficients(n: float) -> tuple[float, float]:
 def test_small_beta_series_to_order_beta_cubed(n: float) -> None:
     """Reference: alpha* - 1 = k1 beta^2 + k2 beta^3 (closed form above, k1 = 1/(2(1+n))). The next
     term is O(beta^4) (measured coefficient below 0.13); tolerance 0.5 beta^4 on alpha* - 1, which at
-    beta = 1e-3 is 2000 times the rounding of alpha* and 200 times below the beta^3 term."""
+    beta = 1e-3 is 2000 times the rounding of alpha* and 200 times below the beta^3 term.
+    """
     k1, k2 = small_beta_coefficients(n)
     assert abs(k1 - 1 / (2 * (1 + n))) < 1e-15
     betas = np.array([1e-3, 3e-3, 1e-2, 3e-2])
@@ -171,7 +173,8 @@ def large_beta_floor(beta: float, n: float) -> float:
 def test_large_beta_asymptote_of_the_minimum_of_sqrt_w(n: float) -> None:
     """Reference: the beta -> infinity balance of the frozen_radius docstring. Its relative error falls off
     (corrections O(beta^-2) from s^2 - 1 ~ s^2, and from the cut of the closing integral): the ratio
-    must approach 1 monotonically, within 1e-5 at beta = 1e4; and alpha*/beta - 1 -> 0."""
+    must approach 1 monotonically, within 1e-5 at beta = 1e4; and alpha*/beta - 1 -> 0.
+    """
     betas = np.array([1e2, 1e3, 1e4])
     cycle = frozen_radius_cycle(betas, GentSchultz(n))
     deviation = np.abs(cycle.sqrt_w_min / np.array([large_beta_floor(b, n) for b in betas]) - 1)
@@ -182,7 +185,8 @@ def test_large_beta_asymptote_of_the_minimum_of_sqrt_w(n: float) -> None:
 def test_root_below_the_resolvable_floor_is_beta_and_n_above_4_without_steady_state_raises() -> None:
     """n = 4, beta = 1e3: alpha* - beta is below 1e-280 (the logarithmically divergent closing integral
     needs a minimum of sqrt(w) that small), returned as alpha* = beta with minimum 0. n = 6: the
-    closing integral stays finite as alpha -> beta and the opening one wins for large beta: no root."""
+    closing integral stays finite as alpha -> beta and the opening one wins for large beta: no root.
+    """
     cycle = frozen_radius_cycle(np.array([1e3]), GentSchultz(4.0))
     assert float(cycle.alpha[0]) == 1e3 and float(cycle.sqrt_w_min[0]) == 0.0 and float(cycle.abar[0]) > 0
     assert float(frozen_radius_cycle(np.array([0.5]), GentSchultz(6.0)).alpha[0]) > 1.0
@@ -202,7 +206,8 @@ def _speed(s: float, n: float) -> float:
 def periodic_state_by_integration(etahat: float, n: float, stiffness: float) -> tuple[float, float]:
     """Mean and half peak-to-peak of abar over one period of d abar/d tau = x/(omega_check c_o),
     s = (abar^2 + etahat sin tau)/sqrt(abar) (Eq. 5 with deltabar = -etahat sin tau), started at abar = 1
-    and integrated in blocks of 50 periods until abar changes by less than 1e-10 over a period."""
+    and integrated in blocks of 50 periods until abar changes by less than 1e-10 over a period.
+    """
 
     def rhs(tau: float, y: np.ndarray) -> list[float]:
         s = (y[0] ** 2 + etahat * math.sin(tau)) / math.sqrt(y[0])
@@ -229,7 +234,8 @@ def test_frozen_cycle_is_the_limit_of_the_unaveraged_ode(n: float) -> None:
     contact, omega_check c_o = 400 and 800. The period mean of abar must approach abar_m and the half
     peak-to-peak must approach Abar/(omega_check c_o). The relative errors (measured 1.4e-3 and 8.6e-3
     at 400 for n = 0.531) must be below 1e-2 and fall by a factor 3..5 when omega_check c_o doubles
-    (second order: the O(1/omega_check) correction of first-order averaging has zero mean)."""
+    (second order: the O(1/omega_check) correction of first-order averaging has zero mean).
+    """
     etahat, law = 1.0, GentSchultz(n)
     errors = []
     for stiffness in (400.0, 800.0):
@@ -251,7 +257,8 @@ def test_nominal_point_contact_solves_alpha_star_equal_abar_m_cubed_half(n: floa
     """Reference: the mpmath drift integrals evaluated at alpha = abar_m^(3/2) (1 -+ 1e-12) and
     beta = etahat/sqrt(abar_m) change sign, i.e. the 30-digit root is within 1e-12 of the returned
     abar_m^(3/2); with w_eff/w0 = alpha^2, P_m/|P_JKR| = -(8/9) abar_m^3 (Phat_m = (4/3 - 2) abar_m^3)
-    and A/a_m = Abar/(omega_check c_o abar_m) checked to 1e-14."""
+    and A/a_m = Abar/(omega_check c_o abar_m) checked to 1e-14.
+    """
     eta1 = np.array([20e-6, 100e-6]) / RADIUS
     sol = nominal_point_contact(eta1, 1e6, CHI0, GentSchultz(n))
     for k in range(2):
@@ -274,7 +281,8 @@ def test_nominal_point_contact_solves_alpha_star_equal_abar_m_cubed_half(n: floa
 def test_nominal_point_contact_equation_changes_sign_once(etahat: float) -> None:
     """Uniqueness (proof in vibroadhesion.models.exact_averaging): ln alpha*(etahat/u) - 3 ln u, u = sqrt(abar_m),
     is strictly decreasing on u in (etahat^(1/4), 3 (1 + etahat)^(1/3)], positive at the left end and
-    negative at the right; checked on 400 points."""
+    negative at the right; checked on 400 points.
+    """
     u = np.linspace(etahat**0.25 * (1 + 1e-6), 3 * (1 + etahat) ** (1 / 3), 400)
     excess = np.log(frozen_radius_cycle(etahat / u, GentSchultz(N_PUBLISHED)).alpha) - 3 * np.log(u)
     assert np.all(np.diff(excess) < 0) and excess[0] > 0 > excess[-1]
@@ -295,7 +303,8 @@ def test_small_amplitude_agrees_with_the_j_integral_model_in_order_not_constant(
 
     W by mpmath quadrature. The J model is the paper's leading order for the nominal point contact,
     Eqs. (55), (123) (refined model at omega_check = infinity). Relative corrections are O(etahat) on
-    both sides; tolerance 10 etahat at etahat = 1e-4 and the order O(etahat^2) of w_eff - 1 itself."""
+    both sides; tolerance 10 etahat at etahat = 1e-4 and the order O(etahat^2) of w_eff - 1 itself.
+    """
     law = GentSchultz(n)
     etahat = 1e-4
     exact = nominal_point_contact(etahat * C_O**2, math.inf, CHI0, law)
@@ -315,7 +324,8 @@ def test_force_minimum_equals_brent_minimisation_of_the_mean_force(n: float) -> 
     """Reference: scipy's bounded Brent minimisation of Phat_m over z = ln abar_m to 1e-12 in z, started
     from the bracket [0.05 m, 20 m] of the docstring, per amplitude. The nested scans with their parabolic
     vertex agree to 1e-8 in the force and 1e-4 in abar_m (measured: 1.1e-9 and 2.4e-5), for etahat = 1e-4
-    (JKR limit), through 1 to 1e3 (alpha ~ beta), all amplitudes in one vectorised call."""
+    (JKR limit), through 1 to 1e3 (alpha ~ beta), all amplitudes in one vectorised call.
+    """
     law = GentSchultz(n)
     etahat = np.array([1e-4, 1e-2, 1.0, 30.0, 1e3])
     eta1 = etahat * contact_radius_ratio(CHI0) ** 2
@@ -332,7 +342,8 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
     """(i) a_m = a_cr(w_eff): abar_m^(3/2) = (3/4) alpha and ratio = alpha^2 (Eq. 71) to 1e-13;
     (ii) is the minimum of Phat_m over abar_m, so it is at least the value of (i), and neighbours at
     abar_m (1 +- 1e-3) are higher; both tend to the JKR value 1 as etahat -> 0 (JKR: a_cr = (9/16)^(1/3) a_o
-    with w = w0), to 1e-6 at etahat = 1e-4 (w_eff - 1 = O(etahat^2))."""
+    with w = w0), to 1e-6 at etahat = 1e-4 (w_eff - 1 = O(etahat^2)).
+    """
     law = GentSchultz(N_PUBLISHED)
     for h1 in (20e-6, 100e-6):
         eta1 = h1 / RADIUS
@@ -352,7 +363,8 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
 
 def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
     """deltabar0(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
-    (the defining equation of Sec. 3.5.4), to 1e-13; the scale helpers match their definitions."""
+    (the defining equation of Sec. 3.5.4), to 1e-13; the scale helpers match their definitions.
+    """
     law = GentSchultz(N_PUBLISHED)
     eta1 = 60e-6 / RADIUS
     sol = nominal_point_contact(eta1, 1e6, CHI0, law)
@@ -368,7 +380,8 @@ def test_exponential_nodes_integrate_a_kink_and_a_smooth_end_exactly(p: float, h
     """The distance variable d = half exp(-y/rate) of the drift quadrature: with rate = 1 + p the weights
     integrate the kink d^p over (0, half] to half^(p+1)/(p+1) (closed form), with rate 1 the smooth
     end d^0 to half. The integrand is e^-y times a polynomial of degree 0 in y on panels of width 2 with
-    >= 8 Gauss nodes (error < 1e-15 per panel) and the cut at y = 40 drops e^-40 = 4e-18: relative 1e-13."""
+    >= 8 Gauss nodes (error < 1e-15 per panel) and the cut at y = 40 drops e^-40 = 4e-18: relative 1e-13.
+    """
     for rate, power, exact in ((1.0 + p, p, half ** (p + 1) / (p + 1)), (1.0, 0.0, half)):
         d, log_w = _exponential_nodes(np.array([[half]]), rate)
         assert abs(float(np.sum(np.exp(log_w) * d**power)) / exact - 1) < 1e-13

@@ -27,18 +27,17 @@ from mpmath_reference import j_integrals_mp
 from scipy.integrate import quad
 from scipy.optimize import fsolve
 
-from vibroadhesion.models.compliant import CompliantFixation, residual
-from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.core.integrals import folded_rule
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.compliant import CompliantFixation, residual
 from vibroadhesion.models.exact_harmonic_balance import (
     _k_integrals,
     compliant_residual,
     exact_harmonics,
     rigid_fixation,
 )
-from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
-
 
 # ----------------------------------------------------------------- mpmath reference of the coefficients
 
@@ -46,7 +45,8 @@ from vibroadhesion.models.refined import nominal_point_contact as refined_nomina
 def harmonics_mp(abar_m: float, abar: float, epsilon: float, n: float) -> list[mp.mpf]:
     """[mean, cos, sin of deltabar; mean, cos, sin of Phat; mean sqrt(w/w0)] at 25 digits, from
     deltabar = r^2 - s sqrt(r), Phat = (4/3) r^3 - 2 s r^(3/2), r = abar_m + epsilon sin x,
-    s = sqrt(f(Abar cos x)) with the Gent–Schultz law f = 1 + |v|^n (v < 0), 1/(1 + v^n) (v > 0)."""
+    s = sqrt(f(Abar cos x)) with the Gent–Schultz law f = 1 + |v|^n (v < 0), 1/(1 + v^n) (v > 0).
+    """
     with mp.workdps(25):
         a, big_a, e, nn = mp.mpf(abar_m), mp.mpf(abar), mp.mpf(epsilon), mp.mpf(n)
 
@@ -90,7 +90,8 @@ COEFFICIENT_CASES = [  # (n, abar_m, Abar, epsilon): small and large Abar, epsil
 def test_exact_coefficients_match_mpmath_over_the_period(case: tuple[float, float, float, float]) -> None:
     """Reference: 25-digit mpmath quadrature of the definitions over tau' in (-pi, pi). Tolerance 1e-12
     relative (the J-integrals' rule is accurate to 1e-12); the mean indentation, a difference of two
-    O(abar_m^2) terms that nearly cancel at the nominal point, to 1e-13 abar_m^2 absolute."""
+    O(abar_m^2) terms that nearly cancel at the nominal point, to 1e-13 abar_m^2 absolute.
+    """
     n, abar_m, abar, epsilon = case
     got = exact_harmonics(abar_m, abar, epsilon, GentSchultz(n))
     ref = harmonics_mp(abar_m, abar, epsilon, n)
@@ -101,7 +102,8 @@ def test_exact_coefficients_match_mpmath_over_the_period(case: tuple[float, floa
 
 def test_invalid_amplitude_is_rejected_and_static_state_is_exact() -> None:
     """epsilon >= abar_m (A >= a_m) has no meaning for the ansatz: ValueError. Abar = epsilon = 0 is the
-    static JKR state: mean deltabar = abar_m^2 - sqrt(abar_m), harmonics 0, J0 = 1 (to rounding)."""
+    static JKR state: mean deltabar = abar_m^2 - sqrt(abar_m), harmonics 0, J0 = 1 (to rounding).
+    """
     law = GentSchultz(N_PUBLISHED)
     with pytest.raises(ValueError):
         exact_harmonics(1.0, 3.0, 1.0, law)
@@ -117,7 +119,8 @@ def test_invalid_amplitude_is_rejected_and_static_state_is_exact() -> None:
 
 def extra_integrals_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf]:
     """Jc3 = (2/pi) int_0^pi sqrt(f(Abar cos x)) cos 3x dx (Eq. 29, n = 3) and
-    Js4 = (1/pi) int_0^pi sqrt(f(Abar cos x)) sin^4 x dx, 25 digits."""
+    Js4 = (1/pi) int_0^pi sqrt(f(Abar cos x)) sin^4 x dx, 25 digits.
+    """
     with mp.workdps(25):
         big_a, nn = mp.mpf(abar), mp.mpf(n)
 
@@ -136,7 +139,8 @@ def test_linearisation_gives_the_printed_refined_coefficients_with_the_derived_c
     docstring (epsilon^2 for the means and cosine terms, epsilon^3 for the sine terms), must equal the
     exact coefficients rescaled by c_o^2 (deltabar -> delta/R) and c_o^3/kappa (Phat -> P/(kR)), up to
     the next order: epsilon^4 relative. Checked at epsilon = 1e-2 and 2e-2 (omega_bar fixed, nu0
-    chosen), tolerance 2 epsilon^4; the corrections alone are larger than 1e-3 epsilon^2 (not vacuous)."""
+    chosen), tolerance 2 epsilon^4; the corrections alone are larger than 1e-3 epsilon^2 (not vacuous).
+    """
     abar_m, abar, kappa, omega_bar = 1.2, 3.0, 1e-3, 20.0
     j0, jc1, j1 = (mp.mpf(v) for v in j_integrals_mp(abar, n))
     jc3, js4 = extra_integrals_mp(abar, n)
@@ -178,7 +182,8 @@ def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() 
     """Reference: vibroadhesion.models.compliant.residual (Eqs. 87, 90–96), the linearised system. At fixed
     (omega_bar, abar_m, Abar), epsilon = nu0 Abar/(omega_bar c_o) -> 0 with nu0: the difference of both
     columns divided by epsilon^2 must converge (change below 1e-3 relative from nu0 = 1e-5 to 1e-6) and
-    the difference be below 1e-6 at nu0 = 1e-6."""
+    the difference be below 1e-6 at nu0 = 1e-6.
+    """
     law = GentSchultz(N_PUBLISHED)
     x = np.log(np.array([[3.0, 1.2, 20.0], [0.5, 1.0, 2.0]]))
     scaled = []
@@ -193,7 +198,8 @@ def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() 
 
 def test_compliant_mean_balance_reduces_to_the_rigid_and_static_cases() -> None:
     """kappa -> infinity: column 0 becomes the rigid mean equation (mean deltabar - deltabar0)/K0[sqrt]
-    (Eq. 56 generalised), up to O(c_o/kappa); checked with kappa = 1e12 against exact_harmonics, to 1e-10."""
+    (Eq. 56 generalised), up to O(c_o/kappa); checked with kappa = 1e12 against exact_harmonics, to 1e-10.
+    """
     law = GentSchultz(N_PUBLISHED)
     p = CompliantFixation(CHI0, ETA1, 1e-5, kappa=1e12, mu=0.0, zeta=0.0)
     x = np.log(np.array([[3.0, 1.2, 20.0]]))
@@ -221,7 +227,8 @@ RIGID_CASES = [  # (n, h1 in m, omega_check, deltabar0)
 def test_rigid_solution_satisfies_both_equations_in_mpmath(case: tuple[float, float, float, float]) -> None:
     """Reference: the mpmath coefficients (25 digits) at the returned (abar_m, Abar): mean deltabar =
     deltabar0 to 1e-12 abar_m^2 and sqrt(deltabar_c^2 + deltabar_s^2) = etahat to 1e-11 relative; the
-    returned w_eff/w0 = J0^2, A/a_m = epsilon/abar_m and P_m/|P_JKR| = mean Phat/(3/4) match them."""
+    returned w_eff/w0 = J0^2, A/a_m = epsilon/abar_m and P_m/|P_JKR| = mean Phat/(3/4) match them.
+    """
     n, h1, omega_check, deltabar0 = case
     sol = rigid_fixation(h1 / RADIUS, omega_check, CHI0, GentSchultz(n), deltabar0)
     epsilon = sol.abar / (omega_check * C_O)
@@ -236,7 +243,8 @@ def test_rigid_solution_satisfies_both_equations_in_mpmath(case: tuple[float, fl
 
 def test_zero_amplitude_is_the_static_nominal_point_contact() -> None:
     """eta1 = 0: Abar = 0, abar_m = 1 (a = a_o, Eq. 86), w_eff = w0 and P_m = -(2/3) E* a_o^3/R, i.e.
-    P_m/|P_JKR| = -8/9 (to rounding)."""
+    P_m/|P_JKR| = -8/9 (to rounding).
+    """
     sol = rigid_fixation(0.0, 1e5, CHI0, GentSchultz(N_PUBLISHED))
     assert sol.abar == 0.0 and abs(sol.abar_m - 1) < 1e-14 and sol.w_eff_ratio == 1.0 and sol.a_over_am == 0.0
     assert abs(sol.mean_force_ratio + 8 / 9) < 1e-14
@@ -244,7 +252,8 @@ def test_zero_amplitude_is_the_static_nominal_point_contact() -> None:
 
 def test_no_single_harmonic_state_is_reported_not_returned() -> None:
     """h1 = 100 um at omega_check = 1e4 (refined model: A/a_m = 1.5, geometrically impossible): the
-    mean equation loses its stable root before the base amplitude is reached: NoSteadyStateError."""
+    mean equation loses its stable root before the base amplitude is reached: NoSteadyStateError.
+    """
     with pytest.raises(NoSteadyStateError):
         rigid_fixation(100e-6 / RADIUS, 1e4, CHI0, GentSchultz(N_PUBLISHED))
 
@@ -254,7 +263,8 @@ def _amplitude_along_stable_branch(
 ) -> list[tuple[float, float]]:
     """(A/a_m, sqrt(deltabar_c^2 + deltabar_s^2)) along the larger root of mean deltabar = 0, located on a
     grid of 400 radii by linear interpolation (independent of the solver's Brent iteration); stops
-    where the mean equation has no root above epsilon."""
+    where the mean equation has no root above epsilon.
+    """
     out = []
     for abar in abar_grid:
         epsilon = abar / (omega_check * C_O)
@@ -274,7 +284,8 @@ def test_amplitude_along_the_branch_and_the_choice_of_the_smaller_root() -> None
     """At omega_check = 1e4 (h1 = 20 um scale) the amplitude rises monotonically with Abar up to the edge of
     the ansatz's domain: one root. At omega_check = 1e3 it peaks near A/a_m = 0.75 and falls before the
     edge: for etahat between the edge value and the peak there are two roots, and the solver must return
-    the smaller one (A/a_m below the peak's), whose amplitude and mean equation it satisfies."""
+    the smaller one (A/a_m below the peak's), whose amplitude and mean equation it satisfies.
+    """
     law = GentSchultz(N_PUBLISHED)
     rising = _amplitude_along_stable_branch(1e4, np.geomspace(0.01, 300.0, 60), law)
     assert len(rising) > 20 and np.all(np.diff([v for _, v in rising]) > 0)
@@ -300,7 +311,8 @@ def test_small_base_amplitude_limit_against_the_refined_model(n: float) -> None:
 
     Tolerances (the limits are approached at rates set by the share of the other harmonic; epsilon^2 must
     stay above the rounding of abar_m): n = 0.531, omega_check = 30, eta1 = 3e-7 (epsilon = 2e-5): 1e-5 on the
-    first, 3e-3 on the second; n = 2, omega_check = 3, eta1 = 1e-7 (epsilon = 3e-4): 1e-5 on both."""
+    first, 3e-3 on the second; n = 2, omega_check = 3, eta1 = 1e-7 (epsilon = 3e-4): 1e-5 on both.
+    """
     omega_check, eta1, tolerances = (30.0, 3e-7, (1e-5, 3e-3)) if n < 1 else (3.0, 1e-7, (1e-5, 1e-5))
     law = GentSchultz(n)
     exact = rigid_fixation(eta1, omega_check, CHI0, law)
@@ -313,7 +325,8 @@ def test_small_base_amplitude_limit_against_the_refined_model(n: float) -> None:
 
 def _j_integrals_scipy(abar: float, n: float) -> tuple[float, float, float, float]:
     """J0, Jc1, J1 (Eqs. 28, 29, 36) and Jc3 (Eq. 29) by QUADPACK, split at pi/2: relative 1e-12, or
-    absolute 1e-13 sqrt(1 + Abar^n) (the size of the integrand) where that is larger (Jc3 may be small)."""
+    absolute 1e-13 sqrt(1 + Abar^n) (the size of the integrand) where that is larger (Jc3 may be small).
+    """
 
     def sqrt_f(x: float) -> float:
         v = abar * math.cos(x)
@@ -336,7 +349,8 @@ def high_frequency_expansion(
         (sqrt(abar_m) Jc1 - epsilon^2 (Jc1 - Jc3)/(32 abar_m^(3/2)))^2
             + (2 abar_m epsilon (1 - J1/(4 abar_m^(3/2))))^2 = etahat^2,
 
-    solved by fsolve in logarithms with the QUADPACK J-integrals."""
+    solved by fsolve in logarithms with the QUADPACK J-integrals.
+    """
     etahat = eta1 / C_O**2
 
     def equations(z: np.ndarray) -> list[float]:
@@ -358,7 +372,8 @@ def test_high_frequency_limit_is_the_leading_order_plus_epsilon_squared_terms(ca
     """omega_check -> infinity: the exact balance tends to the leading order (Eqs. 55, 123: refined model at
     omega_check = infinity) with an O(epsilon^2) difference, and to the O(epsilon^2)-expanded system
     (solved independently) with an O(epsilon^4) difference. Tolerances: |exact/expanded - 1| < epsilon^4
-    (measured coefficients 0.09 and 0.005) for Abar and abar_m; |exact/leading - 1| > 0.01 epsilon^2."""
+    (measured coefficients 0.09 and 0.005) for Abar and abar_m; |exact/leading - 1| > 0.01 epsilon^2.
+    """
     n, h1, omega_check = case
     law = GentSchultz(n)
     exact = rigid_fixation(h1 / RADIUS, omega_check, CHI0, law)
@@ -373,7 +388,8 @@ def test_high_frequency_limit_is_the_leading_order_plus_epsilon_squared_terms(ca
 def test_k_integrals_of_constants_are_the_closed_form_quarter_period_integrals() -> None:
     """S = D = 1, g+ = g- = 1 (g_sum = 2, g_diff = 0) and g_diff = 1: K0 = (1/2pi) int_0^(pi/2) 2 dt = 1/2,
     Kc = (1/pi) int_0^(pi/2) 2 sin t dt = 2/pi, Ks = 0 and (1/pi) int_0^(pi/2) cos t dt = 1/pi. The folded
-    rule integrates these smooth functions to rounding: 1e-14."""
+    rule integrates these smooth functions to rounding: 1e-14.
+    """
     t, _, weights = folded_rule()
     ones = np.ones((1, t.size))
     for g_diff, ks in ((0.0, 0.0), (1.0, 1 / math.pi)):

@@ -55,7 +55,8 @@ def test_leading_fit_recovers_true_w0_n_from_noise_free_rows_to_1e6() -> None:
 
 def test_refined_fit_recovers_true_w0_n_v0_from_noise_free_low_frequency_rows_to_1e6() -> None:
     """Reference: w0 = 0.30, n = 0.70, v0 = 20 um/s; rows at 0.2, 1, 5 Hz where omega_check = 3e3..8e4 and the
-    frequency term of Eq. (106) changes the force by up to 50 %, so v0 is identifiable; 1e-6 relative."""
+    frequency term of Eq. (106) changes the force by up to 50 %, so v0 is identifiable; 1e-6 relative.
+    """
     rows = _rows([0.2, 1.0, 5.0], "refined")
     lead = predict_pulloff("leading", TRUE, rows["frequency_hz"], rows["h1_um"], **GEOMETRY).pulloff_mN
     assert np.max(np.abs(rows["pulloff_mN"] / lead - 1)) > 0.1  # v0 matters for these rows
@@ -87,14 +88,16 @@ def _coverage(relative: bool) -> tuple[dict[str, int], dict[str, list[float]]]:
 def test_leading_fit_standard_errors_cover_truth_in_15_of_20_noisy_fits() -> None:
     """Reference: the true (w0, n). With 1 % Gaussian relative noise (seeds 0..19) the true value must lie
     within 2 reported standard errors in >= 15 of 20 fits for each parameter (nominal coverage ~93 % for
-    t with 13 degrees of freedom; 15/20 then fails with probability ~1.5 %)."""
+    t with 13 degrees of freedom; 15/20 then fails with probability ~1.5 %).
+    """
     hits, z_scores = _coverage(relative=True)
     assert all(h >= 15 for h in hits.values()), f"coverage {hits} of 20; z-scores {z_scores}"
 
 
 def test_refined_fit_on_one_frequency_keeps_published_v0() -> None:
     """With one frequency v0 cannot be separated from w0, n (Sec. 3.4 / fitting docstring): v0_identifiable is
-    False, a note says why, and v0 is the published value exactly."""
+    False, a note says why, and v0 is the published value exactly.
+    """
     rows = _rows([300], "refined")
     summary = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
     assert summary["v0_identifiable"] is False

@@ -220,7 +220,8 @@ def test_contact_loss_below_omega_check_1e5(pipeline_results: Path) -> None:
 
 def test_upper_fold_of_the_simulation_and_of_the_refined_model(pipeline_results: Path) -> None:
     """Simulation: the last omega_bar of the upward sweep before its largest drop in Abar. Refined: the upper
-    fold of Fig. 5's curve for the sweep's kappa = 0.001, zeta = 0.01."""
+    fold of Fig. 5's curve for the sweep's kappa = 0.001, zeta = 0.01.
+    """
     up = sweep_simulation(pipeline_results).query("direction == 'up'").sort_values("omega_bar")
     drop = np.argmin(np.diff(np.log(up["Abar"].to_numpy(float))))
     markers = read(pipeline_results, "fig5_markers")
@@ -350,7 +351,8 @@ def test_frequency_dependence_of_the_simulated_pulloff(pipeline_results: Path) -
 
 def test_v0_sensitivity_against_the_frequency_derivative(pipeline_results: Path) -> None:
     """d ln P/d ln v0 = -d ln P/d ln omega (v0 enters only through omega R/v0, Eq. 105): the sensitivity
-    column at 300 Hz against the derivative of the parabola in ln f through the simulated 200/300/400 Hz rows."""
+    column at 300 Hz against the derivative of the parabola in ln f through the simulated 200/300/400 Hz rows.
+    """
     force = simulated_pulloffs(pipeline_results, "rigid").pivot(index="h1_um", columns="frequency_hz",
                                                                   values="pulloff_mN").loc[60:]
     log_f = np.log(force.columns.to_numpy(float))

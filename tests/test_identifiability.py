@@ -35,7 +35,8 @@ def _simulated(params: GentSchultzParameters, frequencies, h1_um) -> pd.DataFram
 
 def test_log_sensitivity_of_a_power_law_is_its_exponents() -> None:
     """P = w0^0.3 n^1.7 v0^-0.2 (times a per-row constant): ln P is linear in ln theta, so central
-    differences are exact: 1e-12."""
+    differences are exact: 1e-12.
+    """
     exponents = {"w0": 0.3, "n": 1.7, "v0": -0.2}
     key = pd.DataFrame({"frequency_hz": [200.0, 400.0], "h1_um": [20.0, 100.0], "status": "pulloff"})
     constant = np.array([150.0, 1400.0])
@@ -53,7 +54,8 @@ def test_log_sensitivity_of_a_power_law_is_its_exponents() -> None:
 
 def test_cramer_rao_errors_of_explicit_designs() -> None:
     """S = diag(1, 2, 4): standard errors sigma (1, 1/2, 1/4), no correlation; with the static JKR
-    row (1, 0, 0) appended, the w0 error drops to sigma/sqrt(2). Exact to 1e-14."""
+    row (1, 0, 0) appended, the w0 error drops to sigma/sqrt(2). Exact to 1e-14.
+    """
     sensitivity = pd.DataFrame({"dlnP_dlnw0": [1.0, 0, 0], "dlnP_dlnn": [0, 2.0, 0], "dlnP_dlnv0": [0, 0, 4.0]})
     table = identifiability.information_table(sensitivity, [0.01]).set_index("design")
     alone, static = table.loc["virtual experiment"], table.loc["virtual experiment + static JKR pull-off"]
@@ -75,7 +77,8 @@ def test_failed_sensitivity_run_is_an_error_not_a_number() -> None:
 def test_simulated_v0_sensitivity_equals_minus_the_frequency_derivative() -> None:
     """h1 = 80, 100 um: d ln P/d ln v0 by central differences of the simulation at 300 Hz against
     -d ln P/d ln omega from the parabola through the simulated 200/300/400 Hz rows (v0 enters only via
-    omega R/v0). Both are O(h^2) / interpolation estimates of the same derivative: 5 %."""
+    omega R/v0). Both are O(h^2) / interpolation estimates of the same derivative: 5 %.
+    """
     h1 = [80.0, 100.0]
     base = _simulated(PUBLISHED, FREQUENCIES_HZ, h1)
     at_300 = base[base["frequency_hz"] == 300.0]
@@ -92,7 +95,8 @@ def test_exact_averaging_fit_recovers_simulation_parameters_within_its_model_err
     simulated pull-off equals the exact-averaging force minimum to its own accuracy. The fit of that
     level must land within twice the first-order bias its measured model error e implies,
     |d ln theta_j| <= sum_i |pinv(J)_ji| max|e_i| (J = d residual/d ln theta at the truth), and that
-    bound must itself be small (< 1 %), so the test can fail."""
+    bound must itself be small (< 1 %), so the test can fail.
+    """
     truth = GentSchultzParameters(w0=W0, n=N_PUBLISHED, v0=2 * math.pi * 200.0 * RADIUS / 1e9)
     rows = _simulated(truth, [200.0], [20.0, 60.0, 100.0])
     model = "exact_averaging_force_minimum"
@@ -118,7 +122,8 @@ def test_exact_averaging_fit_recovers_simulation_parameters_within_its_model_err
 
 def test_refined_fit_of_simulated_rows_says_v0_is_not_identifiable() -> None:
     """Simulated rows at 200/300/400 Hz, h1 = 60, 100 um: the frequency effect (up to 10 %) is real but
-    the refined model cannot resolve v0 from it; the fit says so and keeps the start value of v0."""
+    the refined model cannot resolve v0 from it; the fit says so and keeps the start value of v0.
+    """
     rows = _simulated(PUBLISHED, FREQUENCIES_HZ, [60.0, 100.0])
     fit = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
     assert fit["v0_identifiable"] is False
@@ -128,7 +133,8 @@ def test_refined_fit_of_simulated_rows_says_v0_is_not_identifiable() -> None:
 
 def test_recommendation_picks_the_smallest_misfit_and_trusts_only_unbiased_parameters() -> None:
     """Synthetic tables: level B misfits least; its w0 bias (1 %) is inside the 4 % Cramer-Rao error, its n bias
-    (-80 %) is not; v0 (SE 80 %) is not identifiable. A failed level is never recommended."""
+    (-80 %) is not; v0 (SE 80 %) is not identifiable. A failed level is never recommended.
+    """
     nan = math.nan
     fits = pd.DataFrame([
         {"model": "A", "status": "fitted", "rms_relative_residual": 0.20, "max_relative_residual": 0.3,

@@ -189,7 +189,8 @@ def test_abar_zero_gives_exactly_one_zero_one() -> None:
 def test_documented_1e12_accuracy_holds_near_abar_2(n: float) -> None:
     """Reference: 30-digit mpmath. The module docstring of ``integrals`` promises relative error
     below 1e-13 for Abar in [0, 1e12] and n in [0.05, 4]; probe the hardest region found (n = 4,
-    Abar ~ 2, where the integrand's analyticity strip |Im y| < pi/n is narrowest)."""
+    Abar ~ 2, where the integrand's analyticity strip |Im y| < pi/n is narrowest).
+    """
     abar = np.array([1.7, 1.9, 1.95, 2.1, 2.15])
     values = j_integrals(abar, n)
     errs = [max(_errors(float(values[k][i]), j_integrals_mp(float(a), n)[k]) for k in range(3))
@@ -287,7 +288,8 @@ def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
 def test_large_abar_asymptote_relative_error_vanishes(n: float) -> None:
     """Reference: 30-digit mpmath values. Relative error of the asymptote decreases with Abar
     (it is O(Abar^{-n/2}) by the bounds above) until it reaches double rounding (1e-15), and is
-    < 1e-3 at Abar = 1e12 for n >= 1."""
+    < 1e-3 at Abar = 1e12 for n >= 1.
+    """
     abar = [1e2, 1e4, 1e6, 1e8, 1e10, 1e12]
     rel = np.empty((len(abar), 3))
     for i, a in enumerate(abar):

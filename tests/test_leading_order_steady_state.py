@@ -31,6 +31,7 @@ from conftest import CHI0, ETA1, N_PUBLISHED
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core.integrals import j_integrals
+from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.models.leading_order import (
     SCAN_STEP,
@@ -47,7 +48,6 @@ from vibroadhesion.models.leading_order import (
     steady_states,
 )
 from vibroadhesion.models.leading_pulloff import critical_abars, critical_log_excess, pulloff_leading
-from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -69,7 +69,8 @@ def thirty_digits():
 def assert_reference_root_within(residual, mean_radius, sol, rel: float = 1e-9) -> None:
     """The reference equation, reduced to one equation in Abar, changes sign between Abar (1 -+ rel):
     its root is within ``rel`` of the returned Abar. The reference a_m/a_o at those two points (a
-    smooth function of Abar) brackets the returned abar_m, with the same slack."""
+    smooth function of Abar) brackets the returned abar_m, with the same slack.
+    """
     ends = [sol.abar * (1 - rel), sol.abar * (1 + rel)]
     lo, hi = (residual(a) for a in ends)
     assert lo * hi < 0, (sol, float(lo), float(hi))
@@ -88,7 +89,8 @@ def test_rigid_limit_equals_eqs_55_56_to_1e9(n: float, base_offset: float) -> No
     with the rigid one to 1e-10: the O(1/kappa) terms are ~1e-12 (mu/kappa, 2 c_o abar_m/|d|). For base_offset >= 0 the root is
     unique (proof in steady_states' docstring); the tensile offset -0.2 also has one (no unstable branch
     above abar_min, unlike the static case: vibration lifts deltabar_m near abar_m = 0). n = 0.05 (Abar ~ 1e35,
-    slow in mpmath) and base_offset = 0 are covered by the nominal-point-contact test below."""
+    slow in mpmath) and base_offset = 0 are covered by the nominal-point-contact test below.
+    """
     law = GentSchultz(n)
 
     def mean_radius(abar: float) -> mp.mpf:
@@ -117,7 +119,8 @@ def test_free_indenter_equals_eqs_57_59_to_1e9(n: float, beta: float) -> None:
     (m g >= 0), and |Xi_c| = m omega^2 h1 (Eq. 57, Eq. 58 corrected: Jc1 outside the root, as Eq. 50 at
     k = 0) is then one equation in Abar. Tolerance 1e-9. beta = 0.3 puts the contact resonance at
     abar_m = 9.56, with two more roots next to it (counted independently in the next test). P_m = m g:
-    P_m/|P_JKR| = mu/((3/4)(a_o/R)^3) to 1e-10 (cancellation in Eq. 52)."""
+    P_m/|P_JKR| = mu/((3/4)(a_o/R)^3) to 1e-10 (cancellation in Eq. 52).
+    """
 
     def mean_radius(abar: float) -> mp.mpf:
         b = mp.sqrt(8 * mp.pi * W0) * j_integrals_mp(abar, n)[0]
@@ -141,7 +144,8 @@ def count_roots_along_abar(fixation_case: tuple[float, float, float], mu: float,
     one abar_m (one sign change in its coefficients for mu >= 0, Descartes; bisection in abar_m^(1/2)),
     and the sign changes of Eq. (43) with Eqs. (50)-(51) along that curve are the solutions. The grid
     runs from Abar = e^-25 (Jc1 ~ 0: Eq. 43 negative) to where abar_m is far above any contact
-    resonance (Eq. 43 positive). ``fixation_case`` = (k, m omega^2, c omega) / (E* R)."""
+    resonance (Eq. 43 positive). ``fixation_case`` = (k, m omega^2, c omega) / (E* R).
+    """
     k, m_omega2, c_omega = fixation_case
     chi = CHI0
     abar = np.exp(np.arange(-25.0, 50.0 if n < 1 else 12.0, 0.002))
@@ -184,7 +188,8 @@ def test_number_of_roots_equals_independent_count_along_abar(n, fixation, case, 
     each returned Abar lies in a grid cell where the count found a sign change (cell width 0.2 %),
     and stability alternates from the largest root (stable) down. Cases: undamped above the fixation
     resonance (contact resonance at abar_m = 9.56, two extra roots), the same damped (no pole), free
-    indenters with beta = 1 and 0.3 (poles at abar_m = 31.9 and 9.56), and a damped case below resonance."""
+    indenters with beta = 1 and 0.3 (poles at abar_m = 31.9 and 9.56), and a damped case below resonance.
+    """
     assert complex(fixation.dynamic_stiffness) == pytest.approx(complex(case[0] - case[1], case[2]), rel=1e-14)
     sols = steady_states(ETA1, fixation, CHI0, GentSchultz(n), mu=mu)
     count, cells = count_roots_along_abar(case, mu, n)
@@ -206,7 +211,8 @@ def test_compliant_roots_satisfy_printed_eq_87_and_eq_43_with_eqs_50_51(kappa, o
     30-digit J's at each returned Abar. Tolerance 1e-13 C on Eq. (87) relative to its largest term and on
     Eq. (43) relative, with C = 1 + K/|d + K|, K = 2 E* a_m: a relative error e of abar_m (~1e-15 from
     the root polish) moves |d + K|, hence the target of Eq. (43), Abar and J0, by ~C e. C = 58 and 64 at
-    the two roots next to the contact resonance (kappa = 0.1, omega_bar = 2, zeta = 0)."""
+    the two roots next to the contact resonance (kappa = 0.1, omega_bar = 2, zeta = 0).
+    """
     n = 0.531
     fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
     d = mp.mpc(complex(fixation.dynamic_stiffness))
@@ -230,7 +236,8 @@ def printed_eq_87_terms(abar_m: float, j0: mp.mpf, kappa: float, mu: float) -> l
 def printed_eq_43_ratio(abar_m: float, jc1: mp.mpf, kappa: float, omega_bar: float, zeta: float) -> mp.mpf:
     """Xi_c^2 + Xi_s^2 over [(k - m omega^2)^2 + c^2 omega^2] h1^2: Eq. (43) with Eqs. (50)-(51) (E* = R = 1),
     1 on a solution, for the spring-mass-dashpot k = kappa, m omega^2 = kappa omega_bar^2, c omega = 2 zeta kappa
-    omega_bar (Eqs. 65-66)."""
+    omega_bar (Eqs. 65-66).
+    """
     a_m = mp.mpf(abar_m) * A_O
     k, m_omega2, c_omega = mp.mpf(kappa), mp.mpf(kappa) * omega_bar**2, 2 * zeta * mp.mpf(kappa) * omega_bar
     xi_c = -mp.sqrt(2 * mp.pi * W0 * a_m) * (k - m_omega2) * jc1 - mp.sqrt(8 * mp.pi * W0 * a_m**3) * jc1
@@ -246,7 +253,8 @@ def eq82_roots(kappa: float, load_group: mp.mpf) -> list[tuple[float, bool]]:
     """Positive roots a_0/a_o of Eq. (82) with mu replaced by the load group lambda = mu + kappa (hhat - h0)/R,
     in s = (a_0/R)^(1/2):
     (4/3) s^6 + kappa s^4 - (2 sqrt2/3) chi0^(3/2) s^3 - (sqrt2/3) chi0^(3/2) kappa s - lambda = 0,
-    each with the JKR stability under the spring (the polynomial increasing through the root)."""
+    each with the JKR stability under the spring (the polynomial increasing through the root).
+    """
     c = mp.sqrt(2) / 3 * mp.mpf(CHI0) ** 1.5
     coefficients = [mp.mpf(4) / 3, 0, kappa, -2 * c, 0, -c * kappa, -load_group]
     slope = [6 * coefficients[0], 0, 4 * kappa, -6 * c, 0, -c * kappa]  # d/ds, descending powers
@@ -265,7 +273,8 @@ STATIC_CASES = [(0.01, 0.0, 0.0), (0.1, MU_SMALL, 0.0), (0.01, MU_SMALL, -0.3), 
 def test_static_limit_eta1_to_zero_equals_eq_82(kappa: float, mu: float, base_offset: float) -> None:
     """Reference: Eq. (82) (mu -> lambda) by polyroots. eta1 = 0 gives J0 = 1 exactly; eta1 = 1e-12 moves
     J0 by ~(eta1/c_o^2)^2 ~ 1e-17. Tolerance 1e-12 on every root, same count, same stability (tensile
-    cases: JKR's unstable small root and stable large one)."""
+    cases: JKR's unstable small root and stable large one).
+    """
     load = mu + kappa * base_offset * A_O**2
     reference = eq82_roots(kappa, load)
     for eta1 in (0.0, 1e-12):
@@ -281,7 +290,8 @@ def test_static_limit_eta1_to_zero_equals_eq_82(kappa: float, mu: float, base_of
 def test_anti_resonance_of_appendix_b_gives_abar_zero_and_the_static_state(kappa, mu, base_offset) -> None:
     """Appendix B: at omega_bar = 1, zeta = 0 the fixation's dynamic stiffness vanishes (d = 0), the
     right-hand side of Eq. (43) is zero, so Jc1 = 0: Abar = 0 and J0 = 1 exactly, at any eta1, and the
-    mean state is the static one of Eq. (82) (reference as above, 1e-12)."""
+    mean state is the static one of Eq. (82) (reference as above, 1e-12).
+    """
     fixation = Fixation.spring_mass_dashpot(kappa, 1.0, 0.0)
     assert complex(fixation.dynamic_stiffness) == 0 and fixation_transmissibility(1.0, fixation, CHI0) == 0.0
     sols = steady_states(ETA1, fixation, CHI0, GentSchultz(0.531), mu=mu, base_offset=base_offset)
@@ -298,7 +308,8 @@ def test_two_roots_inside_one_scan_cell_next_to_the_fold_are_both_found(kappa: f
     JKR contact): the two roots of Eq. (82) (mu -> lambda) lie within 2 % of each other, inside one
     5 % cell of the scan, with no sign change at the nodes. Reference: the fold s* from the polynomial's
     derivative (findroot), lambda = lambda_fold + p''(s*)/2 (0.004 s*)^2, roots by polyroots. Both roots
-    must be returned, to 1e-10 (they are conditioned like 1/sqrt(lambda - lambda_fold))."""
+    must be returned, to 1e-10 (they are conditioned like 1/sqrt(lambda - lambda_fold)).
+    """
     c = mp.sqrt(2) / 3 * mp.mpf(CHI0) ** 1.5
 
     def p(s, load=0):
@@ -323,7 +334,8 @@ def test_rigid_nominal_point_contact_is_abar_m_cubed_half_equal_j0_and_matches_r
     """h0 = hhat, mu = 0, rigid: Eq. (56) with hhat - h0 = 0 is abar_m^(3/2) = J0 (Eqs. 99, 123), checked
     with the 30-digit J0 to 1e-12; and the refined model's nominal point contact at omega_check = inf
     (which then reduces to Eqs. 55, 99) gives the same Abar and abar_m to 1e-10. A/a_m follows Eq. (45)
-    with Eq. (86), A/a_m = Abar / (omega_check abar_m a_o/R) (docs/errata.md E1), to 1e-13."""
+    with Eq. (86), A/a_m = Abar / (omega_check abar_m a_o/R) (docs/errata.md E1), to 1e-13.
+    """
     law = GentSchultz(n)
     (sol,) = steady_states(ETA1, Fixation.rigid(), CHI0, law, omega_check=1e6)
     assert abs(sol.abar_m**1.5 / float(j_integrals_mp(sol.abar, n)[0]) - 1) < 1e-12
@@ -341,7 +353,8 @@ def test_amplitude_equation_at_a_cr_reproduces_eqs_67_69_and_72(kappa: float, om
     """With abar_m = a_cr/a_o = (9/16)^(1/3) J0^(2/3) (Eqs. 61, 86), (|delta_c|/R / transmissibility)^2 of the
     amplitude equation must equal the printed (xi_c^2 + xi_s^2)/((1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2)
     of Eqs. (67)-(69), and |delta_c|/R the printed (chi0^2/3) J0^(1/3) |Jc1| of Eq. (72) (rigid). Same
-    30-digit J's on both sides: an identity, tolerance 1e-13."""
+    30-digit J's on both sides: an identity, tolerance 1e-13.
+    """
     n = 0.531
     fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
     chi = mp.mpf(CHI0)
@@ -371,7 +384,8 @@ def test_critical_log_excess_is_half_the_log_of_printed_eq_67(kappa: float, omeg
     """critical_log_excess(ln Abar) is (IV) in logarithms: half ln of the printed Eq. (67) (Eqs. 68-69) over eta1^2,
     with 30-digit J's on the printed side, from Abar = 0.01 to 1e7; for a rigid fixation ln of Eq. (72)'s left-hand
     side over 3 eta1/chi0^2. Tolerance 1e-12 absolute in the logarithm: the J-integral quadrature agrees with
-    mpmath to 1e-12 relative (test_integrals)."""
+    mpmath to 1e-12 relative (test_integrals).
+    """
     n = 0.531
     law = GentSchultz(n)
     fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
@@ -392,7 +406,8 @@ def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, om
     which test_integrals checks against mpmath to 1e-12). Above the fixation's resonance a pair of roots
     sits at the contact resonance: Abar ~ 3e7 for omega_bar = 17.85, kappa = 0.001 (the rig of Sec. 3.5.3 with
     the assumed spring), Abar = 2.9e3 and 2.5e4 for omega_bar = 3, kappa = 0.01 (pull-off root 604); the
-    pull-off is the smallest root."""
+    pull-off is the smallest root.
+    """
     n = 0.531
     fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
     roots = critical_abars(ETA1, fixation, CHI0, GentSchultz(n))
@@ -414,7 +429,8 @@ def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, om
 def test_fixation_pulloff_is_eq_72_for_rigid_and_tends_to_it_for_a_stiff_or_a_heavy_fixation(n: float) -> None:
     """Fixation.rigid() is Eq. (72) exactly (the same solver). A very stiff spring (kappa = 1e9, omega_bar = 0.5) and
     a mass far above its resonance (kappa = 1e-3, omega_bar = 1e6, |d| = 1e9 kappa) give the transmissibility
-    |d|/|d + chi0 J0^(2/3)| = 1 + O(1e-10): Abar_cr within 1e-8 of Eq. (72), through the scan of Eqs. (67)-(69)."""
+    |d|/|d + chi0 J0^(2/3)| = 1 + O(1e-10): Abar_cr within 1e-8 of Eq. (72), through the scan of Eqs. (67)-(69).
+    """
     law = GentSchultz(n)
     rigid = pulloff_leading(ETA1, CHI0, law)
     assert pulloff_leading(ETA1, CHI0, law, Fixation.rigid()) == rigid
@@ -424,7 +440,8 @@ def test_fixation_pulloff_is_eq_72_for_rigid_and_tends_to_it_for_a_stiff_or_a_he
 
 def test_fixation_pulloff_at_the_anti_resonance_is_the_static_jkr_pulloff() -> None:
     """zeta = 0, omega_bar = 1: d = 0, the contact spring is not deformed (Appendix B), Abar_cr = 0 and
-    P_cr/P_JKR = J0(0)^2 = 1 exactly."""
+    P_cr/P_JKR = J0(0)^2 = 1 exactly.
+    """
     estimate = pulloff_leading(ETA1, CHI0, GentSchultz(0.531), Fixation.spring_mass_dashpot(1e-3, 1.0, 0.0))
     assert float(estimate.abar_cr) == 0.0 and float(estimate.ratio) == 1.0
 
@@ -436,7 +453,8 @@ def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check
     """The refined compliant pull-off (Eq. 90 at a_m = a_cr, compliant.pulloff_by_scan) differs from Eqs. (67)-(69)
     by the terms of Eqs. (94), (96) in Abar nu0/omega_bar = Abar/omega_check. With nu0 = 1e-12 (omega_check ~ 1e12
     at fixed omega_bar) and at omega_bar = 1e4 with the rig's nu0: the same roots, the smallest (the pull-off,
-    Abar ~ 50) to 1e-10, those at the contact resonance (Abar ~ 3e7, so Abar/omega_check ~ 1e-6) to 1e-4."""
+    Abar ~ 50) to 1e-10, those at the contact resonance (Abar ~ 3e7, so Abar/omega_check ~ 1e-6) to 1e-4.
+    """
     law = GentSchultz(0.531)
     leading = critical_abars(ETA1, Fixation.spring_mass_dashpot(kappa, omega_bar, zeta), CHI0, law)
     refined = [abar for _, abar in pulloff_by_scan(omega_bar, CompliantFixation(CHI0, ETA1, nu0, kappa, 0.0, zeta), law,
@@ -448,7 +466,8 @@ def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check
 
 def test_mean_balance_residual_is_eq_87_and_eq_82_term_by_term() -> None:
     """h0 = hhat: the residual equals Eq. (87) (printed coefficients) exactly, and c_o^2 times it at
-    J0 = 1 is Eq. (82) at a/R = c_o abar_m; relative 1e-13 of the largest term, at random points."""
+    J0 = 1 is Eq. (82) at a/R = c_o abar_m; relative 1e-13 of the largest term, at random points.
+    """
     rng = np.random.default_rng(1)
     chi = CHI0
     for abar_m, j0, kappa, mu in zip(rng.uniform(0.2, 3, 20), rng.uniform(1, 5, 20), rng.uniform(0, 1, 20),
@@ -472,7 +491,8 @@ def test_mean_balance_residual_is_eq_87_and_eq_82_term_by_term() -> None:
 def test_residual_increases_beyond_the_tail_criterion(n: float) -> None:
     """The proof in steady_states' docstring: once abar_m > max(0, -Re d/(2 c_o)) and
     abar_m^(3/2) >= (3/4) J0, the mean-balance residual along the amplitude equation increases strictly
-    (here with mu and a base offset). Sampled on 150 points in steps of 5 % from the first such point."""
+    (here with mu and a base offset). Sampled on 150 points in steps of 5 % from the first such point.
+    """
     law = GentSchultz(n)
     c_o = float(A_O)
 
@@ -497,7 +517,8 @@ def test_balance_state_solves_printed_eq_43_and_returns_the_printed_eq_87_residu
     """At given abar_m (h0 = hhat, so base offset 0): the returned Abar satisfies Eq. (43) with Eqs. (50)-(51)
     as printed, J0 is J0(Abar), and F is the printed Eq. (87), with 30-digit J's at the returned Abar.
     Tolerance 1e-12: the J-integral quadrature agrees with mpmath to 1e-12 (test_integrals), the root in
-    ln Abar is polished to 1e-14, and F is a sum of a few rounded terms (relative to the largest)."""
+    ln Abar is polished to 1e-14, and F is a sum of a few rounded terms (relative to the largest).
+    """
     n = 0.531
     fixation = Fixation.spring_mass_dashpot(kappa, omega_bar, zeta)
     balance = MeanBalance(ETA1, fixation, CHI0, GentSchultz(n), MU_SMALL, 0.0)
@@ -513,7 +534,8 @@ def test_balance_state_solves_printed_eq_43_and_returns_the_printed_eq_87_residu
 def test_balance_state_for_rigid_fixation_is_eq_55_and_eq_56() -> None:
     """Rigid fixation: Abar solves Eq. (55), c_o^2 abar_m^(1/2) |Jc1(Abar)| = eta1 (a_o/R = c_o, Eq. 86), and F is
     Eq. (56) as a residual, deltabar_m - deltabar_base = abar_m^2 - J0 abar_m^(1/2) - base_offset; 30-digit J's,
-    tolerance 1e-12 as above."""
+    tolerance 1e-12 as above.
+    """
     n, base_offset = 4.0, 0.2
     balance = MeanBalance(ETA1, Fixation.rigid(), CHI0, GentSchultz(n), MU_SMALL, base_offset)
     for abar_m in (0.3, 1.0, 4.0):
@@ -527,7 +549,8 @@ def test_monotone_tail_start_and_criterion_follow_the_closed_forms() -> None:
     """abar_turn = max(0, -Re d/(2 c_o)) with c_o = a_o/R = (2 pi w0)^(1/3) (Eq. 86): 0 for a rigid fixation and
     below the fixation's resonance, beta/(2 c_o) for a free indenter, kappa (omega_bar^2 - 1)/(2 c_o) above the
     resonance (Eqs. 65-66); relative 1e-14 (a few roundings). The tail criterion abar_m > abar_turn and
-    abar_m^(3/2) >= (3/4) J0 switches at the JKR radius (3/4)^(2/3) for J0 = 1 and at abar_turn."""
+    abar_m^(3/2) >= (3/4) J0 switches at the JKR radius (3/4)^(2/3) for J0 = 1 and at abar_turn.
+    """
     c_o = float(A_O)
     assert monotone_tail_start(Fixation.rigid(), CHI0) == 0.0
     assert monotone_tail_start(Fixation.spring_mass_dashpot(0.1, 0.5, 0.05), CHI0) == 0.0
@@ -544,7 +567,8 @@ def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_ta
     """The scan of F in ln abar_m starts at ln abar_min in steps of SCAN_STEP; for the free indenter it is split
     at the pole of Eq. (43), abar_m = beta/(2 c_o) (closed form, c_o = a_o/R), with F < 0 at the nodes next to
     it on both sides; it ends at the first node of the grid (past the refinement towards the pole) where abar_m > abar_turn and abar_m^(3/2) >= (3/4) J0, J0 from
-    30-digit mpmath at the node's Abar (relative 1e-12 as above, far from the switch at these nodes)."""
+    30-digit mpmath at the node's Abar (relative 1e-12 as above, far from the switch at these nodes).
+    """
     n = 0.531
     balance = MeanBalance(ETA1, fixation, CHI0, GentSchultz(n), MU_SMALL, 0.0)
     resonance = 0.3 / (2 * float(A_O)) if fixation.kappa == 0 else None
@@ -569,7 +593,8 @@ def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_ta
 )
 def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
     """chi0 > 0 (Eq. 64), mu >= 0 (Eq. 81), a finite base offset, abar_min > 0 and omega_check > 0 (Eq. 105):
-    ValueError; a rate law other than Gent-Schultz: TypeError (the proof that ends the scan needs it)."""
+    ValueError; a rate law other than Gent-Schultz: TypeError (the proof that ends the scan needs it).
+    """
     arguments = {"chi0": CHI0} | kwargs
     chi0 = arguments.pop("chi0")
     with pytest.raises(ValueError):
@@ -583,7 +608,8 @@ def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
 
 def test_tensile_load_beyond_pulloff_raises() -> None:
     """No steady state for a base pulled far from the indenter (rigid: deltabar_base = -10 is below
-    min deltabar_m; compliant: the same offset): NoRootError, not a number."""
+    min deltabar_m; compliant: the same offset): NoRootError, not a number.
+    """
     law = GentSchultz(0.531)
     with pytest.raises(NoRootError, match="pull-off"):
         steady_states(ETA1, Fixation.rigid(), CHI0, law, base_offset=-10.0)

@@ -245,7 +245,7 @@ def _named_modules(path: Path) -> list[str]:
     return names
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def _reference_closure(path: Path) -> frozenset[str]:
     """Package files (relative to the repository) that running ``path`` loads, by the record above."""
     out = subprocess.run([sys.executable, "-c", _REFERENCE, *_named_modules(path)], capture_output=True, text=True,
@@ -292,7 +292,8 @@ def _downstream(workdir: Path, rules: set[str]) -> set[str]:
 def test_editing_a_module_reruns_exactly_the_rules_whose_step_imports_it(pipeline_run: Path, module: str) -> None:
     """Planned: the rules whose adapter loads ``module`` (by the independent record) and the rules downstream
     of them, nothing else. (A dry run names one reason per job: a job downstream of a rerun says so even
-    when it imports the module too, so the planned set, not the reasons, is compared.)"""
+    when it imports the module too, so the planned set, not the reasons, is compared.)
+    """
     default_rules = _planned_rules(pipeline_run, "--forceall")
     importers = {rule for rule, files in _adapter_closures().items() if module in files and rule in default_rules}
     assert importers, f"no rule of the default target imports {module}"

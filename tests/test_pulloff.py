@@ -18,11 +18,10 @@ from conftest import CHI0, ETA1, N_PUBLISHED, NU0, RADIUS, REDUCED_MODULUS, V0, 
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core import groups, jkr
-from vibroadhesion.models.leading_pulloff import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.models.leading_pulloff import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
 from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
 from vibroadhesion.numerics.roots import NoRootError
-
 
 # ----------------------------------------------------------------------------- Eq. (72)
 
@@ -47,7 +46,8 @@ def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: floa
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_eq72_and_eq106_lhs_strictly_increasing_as_proved(n: float) -> None:
     """Closed-form monotonicity proofs (docstrings of leading_order/refined; n < 6): both left-hand
-    sides rise strictly with Abar. Dense grid Abar in logspace(-12, 12, 2401)."""
+    sides rise strictly with Abar. Dense grid Abar in logspace(-12, 12, 2401).
+    """
     abar = np.logspace(-12, 12, 2401)
     law = GentSchultz(n)
     lhs72 = pulloff_lhs_leading(abar, law)
@@ -89,7 +89,8 @@ def test_tiny_eta1_gives_ratio_within_1e6_of_one(n: float) -> None:
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_very_large_eta1_gives_finite_ratio_without_warning(n: float) -> None:
     """eta1 = 0.05 (h1 = 2.6 mm at R = 51.5 mm): the root exists (LHS unbounded), the ratio is finite, > 1,
-    no warning of any kind; and it matches Eq. (71) with J0 from the closed-form large-Abar bound J0 >= J0~."""
+    no warning of any kind; and it matches Eq. (71) with J0 from the closed-form large-Abar bound J0 >= J0~.
+    """
     law = GentSchultz(n)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
@@ -128,7 +129,8 @@ def test_refined_tends_to_leading_as_omega_check_to_infinity(n: float, eta1: flo
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
 def test_refined_ratio_not_above_leading_ratio(n: float) -> None:
     """Eq. (106) LHS = Eq. (72) LHS^2 + a nonnegative frequency term, and both increase: Abar_ref <= Abar_lead,
-    hence J0(Abar_ref)^2 <= J0(Abar_lead)^2 (J0 increasing)."""
+    hence J0(Abar_ref)^2 <= J0(Abar_lead)^2 (J0 increasing).
+    """
     law = GentSchultz(n)
     eta1 = np.array([1e-5, ETA1, 2e-3])[:, None]
     omega = np.array([1e1, 1e3, 1e5, 1e8])[None, :]
@@ -189,7 +191,8 @@ def _saturating_j_mp(abar: float) -> tuple[mp.mpf, mp.mpf]:
 
 def test_bounded_lhs_rate_law_raises_no_root_error() -> None:
     """Closed-form bound: LHS of Eq. (72) < 1.7 for the Saturating law; eta1 = 1e-2 needs 3 eta1/chi0^2 = 44.8,
-    so there is no root: NoRootError, not a number (also for Eq. 106 with omega_check = inf)."""
+    so there is no root: NoRootError, not a number (also for Eq. 106 with omega_check = inf).
+    """
     law = Saturating()
     assert 3 * 1e-2 / CHI0**2 > 1.7
     with pytest.raises(NoRootError):
@@ -225,7 +228,8 @@ def test_invalid_eta1_raises_value_error(bad: float) -> None:
 
 def test_chi0_matches_paper_value_2_589e_2() -> None:
     """Paper, Sec. 3.5.3 / Fig. 5 caption: chi0 = 2.589e-2 (4 digits) for w0 = 0.236, E* = 2*2.8 MPa/0.75, R = 51.5 mm;
-    closed form Eq. (64): (9 pi w0 / (E* R))^{1/3}."""
+    closed form Eq. (64): (9 pi w0 / (E* R))^{1/3}.
+    """
     chi0 = groups.chi0(W0, REDUCED_MODULUS, RADIUS)
     assert abs(chi0 - CHI0) <= 0.5e-5
     assert abs(chi0 / (9 * math.pi * W0 / (REDUCED_MODULUS * RADIUS)) ** (1 / 3) - 1) < 1e-15
@@ -247,7 +251,8 @@ def test_eta1_matches_paper_value_3_883e_4() -> None:
 @pytest.mark.parametrize("w, e_star, radius", [(W0, REDUCED_MODULUS, RADIUS), (0.05, 1e9, 1e-3), (3.0, 2e5, 0.2)])
 def test_jkr_force_at_critical_radius_is_classical_pulloff_force(w: float, e_star: float, radius: float) -> None:
     """Classical JKR identity: P(a_cr) = -(3 pi / 2) R w (Eqs. 4, 60, 70), to 1e-12; and dP/da = 0 at a_cr
-    (central difference, step 1e-5 a_cr: truncation ~1e-10 and rounding ~1e-11 relative to P/a)."""
+    (central difference, step 1e-5 a_cr: truncation ~1e-10 and rounding ~1e-11 relative to P/a).
+    """
     a_cr = float(jkr.critical_radius(w, e_star, radius))
     p_cr = float(jkr.contact_force(a_cr, w, e_star, radius))
     assert abs(p_cr / (-1.5 * math.pi * radius * w) - 1) < 1e-12

@@ -17,12 +17,12 @@ import pytest
 from conftest import AMPLITUDES_UM, CHI0, N_PUBLISHED, RADIUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
+from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.figure_tables.fig8 import fig8_table
 from vibroadhesion.experiments.figure_tables.rigid import FIG6_COLUMNS, fig6_table, fig7_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
-from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact, nominal_point_contact_closure, rigid_amplitude_squared
 from vibroadhesion.models.stiffness import dynamic_stiffness
 
@@ -51,7 +51,8 @@ def test_eq122_root_satisfies_printed_equation_with_mpmath_j_to_1e11(h1_um: floa
     """Reference: Eq. (122) with Eq. (123), evaluated with 30-digit J-integrals at the returned root.
 
     Tolerance 1e-11 relative on the squared amplitude: the J-integrals are accurate to 1e-12
-    (test_integrals) and enter squared."""
+    (test_integrals) and enter squared.
+    """
     eta1 = h1_um * 1e-6 / RADIUS
     sol = nominal_point_contact(eta1, omega_check, CHI0, GentSchultz(n))
     residual = float(abs(eq122_lhs_mp(float(sol.abar), omega_check, n) / mp.mpf(eta1) ** 2 - 1))
@@ -68,7 +69,8 @@ def test_eq122_lhs_rises_strictly_from_zero_to_infinity_so_one_root(omega_check:
     left-hand side of Eq. (122) along abar_m = J0^(2/3) rises strictly with Abar, from 0 to
     infinity, so Eq. (122) has exactly one root for every eta1 > 0 and omega_check > 0.
     Checked on Abar in logspace(-12, 12, 2401); the ends: exactly 0 at Abar = 0, and above
-    eta1^2 = 1e-4 (h1 = 515 um) at Abar = exp(min(60/n, 150)) (an Abar^n of e^60, far past any root)."""
+    eta1^2 = 1e-4 (h1 = 515 um) at Abar = exp(min(60/n, 150)) (an Abar^n of e^60, far past any root).
+    """
     law = GentSchultz(n)
     abar = np.logspace(-12, 12, 2401)
     lhs = rigid_amplitude_squared(abar, law, CHI0, omega_check, nominal_point_contact_closure)
@@ -86,7 +88,8 @@ def small_amplitude_abar_mp(eta1: float, omega_check: float, n: float) -> float:
     1/sqrt(1 + u) to first order in u = |Abar cos x|^n, Jc1 -> -(Abar^n/pi) int_0^pi |cos x|^(n+1) dx
     = -Abar^n Gamma(n/2 + 1) / (sqrt(pi) Gamma(n/2 + 3/2)). Eq. (122) then reads
     (2^(4/3) chi0^4 / 3^(8/3)) K^2 Abar^(2n) + (2^(8/3) chi0^2 / (3^(4/3) omega_check^2)) (9/16) Abar^2 = eta1^2,
-    solved here with mpmath in ln Abar."""
+    solved here with mpmath in ln Abar.
+    """
     mp.mp.dps = 30
     n_ = mp.mpf(n)
     k = mp.gamma(n_ / 2 + 1) / (mp.sqrt(mp.pi) * mp.gamma(n_ / 2 + mp.mpf(3) / 2))
@@ -105,7 +108,8 @@ def small_amplitude_abar_mp(eta1: float, omega_check: float, n: float) -> float:
 def test_h1_to_zero_abar_vanishes_and_abar_m_tends_to_one(omega_check: float, n: float) -> None:
     """h1 -> 0: Abar -> 0 along the small-amplitude closed form, abar_m -> 1 (Eq. 123 with J0(0) = 1),
     w_eff -> w0 and A/a_m -> 0. eta1 = 1e-10 .. 1e-14. The closed form drops terms of relative size
-    Abar^n (next term of the expansions of J0, Jc1); tolerance 10 Abar^n plus 1e-9."""
+    Abar^n (next term of the expansions of J0, Jc1); tolerance 10 Abar^n plus 1e-9.
+    """
     law = GentSchultz(n)
     for eta1 in (1e-10, 1e-12, 1e-14):
         sol = nominal_point_contact(eta1, omega_check, CHI0, law)
@@ -129,7 +133,8 @@ def test_h1_zero_gives_the_static_nominal_point_contact_exactly() -> None:
 def test_large_amplitude_at_low_frequency_is_reported_outside_the_model_not_crashed() -> None:
     """h1 = 100 um .. 1 mm at omega_check = 10 gives A/a_m > 1 (geometrically impossible): the
     table keeps the rows with finite values so the figure can shade them, and the counts the
-    fig6 rule logs follow from the column. The 20 um, 200 Hz point of the paper is inside A <= 0.1 a_m."""
+    fig6 rule logs follow from the column. The 20 um, 200 Hz point of the paper is inside A <= 0.1 a_m.
+    """
     table = fig6_table([20.0, 100.0, 1000.0], np.array([1e1, 3.0e6]), chi0=CHI0, radius=RADIUS, n=N_PUBLISHED)
     assert np.isfinite(table[FIG6_COLUMNS].to_numpy()).all()
     low = table[table["omega_check"] == 1e1]
@@ -154,7 +159,8 @@ HIGH_OMEGA_CHECK = {0.05: 1e50, N_PUBLISHED: 1e14, 4.0: 1e14}
 def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) -> None:
     """Reference: Fig. 4's leading-order pull-off, Eq. (72) (frequency independent). Eq. (106)'s
     frequency term is (3 Abar/(chi0 omega_check))^2 relative to the first: below 1e-20 at
-    HIGH_OMEGA_CHECK, so the Fig. 7 table must equal Fig. 4's to 1e-9 there (and at omega_check = inf)."""
+    HIGH_OMEGA_CHECK, so the Fig. 7 table must equal Fig. 4's to 1e-9 there (and at omega_check = inf).
+    """
     fig7 = fig7_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n], math.inf]), chi0=CHI0, radius=RADIUS, n=n)
     w0 = W0  # J/m^2, Fig. 4 caption; E* chosen so that Eq. (64) gives chi0 = CHI0
     params = GentSchultzParameters(w0=w0, n=n, v0=V0)
@@ -175,7 +181,8 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
 @pytest.mark.parametrize("n", EXPONENTS)
 def test_fig8_storage_stiffness_tends_to_flat_punch_as_omega_check_to_infinity(n: float) -> None:
     """Greenwood–Johnson: S'/(2E* a_m) -> 1 as omega_check -> infinity (Eq. 119). The deviation is
-    O(r^2), r = delta_s/delta_c of Eq. (120) ~ Abar/omega_check; at HIGH_OMEGA_CHECK below 1e-9."""
+    O(r^2), r = delta_s/delta_c of Eq. (120) ~ Abar/omega_check; at HIGH_OMEGA_CHECK below 1e-9.
+    """
     fig6 = fig6_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n]]), chi0=CHI0, radius=RADIUS, n=n)
     fig8 = fig8_table(fig6, chi0=CHI0, n=n)
     assert np.allclose(fig8["S_storage_rel"], 1.0, rtol=0, atol=1e-9)
@@ -192,7 +199,8 @@ def test_fig8_storage_stiffness_low_frequency_limit_matches_eq_c2_form(h1_um: fl
     Eq. 123), evaluated with 30-digit J-integrals at the solution's Abar. Eq. (118) differs from it by
     (r - r_P)/(r (1 + r^2)) with r = delta_s/delta_c of Eq. (120), also evaluated in mpmath: tolerance
     2/r^2 + 1e-10. Along the solution r grows only like omega_check^(-n) (Abar ~ omega_check eta1), so
-    the omega_check needed for r > 1e3 depends strongly on n."""
+    the omega_check needed for r > 1e3 depends strongly on n.
+    """
     law = GentSchultz(n)
     omega_check = LOW_OMEGA_CHECK[n]
     sol = nominal_point_contact(h1_um * 1e-6 / RADIUS, omega_check, CHI0, law)
@@ -209,7 +217,8 @@ def test_fig8_storage_stiffness_low_frequency_limit_matches_eq_c2_form(h1_um: fl
 def test_fig8_storage_stiffness_is_one_third_as_abar_to_zero() -> None:
     """Eq. (C.2) at a_m = a_o: with J0(0) = J1(0) = 1 and abar_m = 1 the low-frequency limit is
     (1 - 1/4)^-1 (1 - 3/4) = 1/3 exactly. At omega_check = 1e-12 and h1 = 1 nm (n = 0.531) Abar ~ 1e-18,
-    J1 - 1 and J0 - 1 are O(Abar^(2n)) and 1/r^2 ~ 1e-12: tolerance 1e-9."""
+    J1 - 1 and J0 - 1 are O(Abar^(2n)) and 1/r^2 ~ 1e-12: tolerance 1e-9.
+    """
     law = GentSchultz(N_PUBLISHED)
     sol = nominal_point_contact(1e-9 / RADIUS, 1e-12, CHI0, law)
     s = dynamic_stiffness(sol.abar, sol.abar_m, CHI0, 1e-12, law)
@@ -219,7 +228,8 @@ def test_fig8_storage_stiffness_is_one_third_as_abar_to_zero() -> None:
 
 def test_fig8_along_fig6_grid_goes_from_one_third_to_one_monotonically() -> None:
     """Across the figure's range (omega_check 1e1 .. 1e9) the storage stiffness lies between the two
-    limits 1/3 and 1 and increases with frequency for every amplitude (paper's Fig. 8)."""
+    limits 1/3 and 1 and increases with frequency for every amplitude (paper's Fig. 8).
+    """
     grid = np.logspace(1, 9, 81)
     fig8 = fig8_table(fig6_table(AMPLITUDES_UM, grid, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED),
                               chi0=CHI0, n=N_PUBLISHED)

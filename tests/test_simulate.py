@@ -27,11 +27,11 @@ import pytest
 from conftest import C_O, CHI0, N_PUBLISHED, NU0, RADIUS
 
 from vibroadhesion import simulation as sim
-from vibroadhesion.simulation.model import contact_kernel
-from vibroadhesion.simulation.shooting import _Bracket
 from vibroadhesion.core.groups import contact_radius_scale
 from vibroadhesion.core.jkr import contact_force, indentation
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.simulation.model import contact_kernel
+from vibroadhesion.simulation.shooting import _Bracket
 
 
 def excitation(h1_um: float, omega_check: float, n: float = N_PUBLISHED, **kw) -> sim.BaseExcitation:
@@ -112,7 +112,8 @@ def frozen_20um() -> dict[str, float]:
 def test_gent_schultz_speed_inverts_the_forward_law(n: float) -> None:
     """Reference: the forward law f of Eq. (75); f(speed(r)) = r to 1e-13 relative for w/w0 in
     [0.3, 3] (all finite speeds for n = 0.05 there), and the closed values speed(1) = 0,
-    speed(2) = -1, speed(1/2) = +1."""
+    speed(2) = -1, speed(1/2) = +1.
+    """
     law = GentSchultz(n)
     ratio = np.linspace(0.3, 3.0, 271)
     assert np.allclose(law.f(law.speed(ratio)), ratio, rtol=1e-13, atol=0)
@@ -132,7 +133,8 @@ def test_contact_kernel_against_dimensional_jkr_and_inverse_law() -> None:
 
     For a and w given, Phat = P R/(E* a_o^3) must equal 2 abar deltabar - (2/3) abar^3 with
     deltabar = delta R/a_o^2, and Phi of the kernel must be w/w0 (speed from the inverse law):
-    1e-12 relative. Gradients: central differences with step 1e-6, agreement 1e-6 relative."""
+    1e-12 relative. Gradients: central differences with step 1e-6, agreement 1e-6 relative.
+    """
     e_star, w0 = 5.6e6, 0.236
     a_o = contact_radius_scale(w0, e_star, RADIUS)
     law = GentSchultz(N_PUBLISHED)
@@ -157,7 +159,8 @@ def test_contact_kernel_against_dimensional_jkr_and_inverse_law() -> None:
 
 def test_speed_saturation_is_invisible_below_the_cap_and_bounds_it() -> None:
     """Reference: GentSchultz.speed. At 1e-3 of the cap the saturated speed differs by < 1e-20
-    relative; far beyond the cap it equals the cap; n = 0.05 never overflows."""
+    relative; far beyond the cap it equals the cap; n = 0.05 never overflows.
+    """
     cap = 1e12
     law = GentSchultz(0.05)
     phi_below = 1.0 + (1e-3 * cap) ** 0.05
@@ -173,7 +176,8 @@ def test_speed_saturation_is_invisible_below_the_cap_and_bounds_it() -> None:
 @pytest.mark.parametrize("kappa, mu", [(0.01, 0.0), (0.1, 0.0), (0.1, 1e-6)])
 def test_static_state_solves_eq_82(kappa: float, mu: float) -> None:
     """Reference: Eq. (82) for a_0/R solved by mpmath.findroot (30 digits) from a_0/R = c_o;
-    a_0/a_o agrees to 1e-12, and xbar_0 = mu/(kappa c_o^2) - (c_o/kappa) Phat_0 (Eq. A.6)."""
+    a_0/a_o agrees to 1e-12, and xbar_0 = mu/(kappa c_o^2) - (c_o/kappa) Phat_0 (Eq. A.6).
+    """
     st = sim.static_state(excitation(20, 1e5), sim.SpringFixation(kappa, 0.05, NU0, mu))
     with mp.workdps(30):
         c, k, m = mp.mpf(CHI0), mp.mpf(kappa), mp.mpf(mu)
@@ -189,7 +193,8 @@ def test_static_state_solves_eq_82(kappa: float, mu: float) -> None:
 
 def test_static_state_rigid_and_no_contact() -> None:
     """Closed forms: abar = 1 for the nominal point contact (Sec. 3.5.4); a^2 - sqrt(a) = deltabar0
-    for a preset; no static contact below the JKR fixed-grip pull-off s(4^(-2/3)) = -0.4725."""
+    for a preset; no static contact below the JKR fixed-grip pull-off s(4^(-2/3)) = -0.4725.
+    """
     assert sim.static_state(excitation(20, 1e5)).abar == pytest.approx(1.0, abs=1e-15)
     st = sim.static_state(excitation(20, 1e5, deltabar0=0.3))
     assert st.abar**2 - math.sqrt(st.abar) == pytest.approx(0.3, rel=1e-13)
@@ -208,7 +213,8 @@ def test_high_frequency_limit_matches_frozen_contact_reference(omega_check: floa
     Abar, the cosine harmonic of omega_check c_o a and the peak speed to 1e-6 (1e-8);
     A = Abar/(omega_check c_o) vanishes like 1/omega_check; the sine harmonic of omega_check c_o a
     (0 in the limit, by symmetry) and the cosine one of Phat are O(A/a_m) (phase lag), the sine
-    harmonic of Phat is -2 a_m eps (1 + O(A/a_m))."""
+    harmonic of Phat is -2 a_m eps (1 + O(A/a_m)).
+    """
     tol_a, tol_b = (1e-8, 1e-6) if omega_check == 1e8 else (1e-10, 1e-8)
     ex = excitation(20, omega_check)
     r = sim.steady_state(ex)
@@ -234,7 +240,8 @@ def test_high_frequency_limit_for_extreme_exponents(n: float, h1_um: float, omeg
     """Reference: frozen_limit_mp for n = 0.05 (h1 = 5 um: larger strokes pull the n = 0.05 contact
     off, see test_n005_stroke_beyond_fixed_grip_pull_off_loses_contact) at omega_check = 1e8 and
     n = 4 at 1e6 (measured distances to the limit: 3e-10 and 5e-8 in a_m); tolerances 1e-7 for
-    a_m, 1e-5 for Abar and the peak speed."""
+    a_m, 1e-5 for Abar and the peak speed.
+    """
     ex = excitation(h1_um, omega_check, n)
     r = sim.steady_state(ex)
     ref = frozen_limit_mp(ex.displacement_amplitude, n)
@@ -256,7 +263,8 @@ def test_small_amplitude_limit_abar_tends_to_closed_form(n: float, omega_checks,
     omega_check c_o >> eps^(1/n - 1) (else it follows the JKR curve quasi-statically, where
     Phi - 1 ~ x^4 sits at rounding level and the integrators fail: reported, not tested here).
     Relative deviation O(eps): tolerance 2 eps (measured 1.6 eps for n = 0.531, 0.17 eps for n = 4);
-    a_m - 1 = O(eps^2): below eps^2 (measured 0.22 and 0.07 eps^2)."""
+    a_m - 1 = O(eps^2): below eps^2 (measured 0.22 and 0.07 eps^2).
+    """
     w = float(mp.quad(lambda t: mp.sin(t) ** (1 / mp.mpf(n)), [0, mp.pi / 2]))
     for eps in amplitudes:
         for omega_check in omega_checks:
@@ -268,7 +276,8 @@ def test_small_amplitude_limit_abar_tends_to_closed_form(n: float, omega_checks,
 
 def test_zero_amplitude_is_the_static_contact() -> None:
     """h1 = 0: the static nominal point contact abar = 1 is periodic, A = 0, w_eff = w0, and the
-    mean force is the JKR force at zero displacement, -2/3 = -(8/9) |P_JKR| (Eq. 4')."""
+    mean force is the JKR force at zero displacement, -2/3 = -(8/9) |P_JKR| (Eq. 4').
+    """
     r = sim.steady_state(excitation(0.0, 1e5))
     assert r.status == "converged"
     assert r.abar_m == 1.0 and r.abar < 1e-20 and r.w_eff_ratio == pytest.approx(1.0, rel=1e-15)
@@ -280,7 +289,8 @@ def test_large_stroke_at_low_frequency_reports_contact_loss(omega_check: float) 
     """h1 = 100 um: the contact cannot follow the tensile stroke and is pulled off in the first
     period. Reference for the loss time: a brute-force transient with a different integrator
     (Radau) and a threshold 10 times lower, agreeing to 1e-3 in tau (the collapse is a finite-time
-    blow-up, so the threshold hardly matters); every number of the record is NaN."""
+    blow-up, so the threshold hardly matters); every number of the record is NaN.
+    """
     ex = excitation(100, omega_check)
     r = sim.steady_state(ex)
     assert r.status == "contact_loss" and math.isnan(r.abar_m) and math.isnan(r.a_over_am)
@@ -293,14 +303,16 @@ def test_n005_stroke_beyond_fixed_grip_pull_off_loses_contact() -> None:
     """n = 0.05 makes the adhesion almost rate independent (f = 1 + |x|^0.05 is below 3 up to
     |x| = 1e9): a stroke eps = 1.58 (h1 = 20 um) pulls the contact beyond the JKR fixed-grip
     pull-off (deltabar = -0.47) and it is lost in the first tensile half period, even at
-    omega_check = 1e8 where n = 0.531 holds it (test_high_frequency_limit_matches_...)."""
+    omega_check = 1e8 where n = 0.531 holds it (test_high_frequency_limit_matches_...).
+    """
     r = sim.steady_state(excitation(20, 1e8, 0.05))
     assert r.status == "contact_loss" and 0 < r.tau_contact_loss < math.pi
 
 
 def test_contact_survives_at_high_frequency_with_a_over_am_below_one() -> None:
     """Along omega_check for h1 = 100 um: contact loss at low frequency, then converged orbits
-    whose A/a_m < 1 decreases with frequency (A ~ Abar/omega_check)."""
+    whose A/a_m < 1 decreases with frequency (A ~ Abar/omega_check).
+    """
     ratios = []
     for omega_check in (1e5, 3e5, 1e6, 1e7):
         r = sim.steady_state(excitation(100, omega_check))
@@ -317,7 +329,8 @@ def test_shooting_equals_brute_force_transient(omega_check: float, periods: int)
     """Reference: transient() from the static state (LSODA, period after period). The transient
     approaches the orbit like multiplier^k (7.9e-6 and 0.18 per period), so after 6 and 40 periods
     its abar(2 pi k) equals the shooting start to 1e-9 relative (integration error of the two
-    integrators dominates)."""
+    integrators dominates).
+    """
     ex = excitation(20, omega_check)
     r = sim.steady_state(ex)
     t = sim.transient(ex, periods=periods)
@@ -329,7 +342,8 @@ def test_shooting_equals_brute_force_transient(omega_check: float, periods: int)
 def test_second_integrator_gives_the_same_orbit(integrator: str) -> None:
     """Reference: the whole shooting with another integrator (ODEPACK LSODA; Radau IIA at
     rtol 1e-10 to keep it short) at h1 = 40 um, omega_check = 1e6: a_m, Abar, w_eff, Pm and the
-    multiplier agree with the default (Fortran DOP853) to 1e-8 relative."""
+    multiplier agree with the default (Fortran DOP853) to 1e-8 relative.
+    """
     ex = excitation(40, 1e6)
     a = sim.steady_state(ex)
     b = sim.steady_state(ex, integrator=integrator, rtol=1e-10 if integrator == "Radau" else 1e-12)
@@ -341,7 +355,8 @@ def test_second_integrator_gives_the_same_orbit(integrator: str) -> None:
 
 def test_rigid_multiplier_equals_finite_difference_of_the_map() -> None:
     """Reference: central difference of the one-period map abar(0) -> abar(2 pi) from transient()
-    started at the orbit +- 1e-4 A; agreement 1e-5 (difference error ~ noise / step)."""
+    started at the orbit +- 1e-4 A; agreement 1e-5 (difference error ~ noise / step).
+    """
     ex = excitation(20, 1e6)
     r = sim.steady_state(ex)
     h = 1e-4 * r.a_over_am * r.abar_m
@@ -363,7 +378,8 @@ def test_rigid_bracket_keeps_the_fixed_point_and_bisects_steps_that_leave_it() -
     """Reference: the rule of the shooting module's docstring. r > 0 at a0 puts the fixed point
     above a0, r < 0 below; a step leaving the bracket is replaced by its midpoint, or, before an
     upper end is known, by a doubling (of a0 after a contact loss, else of the last step from the
-    lower end); the bracket is exhausted at 4e-16 relative width."""
+    lower end); the bracket is exhausted at 4e-16 relative width.
+    """
     bracket = _Bracket()
     bracket.record_loss(0.5)
     assert bracket.fallback(0.5, math.nan) == 1.0
@@ -388,7 +404,8 @@ def spring(kappa: float, zeta: float, mu: float = 0.0) -> sim.SpringFixation:
 def test_compliant_mean_force_balance_eq15(kappa: float, zeta: float, omega_bar: float) -> None:
     """Reference: the averaged balance Eq. (15): over a period the means of xbar'' and xbar'
     vanish, so mean(xbar) = mu/(kappa c_o^2) - (c_o/kappa) mean(Phat) exactly; the two sides come
-    from different quadratures of the orbit and agree to 1e-9 relative."""
+    from different quadratures of the orbit and agree to 1e-9 relative.
+    """
     for mu in (0.0, 1e-6):
         r = sim.steady_state(excitation(20, omega_bar / NU0), spring(kappa, zeta, mu))
         assert r.status == "converged"
@@ -398,7 +415,8 @@ def test_compliant_mean_force_balance_eq15(kappa: float, zeta: float, omega_bar:
 
 def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attracts() -> None:
     """Reference: central differences of the 3-D one-period map (transient() from the orbit +-
-    steps of 1e-5 of each scale); eigenvalues agree to 1e-4. The orbit is stable (all |m| < 1)."""
+    steps of 1e-5 of each scale); eigenvalues agree to 1e-4. The orbit is stable (all |m| < 1).
+    """
     ex, fx = excitation(20, 1.0 / NU0), spring(0.1, 0.2)
     r = sim.steady_state(ex, fx)
     assert r.status == "converged" and r.stable and np.all(np.abs(r.floquet_multipliers) < 1)
@@ -419,7 +437,8 @@ def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attract
 def test_compliant_shooting_equals_brute_force_transient() -> None:
     """Reference: transient() from the static state with kappa = 0.1, zeta = 0.2, omega_bar = 1
     (multipliers 0.56, 0.29): after 60 periods the state equals the shooting start to 1e-9 of
-    its scale."""
+    its scale.
+    """
     ex, fx = excitation(20, 1.0 / NU0), spring(0.1, 0.2)
     r = sim.steady_state(ex, fx)
     t = sim.transient(ex, fx, periods=60)
@@ -433,7 +452,8 @@ def test_undamped_spring_near_resonance_converges_or_reports(kappa: float, omega
     """zeta = 0 across the resonances (omega_bar = 1 unloads the contact, Appendix B; the
     spring-plus-contact resonance lies near sqrt(1 + 2 c_o a/kappa) ~ 1.3-2.2): either a converged
     orbit periodic to 1e-9 whose `stable` flag agrees with its multipliers, or an explicit
-    non-convergence status, never an exception or a silent number."""
+    non-convergence status, never an exception or a silent number.
+    """
     r = sim.steady_state(excitation(20, omega_bar / NU0), spring(kappa, 0.0))
     assert r.status in ("converged", "not_converged", "contact_loss")
     if r.status == "converged":
@@ -445,7 +465,8 @@ def test_undamped_spring_near_resonance_converges_or_reports(kappa: float, omega
 
 def test_very_stiff_spring_reproduces_rigid_fixation() -> None:
     """Reference: the rigid simulation. kappa = 1e6 leaves xbar ~ (c_o/kappa) Phat ~ 1e-8, so
-    a_m, Abar, w_eff and Pm agree to 1e-6 relative (omega_bar = 12.3, omega_check = 1e6)."""
+    a_m, Abar, w_eff and Pm agree to 1e-6 relative (omega_bar = 12.3, omega_check = 1e6).
+    """
     ex = excitation(20, 1e6)
     rigid = sim.steady_state(ex)
     stiff = sim.steady_state(ex, spring(1e6, 0.05))

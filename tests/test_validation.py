@@ -25,7 +25,8 @@ def test_small_amplitude_every_level_agrees_with_the_simulation_and_the_static_c
     """h1 = 0.05 um at omega_check = 1e6: every level gives abar_m, w_eff/w0 and P_m/|P_JKR| within 1e-3 of
     the static nominal point contact (1, 1, -8/9) and of the simulation (the vibration terms are
     O(etahat^2) = O(1e-5) relative, the J-model constants differ from the exact ones only by a factor
-    of order one in that correction)."""
+    of order one in that correction).
+    """
     rows = _by_model(validation.rigid_point(0.05, 1e6, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     assert all(r["status"] == "ok" for r in rows.values())
     sim = rows["simulation"]
@@ -39,7 +40,8 @@ def test_small_amplitude_every_level_agrees_with_the_simulation_and_the_static_c
 def test_very_high_frequency_simulation_equals_exact_averaging() -> None:
     """omega_check = 1e8, h1 = 20 um: the contact radius is frozen to A/a_m ~ 2e-5, and the simulation
     tends to the exact-averaging limit as (omega_check c_o)^-2 ~ 1e-12: abar_m, w_eff/w0 and the mean
-    force agree to 1e-6. The paper's J-integral levels do not (22 % in w_eff/w0, measured)."""
+    force agree to 1e-6. The paper's J-integral levels do not (22 % in w_eff/w0, measured).
+    """
     rows = _by_model(validation.rigid_point(20.0, 1e8, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     sim, avg, refined = rows["simulation"], rows["exact_averaging"], rows["refined"]
     for q in ("abar_m", "w_eff_ratio", "Pm_over_PJKR"):
@@ -50,7 +52,8 @@ def test_very_high_frequency_simulation_equals_exact_averaging() -> None:
 def test_contact_loss_is_a_status_with_no_numbers_and_no_error_rows() -> None:
     """h1 = 100 um at omega_check = 1e4: the refined model predicts A/a_m ~ 1.5 (outside the model), the
     simulation loses contact: its row has status contact_loss and NaN numbers, and relative_errors
-    leaves the point out instead of comparing against a number that does not exist."""
+    leaves the point out instead of comparing against a number that does not exist.
+    """
     grid = pd.DataFrame(validation.rigid_point(100.0, 1e4, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     sim = grid[grid["model"] == "simulation"].iloc[0]
     assert sim["status"] == "contact_loss"
@@ -69,7 +72,8 @@ def test_compliant_sweep_far_from_resonance_agrees_with_refined_and_orbits_are_s
     """kappa = 1e-3, zeta = 0.01, omega_bar = 18-20 (above the folded resonance near 11, h1 = 20 um): one
     refined solution, and the simulated orbit swept either way is stable (all |Floquet multipliers| < 1)
     with A/a_m within 15 % of the refined model (the measured gap there is ~8 %, the same first-harmonic
-    truncation as in the rigid case)."""
+    truncation as in the rigid case).
+    """
     from vibroadhesion.models.compliant import CompliantFixation
 
     p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.01)

@@ -14,12 +14,12 @@ import math
 import pytest
 from conftest import CHI0, N_PUBLISHED, OMEGA_BAR_200HZ, RADIUS
 
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.leading_order import Fixation
 from vibroadhesion.models.leading_pulloff import pulloff_leading
-from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.simulation import SpringFixation
-from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 
 LAW = GentSchultz(N_PUBLISHED)
 OMEGA_CHECK_200HZ = 1.4543e6
@@ -28,7 +28,8 @@ OMEGA_CHECK_200HZ = 1.4543e6
 def test_high_frequency_simulated_pulloff_equals_exact_averaging_force_minimum() -> None:
     """omega_check = 1e8, h1 = 20 um: the contact radius is frozen (A/a_m ~ 2e-5), so the most tensile
     mean force along the simulated family equals the minimum over a_m of the exact-averaging mean force
-    to the simulation's O((omega_check c_o)^-2) and the minimiser's tolerances: 1e-4."""
+    to the simulation's O((omega_check c_o)^-2) and the minimiser's tolerances: 1e-4.
+    """
     eta1 = 20e-6 / RADIUS
     simulated = simulated_pulloff(eta1, 1e8, CHI0, LAW)
     reference = exact_averaging.pulloff_at_force_minimum(eta1, CHI0, LAW)
@@ -39,7 +40,8 @@ def test_high_frequency_simulated_pulloff_equals_exact_averaging_force_minimum()
 
 def test_family_that_loses_contact_before_a_force_extremum_reports_it() -> None:
     """h1 = 100 um at omega_check = 1e4: the steady state is lost (a -> 0 within a cycle) already at the
-    nominal point contact, so the family never reaches a force extremum: a status, no number."""
+    nominal point contact, so the family never reaches a force extremum: a status, no number.
+    """
     result = simulated_pulloff(100e-6 / RADIUS, 1e4, CHI0, LAW)
     assert result.status == "contact_loss_before_extremum"
     assert math.isnan(result.ratio) and math.isnan(result.abar_m)
@@ -48,7 +50,8 @@ def test_family_that_loses_contact_before_a_force_extremum_reports_it() -> None:
 def test_paper_criterion_a_m_equals_a_cr_is_not_where_the_simulated_force_peaks() -> None:
     """At 200 Hz (omega_check = 1.454e6), h1 = 20 um the simulated pull-off happens at a mean radius
     well below the JKR critical radius of Eq. (61) evaluated with the simulated w_eff (measured 1.01 a_o
-    against 1.22 a_o): the paper's detachment criterion a_m = a_cr is not met at the force extremum."""
+    against 1.22 a_o): the paper's detachment criterion a_m = a_cr is not met at the force extremum.
+    """
     result = simulated_pulloff(20e-6 / RADIUS, OMEGA_CHECK_200HZ, CHI0, LAW)
     assert result.status == "pulloff"
     assert result.abar_m < 0.9 * result.abar_cr
@@ -61,7 +64,8 @@ def test_very_stiff_spring_gives_the_rigid_simulated_pulloff(omega_bar: float) -
     (measured 1.2e-7 above and 4.7e-5 below the fixation's resonance). The remaining difference is the
     transmissibility |d|/|d + chi0 J0^(2/3)| of Eqs. (67)-(69): it must have the sign and, within 30 %, the
     size of the leading-order difference between Eqs. (67)-(69) and Eq. (72) (measured 1.20 and 1.13 times
-    it: the simulated amplification grows faster with the amplitude than the leading order's)."""
+    it: the simulated amplification grows faster with the amplitude than the leading order's).
+    """
     eta1 = 20e-6 / RADIUS
     rigid = simulated_pulloff(eta1, OMEGA_CHECK_200HZ, CHI0, LAW)
     spring = simulated_pulloff(eta1, OMEGA_CHECK_200HZ, CHI0, LAW,
@@ -78,7 +82,8 @@ def test_compliant_family_that_loses_contact_before_a_force_extremum_reports_it(
     """kappa = 0.001, zeta = 0.01, omega_bar = 17.85 (the validation sweep's spring at the 200 Hz
     omega_bar) but omega_check = 1e4, h1 = 20 um: the family of steady states runs from the nominal point
     contact to deltabar0 = -26.15 with the mean force still growing more tensile (measured -2.185 |P_JKR|),
-    and the transient just beyond its last orbit loses contact (after 60 periods): a status, no number."""
+    and the transient just beyond its last orbit loses contact (after 60 periods): a status, no number.
+    """
     result = simulated_pulloff(20e-6 / RADIUS, 1e4, CHI0, LAW, SpringFixation(kappa=1e-3, zeta=0.01, nu0=OMEGA_BAR_200HZ / 1e4))
     assert result.status == "contact_loss_before_extremum"
     assert result.steady_states > 10  # a family, not a loss at the start

@@ -7,10 +7,10 @@ rule benchmark_j_integrals:
     output:
         csv="results/benchmarks/j_integrals.csv",
         txt="results/benchmarks/j_integrals.txt",
-    params:
-        python=PYTHON,
     log:
         "results/logs/benchmark_j_integrals.log",
+    params:
+        python=PYTHON,
     shell:
         "{params.python:q} {input.script:q} {output.csv:q} {output.txt:q} > {log:q} 2>&1"
 
@@ -22,10 +22,10 @@ rule benchmark_simulate:
         code=code("benchmarks/simulate.py"),
     output:
         "results/benchmarks/simulate.txt",
-    params:
-        python=PYTHON,
     log:
         "results/logs/benchmark_simulate.log",
+    params:
+        python=PYTHON,
     shell:
         "{params.python:q} {input.script:q} {output:q} > {log:q} 2>&1"
 
@@ -42,10 +42,10 @@ rule benchmark_speed_vs_error:
         txt="results/benchmarks/speed_vs_error.txt",
         png="results/benchmarks/speed_vs_error.png",
         pdf="results/benchmarks/speed_vs_error.pdf",
-    params:
-        python=PYTHON,
     log:
         "results/logs/benchmark_speed_vs_error.log",
+    params:
+        python=PYTHON,
     shell:
         "{params.python:q} {input.script:q} {input.setup:q} {input.fit:q} {input.errors:q} {output.csv:q} {output.txt:q} "
         "{output.png:q} > {log:q} 2>&1"

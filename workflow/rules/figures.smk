@@ -8,15 +8,15 @@ rule fig3_data:
         code=code("fig3_data"),
     output:
         "results/fig3/fig3.csv",
+    log:
+        "results/logs/fig3_data.log",
+    benchmark:
+        "results/benchmarks/rules/fig3_data.tsv"
     params:
         panel_n=config["fig3"]["panel_n"],
         lo=config["fig3"]["log10_abar_min"],
         hi=config["fig3"]["log10_abar_max"],
         points=config["fig3"]["points"],
-    log:
-        "results/logs/fig3_data.log",
-    benchmark:
-        "results/benchmarks/rules/fig3_data.tsv"
     script:
         "../scripts/fig3_data.py"
 
@@ -29,10 +29,10 @@ rule fig3_plot:
     output:
         pdf="results/fig3/fig3.pdf",
         png=report("results/fig3/fig3.png", caption="../report/fig3.rst", category="Figures"),
-    params:
-        panel_n=config["fig3"]["panel_n"],
     log:
         "results/logs/fig3_plot.log",
+    params:
+        panel_n=config["fig3"]["panel_n"],
     script:
         "../scripts/fig3_plot.py"
 
@@ -44,13 +44,13 @@ rule fig4_data:
         code=code("fig4_data"),
     output:
         "results/fig4/fig4.csv",
-    params:
-        h1_max=config["fig4"]["h1_max_um"],
-        points=config["fig4"]["points"],
     log:
         "results/logs/fig4_data.log",
     benchmark:
         "results/benchmarks/rules/fig4_data.tsv"
+    params:
+        h1_max=config["fig4"]["h1_max_um"],
+        points=config["fig4"]["points"],
     script:
         "../scripts/fig4_data.py"
 
@@ -83,14 +83,14 @@ rule fig5_data:
         csv="results/fig5/fig5.csv",
         markers="results/fig5/fig5_markers.csv",
         counts="results/fig5/fig5_solution_count.csv",
-    params:
-        lo=config["fig5"]["omega_bar_min"],
-        hi=config["fig5"]["omega_bar_max"],
-        points=config["fig5"]["count_points"],
     log:
         "results/logs/fig5_data.log",
     benchmark:
         "results/benchmarks/rules/fig5_data.tsv"
+    params:
+        lo=config["fig5"]["omega_bar_min"],
+        hi=config["fig5"]["omega_bar_max"],
+        points=config["fig5"]["count_points"],
     script:
         "../scripts/fig5_data.py"
 
@@ -121,14 +121,14 @@ rule fig6_data:
         code=code("fig6_data"),
     output:
         "results/fig6/fig6.csv",
-    params:
-        lo=config["fig6"]["log10_omega_check_min"],
-        hi=config["fig6"]["log10_omega_check_max"],
-        points=config["fig6"]["points"],
     log:
         "results/logs/fig6_data.log",
     benchmark:
         "results/benchmarks/rules/fig6_data.tsv"
+    params:
+        lo=config["fig6"]["log10_omega_check_min"],
+        hi=config["fig6"]["log10_omega_check_max"],
+        points=config["fig6"]["points"],
     script:
         "../scripts/fig6_data.py"
 
@@ -140,14 +140,14 @@ rule fig7_data:
         code=code("fig7_data"),
     output:
         "results/fig7/fig7.csv",
-    params:
-        lo=config["fig7"]["log10_omega_check_min"],
-        hi=config["fig7"]["log10_omega_check_max"],
-        points=config["fig7"]["points"],
     log:
         "results/logs/fig7_data.log",
     benchmark:
         "results/benchmarks/rules/fig7_data.tsv"
+    params:
+        lo=config["fig7"]["log10_omega_check_min"],
+        hi=config["fig7"]["log10_omega_check_max"],
+        points=config["fig7"]["points"],
     script:
         "../scripts/fig7_data.py"
 

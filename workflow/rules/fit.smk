@@ -6,12 +6,12 @@ rule fit_gent_schultz:
         code=code("fit_gent_schultz"),
     output:
         "results/fit/gent_schultz.json",
-    params:
-        figures_use=config["fit"]["figures_use"],
     log:
         "results/logs/fit_gent_schultz.log",
     benchmark:
         "results/benchmarks/rules/fit_gent_schultz.tsv"
+    params:
+        figures_use=config["fit"]["figures_use"],
     script:
         "../scripts/fit_gent_schultz.py"
 

@@ -13,13 +13,13 @@ rule pulloff_sensitivity:
         code=code("pulloff_sensitivity"),
     output:
         "results/validation/identifiability/sensitivity/{parameter}_{sign}.csv",
-    wildcard_constraints:
-        parameter="w0|n|v0",
-        sign="plus|minus",
     log:
         "results/logs/pulloff_sensitivity_{parameter}_{sign}.log",
     benchmark:
         "results/benchmarks/rules/pulloff_sensitivity_{parameter}_{sign}.tsv"
+    wildcard_constraints:
+        parameter="w0|n|v0",
+        sign="plus|minus",
     script:
         "../scripts/pulloff_sensitivity.py"
 
@@ -32,12 +32,12 @@ rule identifiability_fit:
         code=code("identifiability_fit"),
     output:
         "results/validation/identifiability/fits/{model}.csv",
-    wildcard_constraints:
-        model="|".join(FITTED_LEVELS),
     log:
         "results/logs/identifiability_fit_{model}.log",
     benchmark:
         "results/benchmarks/rules/identifiability_fit_{model}.tsv"
+    wildcard_constraints:
+        model="|".join(FITTED_LEVELS),
     script:
         "../scripts/identifiability_fit.py"
 
@@ -46,18 +46,21 @@ rule identifiability:
     """Sensitivity of the simulated pull-off, Cramer-Rao standard errors per design and noise, fits of every level."""
     input:
         virtual=VIRTUAL_RIGID,
-        sensitivity=expand(rules.pulloff_sensitivity.output[0], zip,
-                           parameter=[r.split("_")[0] for r in SENSITIVITY_RUNS],
-                           sign=[r.split("_")[1] for r in SENSITIVITY_RUNS]),
+        sensitivity=expand(
+            rules.pulloff_sensitivity.output[0],
+            zip,
+            parameter=[r.split("_")[0] for r in SENSITIVITY_RUNS],
+            sign=[r.split("_")[1] for r in SENSITIVITY_RUNS],
+        ),
         fits=expand(rules.identifiability_fit.output[0], model=FITTED_LEVELS),
         code=code("identifiability"),
     output:
         sensitivity="results/validation/identifiability/sensitivity.csv",
         information="results/validation/identifiability/information.csv",
         fits="results/validation/identifiability/fits.csv",
-    params:
-        noise=config["identifiability"]["relative_noise"],
     log:
         "results/logs/identifiability.log",
+    params:
+        noise=config["identifiability"]["relative_noise"],
     script:
         "../scripts/identifiability.py"

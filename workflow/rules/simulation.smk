@@ -10,13 +10,13 @@ rule simulation_rigid:
         code=code("simulation_rigid"),
     output:
         "results/simulation/rigid/h1_{h1}.csv",
-    params:
-        lo=config["validation"]["log10_omega_check_min"],
-        hi=config["validation"]["log10_omega_check_max"],
     log:
         "results/logs/simulation_rigid_h1_{h1}.log",
     benchmark:
         "results/benchmarks/rules/simulation_rigid_h1_{h1}.tsv"
+    params:
+        lo=config["validation"]["log10_omega_check_min"],
+        hi=config["validation"]["log10_omega_check_max"],
     script:
         "../scripts/simulation_rigid.py"
 
@@ -46,13 +46,13 @@ rule virtual_pulloff:
         code=code("virtual_pulloff"),
     output:
         "results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv",
-    wildcard_constraints:
-        fixation="rigid|compliant",
-        frequency=r"[0-9.]+",
     log:
         "results/logs/virtual_pulloff_{fixation}_{frequency}Hz.log",
     benchmark:
         "results/benchmarks/rules/virtual_pulloff_{fixation}_{frequency}Hz.tsv"
+    wildcard_constraints:
+        fixation="rigid|compliant",
+        frequency=r"[0-9.]+",
     script:
         "../scripts/virtual_pulloff.py"
 
@@ -65,10 +65,10 @@ rule virtual_pulloff_fixation:
         code=code("virtual_pulloff_fixation"),
     output:
         "results/simulation/virtual_pulloff_{fixation}.csv",
-    wildcard_constraints:
-        fixation="rigid|compliant",
     log:
         "results/logs/virtual_pulloff_{fixation}.log",
+    wildcard_constraints:
+        fixation="rigid|compliant",
     script:
         "../scripts/virtual_pulloff_fixation.py"
 

@@ -41,13 +41,13 @@ rule validation_compliant:
     output:
         csv="results/validation/compliant_sweep.csv",
         curve="results/validation/compliant_sweep_refined.csv",
-    params:
-        sweep=config["validation"]["compliant_sweep"],
-        curve_range=[config["fig5"]["omega_bar_min"], config["fig5"]["omega_bar_max"]],
     log:
         "results/logs/validation_compliant.log",
     benchmark:
         "results/benchmarks/rules/validation_compliant.tsv"
+    params:
+        sweep=config["validation"]["compliant_sweep"],
+        curve_range=[config["fig5"]["omega_bar_min"], config["fig5"]["omega_bar_max"]],
     script:
         "../scripts/validation_compliant.py"
 

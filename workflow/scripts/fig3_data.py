@@ -1,4 +1,5 @@
-# Rule fig3_data: vibroadhesion.pipeline.steps.fig3.fig3_data.
+"""Rule fig3_data: vibroadhesion.pipeline.steps.fig3.fig3_data."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.fig3 import fig3_data
 

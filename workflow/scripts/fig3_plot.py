@@ -1,4 +1,5 @@
-# Rule fig3_plot: vibroadhesion.pipeline.steps.plots.fig3_plot.
+"""Rule fig3_plot: vibroadhesion.pipeline.steps.plots.fig3_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import fig3_plot
 

@@ -1,4 +1,5 @@
-# Rule fig4_data: vibroadhesion.pipeline.steps.fig4.fig4_data.
+"""Rule fig4_data: vibroadhesion.pipeline.steps.fig4.fig4_data."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.fig4 import fig4_data
 

@@ -1,4 +1,5 @@
-# Rule fig4_plot: vibroadhesion.pipeline.steps.plots.fig4_plot.
+"""Rule fig4_plot: vibroadhesion.pipeline.steps.plots.fig4_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import fig4_plot
 

@@ -1,4 +1,5 @@
-# Rule fig5_data: vibroadhesion.pipeline.steps.fig5.fig5_data.
+"""Rule fig5_data: vibroadhesion.pipeline.steps.fig5.fig5_data."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.fig5 import fig5_data
 

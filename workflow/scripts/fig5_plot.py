@@ -1,4 +1,5 @@
-# Rule fig5_plot: vibroadhesion.pipeline.steps.plots.fig5_plot.
+"""Rule fig5_plot: vibroadhesion.pipeline.steps.plots.fig5_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import fig5_plot
 

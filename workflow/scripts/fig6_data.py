@@ -1,4 +1,5 @@
-# Rule fig6_data: vibroadhesion.pipeline.steps.rigid.fig6_data.
+"""Rule fig6_data: vibroadhesion.pipeline.steps.rigid.fig6_data."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.rigid import fig6_data
 

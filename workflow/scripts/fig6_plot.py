@@ -1,4 +1,5 @@
-# Rule fig6_plot: vibroadhesion.pipeline.steps.plots.fig6_plot.
+"""Rule fig6_plot: vibroadhesion.pipeline.steps.plots.fig6_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import fig6_plot
 

@@ -1,4 +1,5 @@
-# Rule fig7_data: vibroadhesion.pipeline.steps.rigid.fig7_data.
+"""Rule fig7_data: vibroadhesion.pipeline.steps.rigid.fig7_data."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.rigid import fig7_data
 

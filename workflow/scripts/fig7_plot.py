@@ -1,4 +1,5 @@
-# Rule fig7_plot: vibroadhesion.pipeline.steps.plots.fig7_plot.
+"""Rule fig7_plot: vibroadhesion.pipeline.steps.plots.fig7_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import fig7_plot
 

@@ -1,4 +1,5 @@
-# Rule fig8_data: vibroadhesion.pipeline.steps.fig8.fig8_data.
+"""Rule fig8_data: vibroadhesion.pipeline.steps.fig8.fig8_data."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.fig8 import fig8_data
 

@@ -1,4 +1,5 @@
-# Rule fig8_plot: vibroadhesion.pipeline.steps.plots.fig8_plot.
+"""Rule fig8_plot: vibroadhesion.pipeline.steps.plots.fig8_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import fig8_plot
 

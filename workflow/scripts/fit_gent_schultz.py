@@ -1,4 +1,5 @@
-# Rule fit_gent_schultz: vibroadhesion.pipeline.steps.fit.fit.
+"""Rule fit_gent_schultz: vibroadhesion.pipeline.steps.fit.fit."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.fit import fit
 

@@ -1,4 +1,5 @@
-# Rule identifiability: vibroadhesion.pipeline.steps.identifiability.summary.
+"""Rule identifiability: vibroadhesion.pipeline.steps.identifiability.summary."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.identifiability import summary
 

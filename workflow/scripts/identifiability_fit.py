@@ -1,4 +1,5 @@
-# Rule identifiability_fit: vibroadhesion.pipeline.steps.identifiability.fit_level.
+"""Rule identifiability_fit: vibroadhesion.pipeline.steps.identifiability.fit_level."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.identifiability import fit_level
 

@@ -1,4 +1,5 @@
-# Rule ingest: validate data/setup.yaml and data/pulloff.csv, write their canonical copies.
+"""Rule ingest: validate data/setup.yaml and data/pulloff.csv, write their canonical copies."""
+
 from vibroadhesion.pipeline.data import ingest
 from vibroadhesion.pipeline.steps import logged
 

@@ -1,4 +1,5 @@
-# Rule pulloff_sensitivity: vibroadhesion.pipeline.steps.identifiability.sensitivity_run.
+"""Rule pulloff_sensitivity: vibroadhesion.pipeline.steps.identifiability.sensitivity_run."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.identifiability import sensitivity_run
 

@@ -1,4 +1,5 @@
-# Rule report_index: vibroadhesion.pipeline.pages.write_index.
+"""Rule report_index: vibroadhesion.pipeline.pages.write_index."""
+
 from vibroadhesion.pipeline.pages import write_index
 from vibroadhesion.pipeline.steps import logged
 

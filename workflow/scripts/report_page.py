@@ -1,4 +1,5 @@
-# Rule report_page: vibroadhesion.pipeline.steps.report.page.
+"""Rule report_page: vibroadhesion.pipeline.steps.report.page."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.report import page
 

@@ -1,7 +1,9 @@
-# Rule simulation_rigid: vibroadhesion.pipeline.steps.simulation.rigid_part.
+"""Rule simulation_rigid: vibroadhesion.pipeline.steps.simulation.rigid_part."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.simulation import rigid_part
 
 p = snakemake.params
 with logged(snakemake.log[0], snakemake.rule):
-    rigid_part(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], float(snakemake.wildcards.h1), p.lo, p.hi)
+    rigid_part(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], float(snakemake.wildcards.h1),
+               p.lo, p.hi)

@@ -1,4 +1,5 @@
-# Rule simulation_rigid_grid: vibroadhesion.pipeline.steps.simulation.rigid_grid.
+"""Rule simulation_rigid_grid: vibroadhesion.pipeline.steps.simulation.rigid_grid."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.simulation import rigid_grid
 

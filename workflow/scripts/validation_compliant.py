@@ -1,4 +1,5 @@
-# Rule validation_compliant: vibroadhesion.pipeline.steps.validation.compliant_sweep.
+"""Rule validation_compliant: vibroadhesion.pipeline.steps.validation.compliant_sweep."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.validation import compliant_sweep
 

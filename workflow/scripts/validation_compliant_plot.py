@@ -1,4 +1,5 @@
-# Rule validation_compliant_plot: vibroadhesion.pipeline.steps.plots.compliant_sweep_plot.
+"""Rule validation_compliant_plot: vibroadhesion.pipeline.steps.plots.compliant_sweep_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import compliant_sweep_plot
 

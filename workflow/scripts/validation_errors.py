@@ -1,4 +1,5 @@
-# Rule validation_errors: vibroadhesion.pipeline.steps.validation.rigid_errors.
+"""Rule validation_errors: vibroadhesion.pipeline.steps.validation.rigid_errors."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.validation import rigid_errors
 

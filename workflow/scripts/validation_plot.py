@@ -1,4 +1,5 @@
-# Rule validation_plot: vibroadhesion.pipeline.steps.plots.validation_plot.
+"""Rule validation_plot: vibroadhesion.pipeline.steps.plots.validation_plot."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import validation_plot
 

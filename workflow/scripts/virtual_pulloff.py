@@ -1,7 +1,9 @@
-# Rule virtual_pulloff: vibroadhesion.pipeline.steps.simulation.virtual_pulloff_part.
+"""Rule virtual_pulloff: vibroadhesion.pipeline.steps.simulation.virtual_pulloff_part."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.simulation import virtual_pulloff_part
 
 wc = snakemake.wildcards
 with logged(snakemake.log[0], snakemake.rule):
-    virtual_pulloff_part(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], wc.fixation, float(wc.frequency))
+    virtual_pulloff_part(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], wc.fixation,
+                         float(wc.frequency))

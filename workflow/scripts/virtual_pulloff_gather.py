@@ -1,4 +1,5 @@
-# Rule virtual_pulloff_gather: vibroadhesion.pipeline.steps.gather.concatenate.
+"""Rule virtual_pulloff_gather: vibroadhesion.pipeline.steps.gather.concatenate."""
+
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.gather import concatenate
 

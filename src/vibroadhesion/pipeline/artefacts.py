@@ -1,4 +1,6 @@
-"""Deterministic writers for the pipeline's tables (CSV, JSON); figures: :func:`vibroadhesion.pipeline.figures.save_figure`.
+"""Deterministic writers for the pipeline's tables (CSV, JSON).
+
+Figures are written by :func:`vibroadhesion.pipeline.figures.save_figure`.
 
 Same inputs give the same bytes: CSVs use a fixed float format and line ending, and every file is
 written to a temporary name in its folder and moved into place

@@ -2,22 +2,23 @@
 
 Both are checked against JSON schemas (draft 2020-12) shipped in ``vibroadhesion/pipeline/schemas/``:
 ``setup.schema.json`` describes the whole YAML document, ``pulloff.schema.json`` ONE row of the
-CSV (each row is validated against it). Every problem raises :class:`DataError` whose message is
+CSV (each row is validated against it); the schemas, their messages and :class:`DataError` live
+in :mod:`vibroadhesion.pipeline.input_checks`. Every problem raises a ``DataError`` whose message is
 a single line ``"<file>, row <r>, column <c>: <what is wrong>"``:
 
 * CSV: ``row`` is the 1-based line number in the file, ``column`` the column name (or ``header``);
 * YAML: ``row`` is the 1-based line of the offending node, ``column`` the dotted key path, e.g.
   ``sample.poisson_ratio.value`` (list items as ``...value[1]``).
 
-Row 0 means the file as a whole (it cannot be read). ``python -m vibroadhesion.pipeline.data SETUP PULLOFF
-OUT_JSON OUT_CSV`` validates both files and writes canonical copies atomically (see :func:`main`).
+Row 0 means the file as a whole (it cannot be read).
+``python -m vibroadhesion.pipeline.data SETUP PULLOFF OUT_JSON OUT_CSV`` validates both files and
+writes canonical copies atomically (see :func:`main`).
 """
 
 from __future__ import annotations
 
 import argparse
 import csv
-import difflib
 import io
 import json
 import math
@@ -26,17 +27,22 @@ import sys
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import ExitStack
 from dataclasses import dataclass, field
-from functools import lru_cache
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import pandas as pd
 import yaml
-from jsonschema import Draft202012Validator
-from jsonschema.exceptions import ValidationError
 
 from vibroadhesion.pipeline.atomic import atomic_path
+from vibroadhesion.pipeline.input_checks import (
+    KEYWORD_ORDER,
+    DataError,
+    dotted,
+    kind_of,
+    read_text,
+    schema_message,
+    schema_validator,
+)
 
 PULLOFF_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN", "source")
 NUMERIC_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN")
@@ -60,13 +66,8 @@ _SETUP_LISTS: dict[str, tuple[str, str]] = {
 }
 
 
-class DataError(ValueError):
-    """One-line message: '<file>, row <r>, column <c>: <what is wrong>'."""
-
-    def __init__(self, path: str | Path, row: int, column: str, message: str) -> None:
-        self.path, self.row, self.column = str(path), int(row), str(column)
-        self.message = " ".join(str(message).split())  # one line, whatever the source text
-        super().__init__(f"{self.path}, row {self.row}, column {self.column}: {self.message}")
+#: The value of an entry of data/setup.yaml: a number or a list of numbers.
+SetupValue = float | tuple[float, ...]
 
 
 @dataclass(frozen=True)
@@ -85,8 +86,8 @@ class Setup:
     n: float
     v0: float  # m/s
     sources: dict[str, str]  # "group.entry" -> source text
-    fixation: dict[str, object] = field(default_factory=dict)  # optional group: entry -> raw value
-    values: dict[str, object] = field(default_factory=dict)  # "group.entry" -> value (float or tuple)
+    fixation: dict[str, SetupValue] = field(default_factory=dict)  # optional group: entry -> value
+    values: dict[str, SetupValue] = field(default_factory=dict)  # "group.entry" -> value
     units: dict[str, str] = field(default_factory=dict)  # "group.entry" -> unit
 
     @property
@@ -94,103 +95,11 @@ class Setup:
         """E* = f_storage * E / (1 - nu^2) (Appendix A, Sec. 3.4)."""
         return self.storage_modulus_factor * self.youngs_modulus / (1.0 - self.poisson_ratio**2)
 
-
-# ----------------------------------------------------------------------------- schemas
-
-
-@lru_cache(maxsize=None)
-def schema(name: str) -> dict[str, Any]:
-    """The packaged JSON schema ``name`` (``"setup"`` or ``"pulloff"``)."""
-    text = resources.files("vibroadhesion.pipeline").joinpath("schemas", f"{name}.schema.json").read_text(encoding="utf-8")
-    return json.loads(text)
-
-
-@lru_cache(maxsize=None)
-def _validator(name: str) -> Draft202012Validator:
-    return Draft202012Validator(schema(name))
-
-
-def _fmt(value: object) -> str:
-    if isinstance(value, bool) or value is None:
-        return str(value).lower()
-    if isinstance(value, (int, float)):
-        return repr(value)
-    if isinstance(value, str):
-        return f'"{value}"'
-    return _kind(value)
-
-
-def _kind(value: object) -> str:
-    if value is None:
-        return "an empty value"
-    if isinstance(value, bool):
-        return f"the boolean {str(value).lower()}"
-    if isinstance(value, (int, float)):
-        return f"the number {value!r}"
-    if isinstance(value, str):
-        return f'the text "{value}"'
-    if isinstance(value, list):
-        return "a list"
-    if isinstance(value, dict):
-        return "a mapping"
-    return "an unsupported value"
-
-
-_TYPE_NAMES = {"number": "a number", "array": "a list", "object": "a mapping", "string": "text"}
-
-
-def _message(error: ValidationError) -> tuple[tuple[Any, ...], str, bool]:
-    """(path of the offending node, message, whether the row is the parent key's line)."""
-    path = tuple(error.absolute_path)
-    custom = error.schema.get("x-messages", {}) if isinstance(error.schema, dict) else {}
-    value = error.instance
-    if error.validator in custom:
-        return path, custom[error.validator].format(value=_fmt(value) if not isinstance(value, str) else value,
-                                                    got=_kind(value)), False
-    if error.validator == "required":
-        present = value if isinstance(value, dict) else {}
-        missing = next(k for k in error.validator_value if k not in present)
-        return path + (missing,), f'missing required key "{missing}"', True
-    if error.validator == "additionalProperties":
-        allowed = set(error.schema.get("properties", {}))
-        extra = sorted(str(k) for k in value if k not in allowed)
-        close = difflib.get_close_matches(extra[0], sorted(allowed), n=1)
-        if close:
-            hint = f'; did you mean "{close[0]}"?'
-        else:
-            hint = f"; allowed here: {', '.join(sorted(allowed))}" if allowed else ""
-        return path + (extra[0],), f'unknown key "{extra[0]}" (not declared in the schema{hint})', True
-    if error.validator == "type":
-        expected = error.validator_value
-        names = [_TYPE_NAMES.get(t, t) for t in ([expected] if isinstance(expected, str) else expected)]
-        return path, f"expected {' or '.join(names)}, got {_kind(value)}", False
-    generic = {
-        "exclusiveMinimum": f"must be > {_fmt(error.validator_value)}, got {_fmt(value)}",
-        "minimum": f"must be >= {_fmt(error.validator_value)}, got {_fmt(value)}",
-        "maximum": f"must be <= {_fmt(error.validator_value)}, got {_fmt(value)}",
-        "minItems": "list must not be empty",
-        "uniqueItems": "list repeats a value",
-        "minLength": "must not be empty",
-        "pattern": "must not be empty",
-        "const": f"must be {_fmt(error.validator_value)}, got {_fmt(value)}",
-    }
-    return path, generic.get(error.validator, f"invalid value ({error.validator})"), False
-
-
-_KEYWORD_ORDER = {"required": 0, "additionalProperties": 1, "type": 2, "exclusiveMinimum": 3, "minimum": 4, "maximum": 5}
-
-
-def _dotted(path: Sequence[Any]) -> str:
-    out = ""
-    for part in path:
-        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
-    return out or "(document)"
-
-
 # ----------------------------------------------------------------------------- setup.yaml
 
 
-class _Loader(yaml.SafeLoader):
+# yaml has no type information in the lock (no py.typed, no stubs), so its classes are Any to mypy.
+class _Loader(yaml.SafeLoader):  # type: ignore[misc]
     """Safe loader that also reads ``1e-3`` / ``2E6`` as floats (YAML 1.2 style)."""
 
 
@@ -211,10 +120,11 @@ def _node_lines(path: str | Path, node: yaml.Node) -> dict[tuple[Any, ...], tupl
             for key_node, value_node in n.value:
                 row = key_node.start_mark.line + 1
                 if not isinstance(key_node, yaml.ScalarNode) or key_node.tag != "tag:yaml.org,2002:str":
-                    raise DataError(path, row, _dotted(prefix), "keys must be plain text names")
+                    raise DataError(path, row, dotted(prefix), "keys must be plain text names")
                 key = key_node.value
                 if key in seen:
-                    raise DataError(path, row, _dotted(prefix + (key,)), f"duplicate key (first given at row {seen[key]})")
+                    raise DataError(path, row, dotted(prefix + (key,)),
+                                    f"duplicate key (first given at row {seen[key]})")
                 seen[key] = row
                 lines[prefix + (key,)] = (row, value_node.start_mark.line + 1)
                 walk(value_node, prefix + (key,))
@@ -239,18 +149,6 @@ def _iter_nonfinite(value: Any, prefix: tuple[Any, ...] = ()) -> Iterator[tuple[
             yield from _iter_nonfinite(v, prefix + (i,))
 
 
-def _read_text(path: Path) -> str:
-    try:
-        raw = path.read_bytes()
-    except OSError as exc:
-        raise DataError(path, 0, "(file)", f"cannot read file: {exc.strerror or type(exc).__name__}") from None
-    try:
-        return raw.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        row = raw[: exc.start].count(b"\n") + 1
-        raise DataError(path, row, "(file)", "file is not UTF-8 text") from None
-
-
 def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any, ...], bool], int]) -> Setup:
     """Validate a setup document (parsed YAML or canonical JSON) and build :class:`Setup`.
 
@@ -258,18 +156,21 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
     ``key_line``, e.g. for a missing or unknown key).
     """
     if doc is None:
-        raise DataError(path, 1, "(document)", "file is empty; expected the groups indenter, sample, test_conditions, gent_schultz_published")
+        raise DataError(path, 1, "(document)",
+                        "file is empty; expected the groups indenter, sample, test_conditions, gent_schultz_published")
     if not isinstance(doc, dict):
-        raise DataError(path, locate((), False), "(document)", f"expected a mapping of groups at the top level, got {_kind(doc)}")
+        raise DataError(path, locate((), False), "(document)",
+                        f"expected a mapping of groups at the top level, got {kind_of(doc)}")
     for bad in _iter_nonfinite(doc):
-        raise DataError(path, locate(bad, False), _dotted(bad), "value must be a finite number (got nan or inf)")
+        raise DataError(path, locate(bad, False), dotted(bad), "value must be a finite number (got nan or inf)")
     errors = []
-    for error in _validator("setup").iter_errors(doc):
-        node_path, message, key_line = _message(error)
-        row = locate(node_path if not key_line or error.validator == "additionalProperties" else node_path[:-1], key_line)
+    for error in schema_validator("setup").iter_errors(doc):
+        node_path, message, key_line = schema_message(error)
+        parent_key = key_line and error.validator != "additionalProperties"
+        row = locate(node_path[:-1] if parent_key else node_path, key_line)
         # an unknown key (often a misspelt one) is reported before the missing key it stands for
-        errors.append((error.validator != "additionalProperties", row, _KEYWORD_ORDER.get(error.validator, 9),
-                       _dotted(node_path), message))
+        errors.append((error.validator != "additionalProperties", row, KEYWORD_ORDER.get(error.validator, 9),
+                       dotted(node_path), message))
     if errors:
         _, row, _, column, message = min(errors)
         raise DataError(path, row, column, message)
@@ -277,7 +178,9 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
     def value(group: str, entry: str) -> Any:
         return doc[group][entry]["value"]
 
-    sources, values, units = {}, {}, {}
+    sources: dict[str, str] = {}
+    values: dict[str, SetupValue] = {}
+    units: dict[str, str] = {}
     for group, entries in doc.items():
         for entry, spec in entries.items():
             key = f"{group}.{entry}"
@@ -286,9 +189,11 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
             values[key] = tuple(float(x) for x in v) if isinstance(v, list) else float(v)
             units[key] = spec["unit"]
     fixation = {entry: values[f"fixation.{entry}"] for entry in doc.get("fixation", {})}
+    scalars: dict[str, Any] = {name: float(value(*where)) for name, where in _SETUP_FIELDS.items()}
+    lists: dict[str, Any] = {name: tuple(float(x) for x in value(*where)) for name, where in _SETUP_LISTS.items()}
     return Setup(
-        **{name: float(value(*where)) for name, where in _SETUP_FIELDS.items()},
-        **{name: tuple(float(x) for x in value(*where)) for name, where in _SETUP_LISTS.items()},
+        **scalars,
+        **lists,
         sources=sources,
         fixation=fixation,
         values=values,
@@ -298,7 +203,7 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
 
 def _parse_setup(path: str | Path) -> tuple[Setup, dict[str, Any]]:
     path = Path(path)
-    text = _read_text(path)
+    text = read_text(path)
     try:
         loader = _Loader(text)
         try:
@@ -351,7 +256,7 @@ def _canonical_setup(doc: dict[str, Any]) -> dict[str, Any]:
 def read_canonical_setup(path: str | Path) -> Setup:
     """Read the canonical JSON written by :func:`main` (re-validated against the same schema)."""
     path = Path(path)
-    text = _read_text(path)
+    text = read_text(path)
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:
@@ -408,14 +313,14 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
     the file); zero data rows give an empty frame with those columns and dtypes.
     """
     path = Path(path)
-    text = _read_text(path)
+    text = read_text(path)
     lines = text.splitlines()
     if not text.strip():
         raise DataError(path, 1, "header", f"file is empty; expected the header line {','.join(PULLOFF_COLUMNS)}")
     header: list[str] | None = None
     records: list[dict[str, Any]] = []
     seen: dict[tuple[Any, ...], int] = {}
-    validator = _validator("pulloff")
+    row_validator = schema_validator("pulloff")
     for line_no, line in enumerate(lines, start=1):
         stripped = line.strip()
         if not stripped or stripped.startswith("#"):
@@ -427,15 +332,15 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
         cells = _split(path, line_no, line, "(row)")
         if len(cells) != len(header):
             _field_count_error(path, line_no, header, cells)
-        row = dict(zip(header, cells))
+        row = dict(zip(header, cells, strict=True))
         record: dict[str, Any] = {c: _number(path, line_no, c, row[c]) for c in NUMERIC_COLUMNS}
         record["source"] = row["source"].strip()
         errors = []
-        for error in validator.iter_errors(record):
-            node_path, message, _ = _message(error)
+        for error in row_validator.iter_errors(record):
+            node_path, message, _ = schema_message(error)
             column = str(node_path[0]) if node_path else "(row)"
             errors.append((PULLOFF_COLUMNS.index(column) if column in PULLOFF_COLUMNS else 9,
-                           _KEYWORD_ORDER.get(error.validator, 9), column, message))
+                           KEYWORD_ORDER.get(error.validator, 9), column, message))
         if errors:
             _, _, column, message = min(errors)
             raise DataError(path, line_no, column, message)
@@ -455,7 +360,8 @@ def _check_header(path: Path, line_no: int, header: list[str]) -> None:
     expected = ",".join(PULLOFF_COLUMNS)
     if len(header) == 1 and (";" in header[0] or "\t" in header[0]):
         sep = "';'" if ";" in header[0] else "a tab"
-        raise DataError(path, line_no, "header", f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
+        raise DataError(path, line_no, "header",
+                        f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
     seen: set[str] = set()
     for name in header:
         if not name:
@@ -496,7 +402,8 @@ def _pulloff_csv_text(frame: pd.DataFrame) -> str:
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(PULLOFF_COLUMNS)
     for rec in frame.itertuples(index=False):
-        writer.writerow([repr(float(rec.frequency_hz)), repr(float(rec.h1_um)), repr(float(rec.pulloff_mN)), str(rec.source)])
+        writer.writerow([repr(float(rec.frequency_hz)), repr(float(rec.h1_um)), repr(float(rec.pulloff_mN)),
+                         str(rec.source)])
     return buf.getvalue()
 
 

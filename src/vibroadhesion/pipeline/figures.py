@@ -1,7 +1,8 @@
-"""Drawings of the figures (plots): each ``plot_figN`` draws the table that
-:mod:`vibroadhesion.experiments.figure_tables` computed (and nothing it would have to recompute
-with a solver), so restyling a plot never reruns a solve. :func:`save_figure` writes PDF and PNG
-without time stamps. The only module of the package that imports matplotlib.
+"""Drawings of the figures (plots).
+
+Each ``plot_figN`` draws the table that :mod:`vibroadhesion.experiments.figure_tables` computed (and nothing it
+would have to recompute with a solver), so restyling a plot never reruns a solve. :func:`save_figure` writes PDF and
+PNG without time stamps. The only module of the package that imports matplotlib.
 """
 
 from __future__ import annotations
@@ -16,6 +17,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
+from matplotlib.axes import Axes  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.patches import Rectangle  # noqa: E402
 
 from vibroadhesion.core.integrals import j_integrals_large_abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
@@ -40,7 +44,7 @@ _PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
 _PNG_METADATA = {"Software": None}
 
 
-def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
+def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
     """Save ``fig`` as PDF and PNG without time stamps, then close it."""
     with atomic_path(pdf) as tmp:
         fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight")
@@ -52,7 +56,7 @@ def save_figure(fig: plt.Figure, pdf: str | Path, png: str | Path) -> None:
 # --- Fig. 3: the J-integrals -------------------------------------------------------------
 
 
-def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[float]) -> plt.Figure:
+def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[float]) -> Figure:
     """(a) J0, -Jc1, J1 for the fitted n with their large-Abar asymptotes; (b) J0, -Jc1 for several n."""
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     rows = table[np.isclose(table["n"], n_fitted)]
@@ -62,6 +66,7 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
         [(r"$\mathcal{J}_0$", "J0", 1), (r"$-\mathcal{J}_{c1}$", "Jc1", -1), (r"$\mathcal{J}_1$", "J1", 1)],
         asym,
         ["C0", "C1", "C2"],
+        strict=True,
     ):
         ax_a.loglog(abar, sign * rows[column], color=color, label=label)
         ax_a.loglog(abar, sign * a, "--", color=color, lw=0.9, label=f"{label}, large-$\\bar A$ asymptote")
@@ -82,15 +87,22 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
 
 
 def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
-    """The rows of virtual_pulloff.csv that Figs. 4 and 7 draw: the simulated pull-off of the RIGID fixation
-    (the figures' model); the compliant rows are a different experiment (report page only)."""
-    return virtual[(virtual["fixation"] == "rigid") & (virtual["model"] == "simulation") & (virtual["status"] == "pulloff")]
+    """The rows of virtual_pulloff.csv that Figs. 4 and 7 draw.
+
+    The simulated pull-off of the RIGID fixation (the figures' model); the compliant rows are a different experiment
+    (report page only).
+    """
+    keep = (virtual["fixation"] == "rigid") & (virtual["model"] == "simulation") & (virtual["status"] == "pulloff")
+    return virtual[keep]
 
 
 def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
-              virtual: pd.DataFrame | None = None) -> plt.Figure:
-    """P_cr/P_JKR against h1: leading-order, refined and exact-averaging curves, measured rows by source,
-    and the simulated pull-off of the rigidly fixed virtual experiment (its own, labelled series: not measurements)."""
+              virtual: pd.DataFrame | None = None) -> Figure:
+    """Fig. 4: P_cr/P_JKR against h1.
+
+    Leading-order, refined and exact-averaging curves, measured rows by source,
+    and the simulated pull-off of the rigidly fixed virtual experiment (its own, labelled series: not measurements).
+    """
     fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)
     lead = table[table["model"] == "leading"]
     ax.plot(lead["h1_um"], lead["ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
@@ -98,7 +110,8 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     for k, (f, rows) in enumerate(refined.groupby("frequency_hz", sort=True)):
         ax.plot(rows["h1_um"], rows["ratio"], "--", color=f"C{k}", lw=1.0, label=f"refined, Eq. (106), {f:g} Hz")
     exact = table[table["model"] == "exact_averaging"]
-    ax.plot(exact["h1_um"], exact["ratio"], "k:", lw=1.4, label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
+    ax.plot(exact["h1_um"], exact["ratio"], "k:", lw=1.4,
+            label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
     if virtual is not None:
         sim = _simulated_rigid_pulloff(virtual)
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
@@ -118,16 +131,16 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
 
-def _by_amplitude(table: pd.DataFrame):
+def _by_amplitude(table: pd.DataFrame) -> Any:
     return table.groupby("h1_um", sort=True)
 
 
-def _mark_frequencies(ax: plt.Axes, experiment_omega_check: Mapping[float, float]) -> None:
-    for k, (f, w) in enumerate(sorted(experiment_omega_check.items())):
+def _mark_frequencies(ax: Axes, experiment_omega_check: Mapping[float, float]) -> None:
+    for k, (_f, w) in enumerate(sorted(experiment_omega_check.items())):
         ax.axvline(w, color="0.5", lw=0.7, ls=(0, (1, 2)), label="test frequencies 200/300/400 Hz" if k == 0 else None)
 
 
-def shade_amplitude_regions(ax: plt.Axes) -> None:
+def shade_amplitude_regions(ax: Axes) -> None:
     """Shade A > a_m (geometrically impossible) and A <= 0.1 a_m (the model applies) on an A/a_m axis."""
     lo, hi = ax.get_ylim()
     ax.axhspan(1.0, max(hi, 10.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
@@ -136,15 +149,16 @@ def shade_amplitude_regions(ax: plt.Axes) -> None:
 
 
 def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float],
-              validation: pd.DataFrame | None = None) -> plt.Figure:
+              validation: pd.DataFrame | None = None) -> Figure:
     """(a) Abar, (b) abar_m, (c) w_eff/w0, (d) A/a_m against omega_check, regions of (d) shaded.
 
     With the validation grid: the simulated steady states of the full model (filled markers) and the
-    exact high-frequency averaging (dotted) over the paper's refined model (solid)."""
+    exact high-frequency averaging (dotted) over the paper's refined model (solid).
+    """
     fig, axes = plt.subplots(2, 2, figsize=(9.0, 6.4), constrained_layout=True, sharex=True)
     panels = [("Abar", r"$\bar A$", "log"), ("abar_m", r"$\bar a_m = a_m/a_o$", "linear"),
               ("w_eff_ratio", r"$w_{eff}/w_0$", "linear"), ("A_over_am", r"$A/a_m$", "log")]
-    for ax, (column, label, yscale), letter in zip(axes.flat, panels, "abcd"):
+    for ax, (column, label, yscale), letter in zip(axes.flat, panels, "abcd", strict=True):
         for k, (h1, rows) in enumerate(_by_amplitude(table)):
             ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
             if validation is not None:
@@ -166,9 +180,12 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 
 def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float],
-              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None) -> plt.Figure:
-    """(a) Abar_cr and (b) P_cr/P_JKR against omega_check; dashed: the leading-order values (Eq. 72);
-    dotted: the exact high-frequency averaging with the same criterion a_m = a_cr (Fig. 4's rows)."""
+              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None) -> Figure:
+    """(a) Abar_cr and (b) P_cr/P_JKR against omega_check.
+
+    Dashed: the leading-order values (Eq. 72); dotted: the exact high-frequency averaging with the same criterion
+    a_m = a_cr (Fig. 4's rows).
+    """
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     for k, (h1, rows) in enumerate(_by_amplitude(table)):
         lead = leading[np.isclose(leading["h1_um"], h1)].iloc[0]
@@ -182,7 +199,8 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
         if virtual is not None:
             sim = _simulated_rigid_pulloff(virtual)
             sim = sim[np.isclose(sim["h1_um"], h1)]
-            ax_b.plot([experiment_omega_check[f] for f in sim["frequency_hz"]], sim["pulloff_ratio"], "o", color=f"C{k}",
+            sim_omega_check = [experiment_omega_check[f] for f in sim["frequency_hz"]]
+            ax_b.plot(sim_omega_check, sim["pulloff_ratio"], "o", color=f"C{k}",
                       ms=4, label="simulated pull-off (virtual experiment)" if k == 0 else None)
     for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):
         _mark_frequencies(ax, experiment_omega_check)
@@ -193,11 +211,12 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     return fig
 
 
-def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
+def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> Figure:
     """Storage and loss contact stiffness relative to 2E*a_m, and the phase, against omega_check."""
     fig, axes = plt.subplots(1, 3, figsize=(11.0, 3.5), constrained_layout=True)
-    panels = [("S_storage_rel", r"$\tilde S'/(2E^*a_m)$"), ("S_loss_rel", r"$\tilde S''/(2E^*a_m)$"), ("phase_rad", "phase (rad)")]
-    for ax, (column, label), letter in zip(axes, panels, "abc"):
+    panels = [("S_storage_rel", r"$\tilde S'/(2E^*a_m)$"), ("S_loss_rel", r"$\tilde S''/(2E^*a_m)$"),
+              ("phase_rad", "phase (rad)")]
+    for ax, (column, label), letter in zip(axes, panels, "abc", strict=True):
         for k, (h1, rows) in enumerate(_by_amplitude(table)):
             ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
         _mark_frequencies(ax, experiment_omega_check)
@@ -210,11 +229,11 @@ def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 # --- Fig. 5: compliant fixation, passage through resonance ---------------------------------
 
-def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> plt.Figure:
+def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) -> Figure:
     """A/a_m against omega_bar, one panel per kappa, one colour per zeta; folds and test frequencies marked."""
     kappas = sorted(curves["kappa"].unique())
     fig, axes = plt.subplots(1, len(kappas), figsize=(4.6 * len(kappas), 4.6), layout="constrained", squeeze=False)
-    for ax, kappa in zip(axes[0], kappas):
+    for ax, kappa in zip(axes[0], kappas, strict=True):
         for k, (zeta, rows) in enumerate(curves[curves["kappa"] == kappa].groupby("zeta", sort=True)):
             for j, (branch, seg) in enumerate(rows[rows["A_over_am"] > 0].groupby("branch", sort=False)):
                 middle = branch.endswith("-1")  # between two folds: the unstable middle branch of a saddle-node pair
@@ -240,17 +259,22 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
 # --- Validation: every model level against the simulation ------------------------------------
 
 
-def plot_validation_maps(grid: pd.DataFrame, errors: pd.DataFrame, experiment_omega_check: Mapping[float, float]) -> plt.Figure:
-    """One error map per model level: the largest relative error over Abar, abar_m, w_eff/w0, A/a_m and
-    P_m/|P_JKR| against the simulation, per (h1, omega_check); cells outside the paper's applicability
-    rule (refined A/a_m > 0.1) hatched, cells where the simulation loses contact left blank."""
+def plot_validation_maps(
+    grid: pd.DataFrame, errors: pd.DataFrame, experiment_omega_check: Mapping[float, float]
+) -> Figure:
+    """One error map per model level.
+
+    The largest relative error over Abar, abar_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the simulation, per (h1,
+    omega_check); cells outside the paper's applicability rule (refined A/a_m > 0.1) hatched, cells where the
+    simulation loses contact left blank.
+    """
     worst = errors.groupby(["model", "h1_um", "omega_check"], sort=True).agg(
         error=("relative_error", "max"), applicable=("applicable", "first")).reset_index()
     models = [m for m in dict.fromkeys(grid["model"]) if m != "simulation"]
     amplitudes = sorted(grid["h1_um"].unique())
     omegas = sorted(grid["omega_check"].unique())
     fig, axes = plt.subplots(1, len(models), figsize=(3.3 * len(models), 3.6), layout="constrained", sharey=True)
-    for ax, model in zip(np.atleast_1d(axes), models):
+    for ax, model in zip(np.atleast_1d(axes), models, strict=True):
         rows = worst[worst["model"] == model]
         cells = np.full((len(amplitudes), len(omegas)), np.nan)
         for r in rows.itertuples():
@@ -261,7 +285,7 @@ def plot_validation_maps(grid: pd.DataFrame, errors: pd.DataFrame, experiment_om
             ax.text(j, i, f"{100 * r.error:.2g}%", ha="center", va="center", fontsize=6,
                     color="w" if r.error < 1e-2 else "k")
             if not r.applicable:
-                ax.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
+                ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
         ax.set_xticks(range(len(omegas)), [f"{w:.2g}" for w in omegas], rotation=90, fontsize=7)
         ax.set_yticks(range(len(amplitudes)), [f"{h:g}" for h in amplitudes])
         ax.set(title=model, xlabel=r"$\check{\omega}$")
@@ -272,12 +296,16 @@ def plot_validation_maps(grid: pd.DataFrame, errors: pd.DataFrame, experiment_om
     return fig
 
 
-def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> plt.Figure:
-    """A/a_m against omega_bar through the folded resonance: the refined model's traced curve and the
-    simulated orbits swept up and down (open markers: unstable orbit, |Floquet multiplier| > 1)."""
+def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
+    """A/a_m against omega_bar through the folded resonance.
+
+    The refined model's traced curve and the simulated orbits swept up and down (open markers: unstable orbit,
+    |Floquet multiplier| > 1).
+    """
     fig, ax = plt.subplots(figsize=(6.0, 4.2), layout="constrained")
     for j, (_, seg) in enumerate(curve.groupby("branch", sort=False)):
-        ax.plot(seg["omega_bar"], seg["A_over_am"], "k-", lw=1.0, label="refined model, Eqs. (87), (90)" if j == 0 else None)
+        ax.plot(seg["omega_bar"], seg["A_over_am"], "k-", lw=1.0,
+                label="refined model, Eqs. (87), (90)" if j == 0 else None)
     sim = sweep[(sweep["model"] == "simulation") & sweep["A_over_am"].notna()]
     for direction, marker, color in (("up", "^", "C0"), ("down", "v", "C3")):
         rows = sim[sim["direction"] == direction]

@@ -31,8 +31,10 @@ def _is_type_checking(node: ast.AST) -> bool:
 
 
 def _runtime_statements(body: list[ast.stmt]) -> Iterator[ast.AST]:
-    """Every statement in ``body`` and in the blocks nested in it (functions, classes, if, try, with, loops,
-    match), except the body of ``if TYPE_CHECKING:``. Imports are statements: expressions need no visit.
+    """Every statement in ``body`` and in the blocks nested in it.
+
+    The blocks are those of functions, classes, if, try, with, loops and match; the body of
+    ``if TYPE_CHECKING:`` is left out. Imports are statements: expressions need no visit.
     """
     stack: list[ast.AST] = list(body)
     while stack:
@@ -46,8 +48,10 @@ def _runtime_statements(body: list[ast.stmt]) -> Iterator[ast.AST]:
 
 
 def imported_names(source: str, where: str) -> set[str]:
-    """Dotted names of the package that the Python ``source`` imports; ``from a import b`` gives ``a`` and ``a.b``
-    (``b`` may be a module or a name in ``a``). ``where`` names the source in the error of a relative import.
+    """Dotted names of the package that the Python ``source`` imports.
+
+    ``from a import b`` gives ``a`` and ``a.b`` (``b`` may be a module or a name in ``a``). ``where`` names the
+    source in the error of a relative import.
     """
     names: set[str] = set()
     for node in _runtime_statements(ast.parse(source).body):
@@ -96,8 +100,10 @@ def _modules_run_by(name: str, src: Path) -> Iterator[Path]:
 
 
 def import_closure(sources: Iterable[str | Path], root: str | Path = ".") -> list[str]:
-    """``sources`` (scripts or notebooks, relative to ``root``) and every module of the package under
-    ``root/src`` they import, directly or through other modules: sorted paths relative to ``root``.
+    """``sources`` and every package module they import, directly or through other modules.
+
+    ``sources`` are scripts or notebooks relative to ``root``, the package's modules are under
+    ``root/src``; the result is sorted paths relative to ``root``.
     """
     root = Path(root)
     src = root / "src"

@@ -1,5 +1,6 @@
-"""The pages of the rendered report (results/report/) and their index, with the standard library only,
-so the Snakefile can read the list of pages without importing the numerics stack.
+"""The pages of the rendered report (results/report/) and their index.
+
+With the standard library only, so the Snakefile can read the list of pages without importing the numerics stack.
 
 Each page is a notebook of notebooks/ executed by papermill and exported to HTML by nbconvert
 (:mod:`vibroadhesion.pipeline.steps.report`); its tables come from :mod:`vibroadhesion.pipeline.report`.
@@ -31,13 +32,17 @@ VALIDATION_PAGES: list[tuple[str, str]] = [
 ]
 
 _INDEX_TEXT = {
-    "index": ("reproduction report", """<p>No measured pull-off forces are published in text form; unless you added rows to
+    "index": (
+        "reproduction report",
+        """<p>No measured pull-off forces are published in text form; unless you added rows to
   <code>data/pulloff.csv</code>, the figures use the published Gent–Schultz parameters. Series marked
   SIMULATED come from the direct simulation of the full model (a virtual experiment), never from measurements.</p>
   <p>The checks of every model level against the direct simulation, the identifiability of the
   parameters and the speed-against-error benchmarks are built by <code>snakemake -c2 validation</code>:
   <a href="validation_index.html">validation pages</a>.</p>"""),
-    "validation_index": ("validation against the direct simulation", """<p>Built by <code>snakemake -c2 validation</code>.
+    "validation_index": (
+        "validation against the direct simulation",
+        """<p>Built by <code>snakemake -c2 validation</code>.
   Every number on these pages that is not a model prediction is SIMULATED (periodic steady states of the
   full nonlinear model, <code>vibroadhesion.simulation</code>); none is a measurement.
   <a href="index.html">Figure pages</a>.</p>"""),
@@ -52,7 +57,8 @@ def write_index(out: str | Path) -> None:
         raise ValueError(f"unknown index {out}: expected index.html or validation_index.html")
     subtitle, preamble = _INDEX_TEXT[stem]
     pages = PAGES if stem == "index" else VALIDATION_PAGES
-    items = "\n".join(f'    <li><a href="{html.escape(name)}.html">{html.escape(title)}</a></li>' for name, title in pages)
+    items = "\n".join(f'    <li><a href="{html.escape(name)}.html">{html.escape(title)}</a></li>'
+                      for name, title in pages)
     text = f"""<!DOCTYPE html>
 <html lang="en">
 <head><meta charset="utf-8"><title>Vibroadhesion: {subtitle}</title>

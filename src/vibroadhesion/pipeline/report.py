@@ -14,10 +14,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.pipeline import data
-
 from vibroadhesion.core import groups
 from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.pipeline import data
 
 
 def setup_table(setup_json: str | Path) -> pd.DataFrame:
@@ -41,7 +40,8 @@ def derived_table(setup_json: str | Path, fit_json: str | Path, model: str) -> p
         ("a_o", groups.contact_radius_scale(w0, e_star, r), "m", "(2 pi w0 R^2 / E*)^(1/3), Eq. (86)"),
         ("|P_JKR|", float(-pulloff_force(w0, r)) * 1e3, "mN", "(3 pi / 2) R w0, Eq. (71)"),
     ]
-    rows += [(f"eta1 at h1 = {h:g} um", float(groups.eta1(h * 1e-6, r)), "1", "h1 / R, Eq. (65)") for h in setup.amplitudes_um]
+    rows += [(f"eta1 at h1 = {h:g} um", float(groups.eta1(h * 1e-6, r)), "1", "h1 / R, Eq. (65)")
+             for h in setup.amplitudes_um]
     rows += [(f"omega_check at {f:g} Hz", float(groups.omega_check(f, v0, r)), "1", "omega R / v0, Eq. (105)")
              for f in setup.frequencies_hz]
     return pd.DataFrame(rows, columns=["quantity", "value", "unit", "definition"])
@@ -110,5 +110,6 @@ def rule_timings(tsv_files: Sequence[str | Path]) -> pd.DataFrame:
     rows = []
     for path in tsv_files:
         t = pd.read_csv(path, sep="\t")
-        rows.append({"rule": Path(path).stem, "wall_s": float(t["s"].iloc[0]), "max_rss_MB": float(t["max_rss"].iloc[0])})
+        rows.append({"rule": Path(path).stem, "wall_s": float(t["s"].iloc[0]),
+                     "max_rss_MB": float(t["max_rss"].iloc[0])})
     return pd.DataFrame(rows)

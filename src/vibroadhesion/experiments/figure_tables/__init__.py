@@ -1,5 +1,7 @@
-"""The numbers behind each figure: one module per figure (or pair of figures sharing a solve), so a
-rule that computes one figure's table depends on the model code of that figure only.
+"""The numbers behind each figure.
+
+One module per figure (or pair of figures sharing a solve), so a rule that computes one figure's table depends on
+the model code of that figure only.
 
 A ``figN_table`` function computes the numbers of Fig. N from model parameters and returns the
 DataFrame the pipeline writes as ``results/figN/figN.csv``; the drawings are in

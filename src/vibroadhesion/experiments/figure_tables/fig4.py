@@ -24,7 +24,9 @@ def fig4_table(
     radius: float,
     reduced_modulus: float,
 ) -> pd.DataFrame:
-    """Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
+    """Fig. 4's table: pull-off against amplitude for every model level.
+
+    Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
     exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
     :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0)).
     """
@@ -38,11 +40,12 @@ def fig4_table(
     frames.append(_fig4_frame("exact_averaging", np.nan, h1_um, PulloffPrediction(
         exact.abar, exact.alpha, exact.ratio, -pulloff_force(p.w0, radius) * exact.ratio * 1e3)))
     for f in frequencies_hz:
-        frames.append(_fig4_frame("refined", f, h1_um, predict_pulloff("refined", params["refined"], f, h1_um, **geometry)))
+        refined = predict_pulloff("refined", params["refined"], f, h1_um, **geometry)
+        frames.append(_fig4_frame("refined", f, h1_um, refined))
     return pd.concat(frames, ignore_index=True)[FIG4_COLUMNS]
 
 
-def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred) -> pd.DataFrame:
+def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: PulloffPrediction) -> pd.DataFrame:
     return pd.DataFrame(
         {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.abar_cr,
          "J0": pred.j0, "ratio": pred.ratio, "pulloff_mN": pred.pulloff_mN}

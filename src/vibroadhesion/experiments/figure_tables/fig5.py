@@ -1,5 +1,6 @@
-"""Fig. 5: passage through resonance of a compliantly fixed indenter (refined model, Eqs. 87, 90-96),
-traced by continuation.
+"""Fig. 5: passage through resonance of a compliantly fixed indenter.
+
+Refined model (Eqs. 87, 90-96), traced by continuation.
 """
 
 from __future__ import annotations
@@ -28,8 +29,10 @@ def fig5_tables(
     base: CompliantFixation, kappas: Sequence[float], zetas: Sequence[float], n: float,
     experiment_omega_bar: Mapping[float, float], omega_bar_range: tuple[float, float], count_points: int,
 ) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
-    """Fig. 5 for every (kappa, zeta): the traced curves, the markers (folds, test frequencies), and
-    the number of solutions on a log grid of omega_bar.
+    """Fig. 5 for every (kappa, zeta).
+
+    The traced curves, the markers (folds, test frequencies), and the number of solutions on a log grid of
+    omega_bar.
 
     ``branch`` names the monotone segment of the curve in trace order: "lower-k"/"upper-k" for the
     two pieces below/above the exact anti-resonance (zeta = 0), "full-k" otherwise; k counts the
@@ -44,14 +47,18 @@ def fig5_tables(
             p = replace(base, kappa=kappa, zeta=zeta)
             curve = trace_response_curve(p, law, omega_bar_range)
             names = ("lower", "upper") if len(curve.pieces) == 2 else ("full",)
-            for name, piece in zip(names, curve.pieces):
-                segment = np.concatenate([[0], np.cumsum(np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0]))])
+            for name, piece in zip(names, curve.pieces, strict=True):
+                turns = np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0])
+                segment = np.concatenate([[0], np.cumsum(turns)])
                 curves.append(_fig5_rows(p, [f"{name}-{k}" for k in segment], piece.points, curve))
             if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
-                curves.append(_fig5_rows(p, ["anti-resonance"], np.array([[0.0, np.log(static_abar_m(p)), -np.inf]]), curve))
-            markers.append(_fig5_rows(p, ["fold"] * len(curve.folds), curve.folds, curve).assign(kind="fold", frequency_hz=np.nan))
+                anti = np.array([[0.0, np.log(static_abar_m(p)), -np.inf]])
+                curves.append(_fig5_rows(p, ["anti-resonance"], anti, curve))
+            markers.append(_fig5_rows(p, ["fold"] * len(curve.folds), curve.folds, curve)
+                           .assign(kind="fold", frequency_hz=np.nan))
             for f, omega_bar in sorted(experiment_omega_bar.items()):
-                solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)] for am, a in curve.solutions_at(omega_bar, law)])
+                solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)]
+                                      for am, a in curve.solutions_at(omega_bar, law)])
                 markers.append(_fig5_rows(p, ["experiment"] * len(solutions), solutions.reshape(-1, 3), curve)
                                .assign(kind="experiment", frequency_hz=f))
             counts.append(pd.DataFrame({"zeta": zeta, "kappa": kappa, "omega_bar": grid,

@@ -1,5 +1,6 @@
-"""Figs. 6 and 7: rigidly fixed indenter, refined model (nominal point contact, Eqs. 122-123, 49, corrected 98;
-pull-off estimate, Eq. 106).
+"""Figs. 6 and 7: rigidly fixed indenter, refined model.
+
+Nominal point contact (Eqs. 122-123, 49, corrected 98) and the pull-off estimate (Eq. 106).
 """
 
 from __future__ import annotations
@@ -16,22 +17,28 @@ FIG6_COLUMNS = ["h1_um", "omega_check", "Abar", "abar_m", "w_eff_ratio", "A_over
 FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "ratio"]
 
 
-def fig6_table(h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float) -> pd.DataFrame:
+def fig6_table(
+    h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float
+) -> pd.DataFrame:
     """Nominal point contact of a rigidly fixed indenter (Eqs. 122–123, 49, corrected 98)."""
     h1 = np.asarray(h1_um, dtype=float)[:, None]
     sol = nominal_point_contact(h1 * 1e-6 / radius, omega_check[None, :], chi0, GentSchultz(n))
     return pd.DataFrame(
-        {"h1_um": np.broadcast_to(h1, sol.abar.shape).ravel(), "omega_check": np.broadcast_to(omega_check, sol.abar.shape).ravel(),
+        {"h1_um": np.broadcast_to(h1, sol.abar.shape).ravel(),
+         "omega_check": np.broadcast_to(omega_check, sol.abar.shape).ravel(),
          "Abar": sol.abar.ravel(), "abar_m": sol.abar_m.ravel(), "w_eff_ratio": sol.w_eff_ratio.ravel(),
          "A_over_am": sol.a_over_am.ravel()}
     )[FIG6_COLUMNS]
 
 
-def fig7_table(h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float) -> pd.DataFrame:
+def fig7_table(
+    h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float
+) -> pd.DataFrame:
     """Refined pull-off estimate against omega_check (Eq. 106) for each amplitude."""
     h1 = np.asarray(h1_um, dtype=float)[:, None]
     est = pulloff_refined(h1 * 1e-6 / radius, chi0, omega_check[None, :], GentSchultz(n))
     return pd.DataFrame(
-        {"h1_um": np.broadcast_to(h1, est.abar_cr.shape).ravel(), "omega_check": np.broadcast_to(omega_check, est.abar_cr.shape).ravel(),
+        {"h1_um": np.broadcast_to(h1, est.abar_cr.shape).ravel(),
+         "omega_check": np.broadcast_to(omega_check, est.abar_cr.shape).ravel(),
          "Abar_cr": est.abar_cr.ravel(), "ratio": est.ratio.ravel()}
     )[FIG7_COLUMNS]

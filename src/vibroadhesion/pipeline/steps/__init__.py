@@ -22,9 +22,11 @@ EXPECTED_FAILURES = (ValueError, ArithmeticError, RuntimeError)
 
 @contextmanager
 def logged(log: str | Path, step: str) -> Iterator[None]:
-    """Send the step's output to ``log``; on an expected failure write one line to the log and to
-    the terminal (``error: <step>: <message>``) and exit with status 1. Any other exception (a bug)
-    goes to the log with its traceback and propagates (Python prints it on the terminal too).
+    """Send the step's output to ``log``.
+
+    On an expected failure write one line to the log and to the terminal (``error: <step>: <message>``) and exit
+    with status 1. Any other exception (a bug) goes to the log with its traceback and propagates (Python prints it
+    on the terminal too).
 
     The writers are atomic (:mod:`vibroadhesion.pipeline.artefacts`), so a failed step leaves no
     partial output; Snakemake removes the complete outputs of a failed job.

@@ -10,30 +10,33 @@ from vibroadhesion.core import groups
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import CompliantFixation
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.data import Setup
-from vibroadhesion.pipeline.steps.inputs import rig, setup_entry
+from vibroadhesion.pipeline.data import Setup, SetupValue
+from vibroadhesion.pipeline.steps.inputs import rig, setup_entry, setup_number
 
 
-def _floats(value: object) -> list[float]:
+def _floats(value: SetupValue) -> list[float]:
     return [float(x) for x in np.atleast_1d(value)]
 
 
 def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple[CompliantFixation, dict[float, float]]:
-    """Fig. 5's base parameters (chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu; Eqs. 64-66) at the figure's
-    amplitude, with kappa = 1 and zeta = 0 to be replaced, and omega_bar = omega/omega0 at each test frequency.
+    """Fig. 5's base parameters at the figure's amplitude.
+
+    chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu (Eqs. 64-66), with kappa = 1 and zeta = 0 to be
+    replaced, and omega_bar = omega/omega0 at each test frequency.
     """
-    omega0 = float(setup_entry(setup, "fixation.natural_frequency"))
-    h1_um = float(setup_entry(setup, "test_conditions.fig5_amplitude"))
+    omega0 = setup_number(setup, "fixation.natural_frequency")
+    h1_um = setup_number(setup, "test_conditions.fig5_amplitude")
     base = CompliantFixation(chi0=chi0, eta1=float(groups.eta1(h1_um * 1e-6, setup.radius)),
                              nu0=groups.nu0(params["v0"], omega0, setup.radius), kappa=1.0,
-                             mu=float(setup_entry(setup, "fixation.weight_ratio_mu")), zeta=0.0)
+                             mu=setup_number(setup, "fixation.weight_ratio_mu"), zeta=0.0)
     return base, {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
 
 
 def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, markers_out: str | Path,
               counts_out: str | Path, omega_bar_min: float, omega_bar_max: float, count_points: int) -> None:
-    """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta) of data/setup.yaml; folds,
-    the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar.
+    """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta) of data/setup.yaml.
+
+    Folds, the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
     base, experiments = compliant_base(setup, params, chi0)
@@ -45,6 +48,7 @@ def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, mar
     write_csv(markers, markers_out)
     write_csv(counts, counts_out)
     for (kappa, zeta), rows in markers[markers["kind"] == "fold"].groupby(["kappa", "zeta"]):
-        print(f"kappa = {kappa:g}, zeta = {zeta:g}: folds at omega_bar = " + ", ".join(f"{w:.6f}" for w in rows["omega_bar"]))
+        folds = ", ".join(f"{w:.6f}" for w in rows["omega_bar"])
+        print(f"kappa = {kappa:g}, zeta = {zeta:g}: folds at omega_bar = {folds}")
     several = counts[counts["solutions"] > 1]
     print(f"{len(curves)} points traced; {len(several)} of {len(counts)} grid frequencies with more than one solution")

@@ -11,8 +11,10 @@ from vibroadhesion.pipeline.artefacts import write_json
 
 
 def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figures_use: str) -> None:
-    """Fit w0, n, v0 to the measured rows with each model level (Eqs. 71-72, 106); no rows: the published
-    parameters pass through. ``figures_use`` names the fit the figures take their parameters from.
+    """Fit w0, n, v0 to the measured rows with each model level (Eqs. 71-72, 106).
+
+    No rows: the published parameters pass through. ``figures_use`` names the fit the figures take their parameters
+    from.
     """
     setup = data.read_canonical_setup(setup_json)
     rows = data.read_canonical_pulloff(pulloff_csv)
@@ -22,7 +24,8 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
     summary = {
         "data_rows": len(rows),
         "status": "published parameters passed through (no measured rows)" if rows.empty else "fitted",
-        "published": {"w0": setup.w0, "n": setup.n, "v0": setup.v0, "source": setup.sources["gent_schultz_published.w0"]},
+        "published": {"w0": setup.w0, "n": setup.n, "v0": setup.v0,
+                      "source": setup.sources["gent_schultz_published.w0"]},
         "figures_use": figures_use,
         "fits": fits,
     }

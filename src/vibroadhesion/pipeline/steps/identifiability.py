@@ -1,5 +1,7 @@
-"""Steps of the identifiability rules: what the simulated pull-off determines of w0, n, v0, and which
-model level recovers them (sensitivities, Cramer-Rao standard errors, fits).
+"""Steps of the identifiability rules.
+
+What the simulated pull-off determines of w0, n, v0, and which model level recovers them (sensitivities, Cramer-Rao
+standard errors, fits).
 """
 
 from __future__ import annotations
@@ -12,15 +14,17 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.experiments import identifiability, virtual_pulloff
-from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import rig
 
 
 def sensitivity_run(setup_json: str | Path, fit_json: str | Path, out: str | Path, parameter: str, sign: str) -> None:
-    """Simulated pull-off (rigid fixation, every test frequency and amplitude of the rig) with ``parameter``
-    scaled by exp(+h) (``sign`` "plus") or exp(-h) ("minus").
+    """Simulated pull-off with one parameter scaled by exp(+h) or exp(-h).
+
+    Rigid fixation, every test frequency and amplitude of the rig; ``parameter`` is scaled by exp(+h)
+    when ``sign`` is "plus", by exp(-h) when it is "minus".
     """
     setup, params, _ = rig(setup_json, fit_json)
     shifted = identifiability.perturbed(GentSchultzParameters(**params), parameter, {"plus": 1, "minus": -1}[sign])
@@ -38,7 +42,9 @@ def _simulated_rigid_rows(virtual_csv: str | Path) -> pd.DataFrame:
     return rows.assign(line=np.arange(len(rows)))
 
 
-def fit_level(setup_json: str | Path, fit_json: str | Path, virtual_csv: str | Path, model: str, out: str | Path) -> None:
+def fit_level(
+    setup_json: str | Path, fit_json: str | Path, virtual_csv: str | Path, model: Model, out: str | Path
+) -> None:
     """The pipeline's Gent-Schultz fit of one model level on the noise-free simulated pull-off rows."""
     setup, params, _ = rig(setup_json, fit_json)
     start = time.perf_counter()
@@ -49,7 +55,8 @@ def fit_level(setup_json: str | Path, fit_json: str | Path, virtual_csv: str | P
 
 
 def summary(virtual_csv: str | Path, sensitivity_parts: Sequence[str | Path], fit_parts: Sequence[str | Path],
-            noise: Sequence[float], sensitivity_out: str | Path, information_out: str | Path, fits_out: str | Path) -> None:
+            noise: Sequence[float], sensitivity_out: str | Path, information_out: str | Path,
+            fits_out: str | Path) -> None:
     """Log-sensitivities of the simulated pull-off, standard errors per design and relative noise, fits table."""
     parts = {Path(p).stem: pd.read_csv(p) for p in sensitivity_parts}
     missing = [f"{n}_{s}" for n in identifiability.PARAMETERS for s in ("plus", "minus") if f"{n}_{s}" not in parts]

@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 from vibroadhesion.core import groups
-from vibroadhesion.pipeline.data import Setup, read_canonical_setup
+from vibroadhesion.pipeline.data import Setup, SetupValue, read_canonical_setup
 
 
 def fitted(fit_json: str | Path, model: str | None = None) -> dict[str, float]:
@@ -28,10 +28,19 @@ def experiment_omega_check(setup: Setup, v0: float) -> dict[float, float]:
     return {f: float(groups.omega_check(f, v0, setup.radius)) for f in setup.frequencies_hz}
 
 
-def setup_entry(setup: Setup, key: str) -> float | tuple[float, ...]:
-    """The value of an optional entry ``"group.entry"`` of data/setup.yaml (e.g. of the assumed compliant
-    fixation); a ValueError names it when the file does not give it.
+def setup_entry(setup: Setup, key: str) -> SetupValue:
+    """The value of an optional entry ``"group.entry"`` of data/setup.yaml (e.g. of the assumed compliant fixation).
+
+    A ValueError names it when the file does not give it.
     """
     if key not in setup.values:
         raise ValueError(f"this step needs the entry {key} in data/setup.yaml (with value, unit and source)")
     return setup.values[key]
+
+
+def setup_number(setup: Setup, key: str) -> float:
+    """The single number of an optional entry ``"group.entry"`` (:func:`setup_entry`); a list is a ValueError."""
+    value = setup_entry(setup, key)
+    if isinstance(value, tuple):
+        raise ValueError(f"the entry {key} in data/setup.yaml must be one number, not a list")
+    return value

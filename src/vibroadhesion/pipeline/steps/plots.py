@@ -13,7 +13,7 @@ import pandas as pd
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.pipeline import figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, setup_entry
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, setup_number
 
 Path_ = str | Path
 
@@ -34,7 +34,7 @@ def fig4_plot(setup_json: Path_, fit_json: Path_, pulloff_csv: Path_, virtual_cs
 
 def fig5_plot(setup_json: Path_, csv: Path_, markers_csv: Path_, pdf: Path_, png: Path_) -> None:
     """Fig. 5: A/a_m through resonance, the paper's dot at the frequency data/setup.yaml names."""
-    highlight_hz = float(setup_entry(read_canonical_setup(setup_json), "test_conditions.fig5_highlight_frequency"))
+    highlight_hz = setup_number(read_canonical_setup(setup_json), "test_conditions.fig5_highlight_frequency")
     figures.save_figure(figures.plot_fig5(pd.read_csv(csv), pd.read_csv(markers_csv), highlight_hz), pdf, png)
 
 

@@ -1,5 +1,7 @@
-"""Steps of the report rules: one page (notebook executed by papermill, exported to HTML by nbconvert,
-in one process) and the index of a target's pages.
+"""Steps of the report rules.
+
+One page (notebook executed by papermill, exported to HTML by nbconvert, in one process) and the index of a target's
+pages.
 """
 
 from __future__ import annotations
@@ -14,8 +16,10 @@ from vibroadhesion.pipeline.atomic import atomic_path
 
 
 def page(notebook: str | Path, executed: str | Path, html: str | Path, parameters: Mapping[str, str]) -> None:
-    """Execute ``notebook`` with ``parameters`` (artefact paths, injected after its ``parameters`` cell)
-    in a fresh kernel run from the working directory; write the executed notebook and its HTML page.
+    """Execute ``notebook`` and write the executed notebook and its HTML page.
+
+    ``parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell; the
+    kernel is a fresh one, run from the working directory.
     """
     with atomic_path(executed) as tmp:
         nb = papermill.execute_notebook(str(notebook), str(tmp), parameters=dict(parameters), kernel_name="python3",

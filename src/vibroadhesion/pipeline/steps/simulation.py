@@ -1,6 +1,7 @@
-"""Steps of the simulation rules: the direct simulation of the full model (ground truth) on the rigid
-validation grid and in the virtual pull-off experiment, written under results/simulation/ for the
-figures and the validation to read.
+"""Steps of the simulation rules.
+
+The direct simulation of the full model (ground truth) on the rigid validation grid and in the virtual pull-off
+experiment, written under results/simulation/ for the figures and the validation to read.
 """
 
 from __future__ import annotations
@@ -16,14 +17,16 @@ from vibroadhesion.experiments import validation, virtual_pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_entry
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_number
 from vibroadhesion.simulation import SpringFixation
 
 
 def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1_um: float,
                log10_omega_check_min: int, log10_omega_check_max: int) -> None:
-    """Simulation, leading, refined, exact harmonic balance and exact averaging at one amplitude on the
-    whole decades of omega_check and the test frequencies (rigid nominal point contact).
+    """Every model level and the simulation at one amplitude on the rigid grid.
+
+    The levels are leading, refined, exact harmonic balance and exact averaging (rigid nominal point
+    contact); the grid is the whole decades of omega_check and the test frequencies.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
     omega = validation.validation_frequencies((log10_omega_check_min, log10_omega_check_max),
@@ -45,16 +48,18 @@ def rigid_grid(parts: Sequence[str | Path], out: str | Path) -> None:
 
 def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, fixation: str,
                          frequency_hz: float) -> None:
-    """The simulated pull-off at one test frequency and every amplitude of the rig, with the predictions,
-    for the rigid fixation or the simulated compliant case of data/setup.yaml (kappa, zeta; mu, omega0).
+    """The simulated pull-off at one test frequency, with the predictions.
+
+    Every amplitude of the rig, for the rigid fixation or the simulated compliant case of
+    data/setup.yaml (kappa, zeta; mu, omega0).
     """
     setup, params, _ = rig(setup_json, fit_json)
     spring = None
     if fixation == "compliant":
-        nu0 = groups.nu0(params["v0"], float(setup_entry(setup, "fixation.natural_frequency")), setup.radius)
-        spring = SpringFixation(float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
-                                float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")), nu0,
-                                float(setup_entry(setup, "fixation.weight_ratio_mu")))
+        nu0 = groups.nu0(params["v0"], setup_number(setup, "fixation.natural_frequency"), setup.radius)
+        spring = SpringFixation(setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
+                                setup_number(setup, "fixation.simulated_damping_ratio_zeta"), nu0,
+                                setup_number(setup, "fixation.weight_ratio_mu"))
     h1 = np.asarray(setup.amplitudes_um, dtype=float)
     table = virtual_pulloff.pulloff_table(GentSchultzParameters(**params), frequency_hz, h1, radius=setup.radius,
                                           reduced_modulus=setup.reduced_modulus, fixation=spring,

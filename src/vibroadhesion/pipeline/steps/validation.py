@@ -1,5 +1,7 @@
-"""Steps of the validation rules: every model level against the direct simulation (errors and their
-summary), and Fig. 5's folded resonance swept up and down with the simulation.
+"""Steps of the validation rules.
+
+Every model level against the direct simulation (errors and their summary), and Fig. 5's folded resonance swept up
+and down with the simulation.
 """
 
 from __future__ import annotations
@@ -15,13 +17,14 @@ from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.fig5 import compliant_base
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_entry
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_number
 
 
 def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | Path, errors_out: str | Path,
                  summary_out: str | Path) -> None:
-    """Relative error of every level against the simulation on the rigid grid, and its summary (largest
-    error per level and quantity, overall and at the test frequencies).
+    """Relative error of every level against the simulation on the rigid grid.
+
+    Also its summary: the largest error per level and quantity, overall and at the test frequencies.
     """
     setup, params, _ = rig(setup_json, fit_json)
     errors = validation.relative_errors(pd.read_csv(grid_csv))
@@ -34,15 +37,17 @@ def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | P
 def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Path, curve_out: str | Path,
                     omega_bar_min: float, omega_bar_max: float, points: int,
                     curve_range: tuple[float, float]) -> None:
-    """The simulated compliant case of data/setup.yaml (kappa, zeta) swept up and down over ``points``
-    log-spaced omega_bar (Floquet stability), and the refined model's curve of that case traced over
+    """The simulated compliant case swept through resonance, with the refined curve.
+
+    The case is data/setup.yaml's (kappa, zeta), swept up and down over ``points`` log-spaced
+    omega_bar (Floquet stability); the refined model's curve of that case traced over
     Fig. 5's ``curve_range`` (Eqs. 87, 90) within the sweep's range, as Fig. 5 draws it.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
     base, _ = compliant_base(setup, params, chi0)
-    p = replace(base, kappa=float(setup_entry(setup, "fixation.simulated_stiffness_ratio_kappa")),
-                zeta=float(setup_entry(setup, "fixation.simulated_damping_ratio_zeta")))
-    table = validation.compliant_sweep(p, params["n"], np.geomspace(omega_bar_min, omega_bar_max, points),
+    p = replace(base, kappa=setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
+                zeta=setup_number(setup, "fixation.simulated_damping_ratio_zeta"))
+    table = validation.compliant_sweep(p, params["n"], list(np.geomspace(omega_bar_min, omega_bar_max, points)),
                                        ProgressBar(2 * points, "frequencies"))
     curve, _, _ = fig5_tables(base, [p.kappa], [p.zeta], params["n"], {}, curve_range, 2)
     write_csv(table, out)
