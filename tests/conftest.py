@@ -4,7 +4,7 @@ Constants: the values the paper prints, each with its place in the paper (the te
 Sec. 3.5.3 and the captions of Figs. 4-8). Test modules import them (``from conftest import CHI0``)
 because many are needed at import time (parametrize lists, module-level fixations); a test that
 deliberately uses another value writes that value itself. ``data/setup.yaml`` holds the same
-numbers for the pipeline; ``tests/test_data.py`` checks that file against these.
+numbers for the pipeline; ``tests/pipeline/test_data.py`` checks that file against these.
 
 Fixture ``pipeline_results``: the ``results/`` directory of one ``snakemake -c2 all validation`` run
 (about 3-5 min on 2 cores) in a temporary copy of the repository (the files ``git ls-files``

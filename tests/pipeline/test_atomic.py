@@ -21,7 +21,7 @@ from vibroadhesion.pipeline.atomic import atomic_path, create_beside
 from vibroadhesion.pipeline.data import main as data_main
 from vibroadhesion.pipeline.figures import save_figure
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 UMASKS = {0o022: 0o644, 0o077: 0o600}  # umask -> the mode a file created with 0o666 gets
 
 

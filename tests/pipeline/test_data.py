@@ -26,7 +26,7 @@ from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.data import Setup, load_pulloff, load_setup, main
 from vibroadhesion.pipeline.input_checks import DataError, schema
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 SETUP_YAML = ROOT / "data" / "setup.yaml"
 PULLOFF_CSV = ROOT / "data" / "pulloff.csv"
 HEADER = "frequency_hz,h1_um,pulloff_mN,source"

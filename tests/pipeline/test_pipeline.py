@@ -34,7 +34,7 @@ from vibroadhesion.pipeline.figures import plot_fig4, save_figure
 from vibroadhesion.pipeline.imports import import_closure
 from vibroadhesion.pipeline.pages import PAGES
 
-ROOT = Path(__file__).resolve().parents[1]
+ROOT = Path(__file__).resolve().parents[2]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
 DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot", "fig5_data", "fig5_plot",
