@@ -65,6 +65,18 @@ def _snakemake(workdir: Path, *args: str) -> subprocess.CompletedProcess:
     return subprocess.run([*SNAKEMAKE, "-c2", *args], cwd=workdir, capture_output=True, text=True, timeout=900)
 
 
+def _planned_after_edit(workdir: Path, relative: str) -> set[str]:
+    """Rules a dry run plans after a content edit of one file (Snakemake compares small files by
+    content, so a bare touch would plan nothing); the file is restored afterwards."""
+    path = workdir / relative
+    original = path.read_text()
+    try:
+        path.write_text(original + "\n# edited\n")
+        return _planned_rules(workdir)
+    finally:
+        path.write_text(original)
+
+
 def _planned_rules(workdir: Path, *targets: str) -> set[str]:
     """Rules a dry run would execute (parsed from Snakemake's job-stats table)."""
     out = _snakemake(workdir, "-n", *targets)
@@ -127,13 +139,7 @@ def test_data_edit_reruns_fit_figures_and_report_only(pipeline_run: Path) -> Non
 
 @pytest.mark.pipeline
 def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
-    module = pipeline_run / "src/vibroadhesion/models/stiffness.py"
-    original = module.read_text()
-    try:
-        module.write_text(original + "\n# edited\n")
-        planned = _planned_rules(pipeline_run)
-    finally:
-        module.write_text(original)
+    planned = _planned_after_edit(pipeline_run, "src/vibroadhesion/models/stiffness.py")
     assert planned == {"fig8_data", "fig8_plot", "report_page", "report_index", "all"}
 
 
@@ -297,13 +303,7 @@ def test_editing_a_module_reruns_exactly_the_rules_whose_step_imports_it(pipelin
     default_rules = _planned_rules(pipeline_run, "--forceall")
     importers = {rule for rule, files in _adapter_closures().items() if module in files and rule in default_rules}
     assert importers, f"no rule of the default target imports {module}"
-    path = pipeline_run / module
-    original = path.read_text()
-    try:
-        path.write_text(original + "\n# edited\n")
-        planned = _planned_rules(pipeline_run)
-    finally:
-        path.write_text(original)
+    planned = _planned_after_edit(pipeline_run, module)
     expected = _downstream(pipeline_run, importers)
     assert importers <= planned and planned == expected, planned ^ expected
 
