@@ -14,7 +14,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from mpmath_reference import j_integrals_mp  # noqa: E402
 
 from vibroadhesion.experiments.benchmarking import benchmark_j_integrals, format_table  # noqa: E402
-from vibroadhesion.pipeline.artefacts import atomic_path, write_csv  # noqa: E402
+from vibroadhesion.pipeline.artefacts import write_csv  # noqa: E402
+from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
 table = benchmark_j_integrals(j_integrals_mp)
 text = format_table(table)

@@ -20,7 +20,7 @@ from vibroadhesion.pipeline.atomic import atomic_path
 if TYPE_CHECKING:
     import pandas as pd
 
-__all__ = ["atomic_path", "write_csv", "write_json"]  # atomic_path: for report, figures, benchmarks
+__all__ = ["write_csv", "write_json"]
 
 
 def write_csv(table: pd.DataFrame, path: str | Path) -> None:
