@@ -32,8 +32,8 @@ def test_small_amplitude_every_level_agrees_with_the_simulation_and_the_static_c
     sim = rows["simulation"]
     for model, r in rows.items():
         assert abs(r["abar_m"] - 1) < 1e-3 and abs(r["w_eff_ratio"] - 1) < 1e-3, model
-        assert abs(r["Pm_over_PJKR"] + 8 / 9) < 1e-3, model
-        for q in ("abar_m", "w_eff_ratio", "Pm_over_PJKR"):
+        assert abs(r["pm_over_abs_pjkr"] + 8 / 9) < 1e-3, model
+        for q in ("abar_m", "w_eff_ratio", "pm_over_abs_pjkr"):
             assert abs(r[q] / sim[q] - 1) < 1e-3, (model, q)
 
 
@@ -44,7 +44,7 @@ def test_very_high_frequency_simulation_equals_exact_averaging() -> None:
     """
     rows = _by_model(validation.rigid_point(20.0, 1e8, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     sim, avg, refined = rows["simulation"], rows["exact_averaging"], rows["refined"]
-    for q in ("abar_m", "w_eff_ratio", "Pm_over_PJKR"):
+    for q in ("abar_m", "w_eff_ratio", "pm_over_abs_pjkr"):
         assert abs(avg[q] / sim[q] - 1) < 1e-6, q
     assert refined["w_eff_ratio"] / sim["w_eff_ratio"] - 1 < -0.1
 

@@ -40,7 +40,7 @@ from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.numerics.roots import NoRootError
 
 MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
-QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")
+QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "pm_over_abs_pjkr")
 RIGID_GRID_COLUMNS = ["h1_um", "omega_check", "model", "status", *QUANTITIES]
 ERROR_COLUMNS = ["h1_um", "omega_check", "model", "quantity", "relative_error", "refined_A_over_am", "applicable"]
 
@@ -178,7 +178,7 @@ def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float])
 
 # --- Compliant fixation: the Fig. 5 sweep, up and down in frequency ----------------------------
 
-SWEEP_COLUMNS = ["direction", "omega_bar", "model", "branch", "status", "Abar", "abar_m", "A_over_am", "stable",
+SWEEP_COLUMNS = ["direction", "omega_bar", "model", "solution_index", "status", "Abar", "abar_m", "A_over_am", "stable",
                  "max_floquet_multiplier"]
 
 
@@ -193,7 +193,7 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
     A start from the previous orbit that does not converge is retried from the static state
     (Eq. 82); the row says which (``status``). ``stable`` and the largest |Floquet multiplier| come
     from the monodromy matrix of the simulated orbit; the refined rows carry the index of their
-    solution in order of increasing Abar as ``branch`` and no stability (the averaged model does
+    solution in order of increasing Abar as ``solution_index`` and no stability (the averaged model does
     not provide one). ``progress`` advances once per simulated frequency.
     """
     law = GentSchultz(n)
@@ -213,18 +213,18 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
             if sim.status == "converged":
                 state = sim.start_state
-                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "solution_index": 0,
                              "status": status, "Abar": sim.abar, "abar_m": sim.abar_m, "A_over_am": sim.a_over_am,
                              "stable": sim.stable,
                              "max_floquet_multiplier": float(np.max(np.abs(sim.floquet_multipliers)))})
             else:
-                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "solution_index": 0,
                              "status": sim.status, "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
                              "stable": False, "max_floquet_multiplier": math.nan})
             if direction == "up":
                 for k, (abar_m, abar) in enumerate(sorted(curve.solutions_at(w, law), key=lambda s: s[1])):
-                    rows.append({"direction": "-", "omega_bar": w, "model": "refined", "branch": k, "status": "ok",
-                                 "Abar": abar, "abar_m": abar_m,
+                    rows.append({"direction": "-", "omega_bar": w, "model": "refined", "solution_index": k,
+                                 "status": "ok", "Abar": abar, "abar_m": abar_m,
                                  "A_over_am": float(contact_radius_amplitude_ratio(abar, abar_m, p.chi0, w / p.nu0)),
                                  "stable": math.nan, "max_floquet_multiplier": math.nan})
     return pd.DataFrame(rows)[SWEEP_COLUMNS]

@@ -13,7 +13,7 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model, PulloffPrediction, predict_pulloff
 from vibroadhesion.models import exact_averaging
 
-FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
+FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio", "pulloff_mN"]
 
 
 def fig4_table(
@@ -28,7 +28,8 @@ def fig4_table(
 
     Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
     exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
-    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`; its J0 column is sqrt(w_eff/w0)).
+    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`). Column ``sqrt_w_eff_ratio`` is
+    sqrt(w_eff/w0) at detachment: J0(Abar_cr) for the J-integral levels, alpha* for exact averaging.
     """
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frames = []
@@ -48,5 +49,5 @@ def fig4_table(
 def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: PulloffPrediction) -> pd.DataFrame:
     return pd.DataFrame(
         {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.abar_cr,
-         "J0": pred.j0, "ratio": pred.ratio, "pulloff_mN": pred.pulloff_mN}
+         "sqrt_w_eff_ratio": pred.j0, "pulloff_ratio": pred.ratio, "pulloff_mN": pred.pulloff_mN}
     )
