@@ -74,10 +74,10 @@ def test_compliant_sweep_far_from_resonance_agrees_with_refined_and_orbits_are_s
     with A/a_m within 15 % of the refined model (the measured gap there is ~8 %, the same first-harmonic
     truncation as in the rigid case).
     """
-    from vibroadhesion.models.compliant import CompliantFixation
+    from vibroadhesion.core.fixation import Fixation
 
-    p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.01)
-    sweep = validation.compliant_sweep(p, N_PUBLISHED, [18.0, 20.0])
+    fixation = Fixation.compliant(kappa=1e-3, zeta=0.01, nu0=NU0, mu=0.0)
+    sweep = validation.compliant_sweep(fixation, CHI0, ETA1, N_PUBLISHED, [18.0, 20.0])
     sim, refined = sweep[sweep["model"] == "simulation"], sweep[sweep["model"] == "refined"]
     assert len(refined) == 2 and (sim["status"].str.startswith("ok")).all() and sim["stable"].astype(bool).all()
     for _, row in sim.iterrows():

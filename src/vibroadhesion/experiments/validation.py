@@ -30,10 +30,12 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion import simulation
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models import exact_averaging, exact_harmonic_balance
-from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
+from vibroadhesion.models.compliant import trace_response_curve
 from vibroadhesion.models.leading_order import mean_force_over_pulloff
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.progress import ProgressBar
@@ -65,7 +67,7 @@ def _simulation(
     eta1: float, omega_check: float, chi0: float, law: GentSchultz
 ) -> tuple[str, tuple[float, ...] | None]:
     """The direct simulation's periodic steady state (rigid fixation) as a level."""
-    sim = simulation.steady_state(simulation.BaseExcitation(law, chi0, eta1, omega_check))
+    sim = simulation.steady_state(Problem(law, chi0, eta1, omega_check))
     if sim.status != "converged":
         return sim.status, None
     return "ok", (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)
@@ -182,9 +184,11 @@ SWEEP_COLUMNS = ["direction", "omega_bar", "model", "solution_index", "status", 
                  "max_floquet_multiplier"]
 
 
-def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
+def compliant_sweep(fixation: Fixation, chi0: float, eta1: float, n: float, omega_bar: Sequence[float],
                     progress: ProgressBar | None = None) -> pd.DataFrame:
     """Simulated steady states along ``omega_bar`` swept up, then down, next to the refined model.
+
+    The compliant ``fixation`` at chi0 (Eq. 64) and eta1 = h1/R (Eq. 65), omega_check = omega_bar/nu0 (Eq. 105).
 
     Each orbit is started from the previous one (a slow sweep, so a fold of the response shows as
     a jump and a hysteresis loop), next to every solution of the refined model (Eqs. 87, 90) on its
@@ -197,17 +201,16 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
     not provide one). ``progress`` advances once per simulated frequency.
     """
     law = GentSchultz(n)
-    fixation = simulation.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
-    curve = trace_response_curve(p, law, (min(omega_bar), max(omega_bar)))
+    curve = trace_response_curve(fixation, chi0, eta1, law, (min(omega_bar), max(omega_bar)))
     rows = []
     for direction, grid in (("up", list(omega_bar)), ("down", list(omega_bar)[::-1])):
         state = None
         for w in grid:
-            excitation = simulation.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
-            sim = simulation.steady_state(excitation, fixation, initial_state=state)
+            problem = Problem(law, chi0, eta1, w / fixation.nu0, fixation)
+            sim = simulation.steady_state(problem, initial_state=state)
             status, solved = "ok", 1
             if sim.status != "converged" and state is not None:
-                sim = simulation.steady_state(excitation, fixation)
+                sim = simulation.steady_state(problem)
                 status, solved = "ok, restarted from the static state", 2
             if progress is not None:
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
@@ -224,7 +227,7 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
             if direction == "up":
                 for k, (abar_m, abar) in enumerate(sorted(curve.solutions_at(w, law), key=lambda s: s[1])):
                     rows.append({"direction": "-", "omega_bar": w, "model": "refined", "solution_index": k,
-                                 "status": "ok", "Abar": abar, "abar_m": abar_m,
-                                 "A_over_am": float(contact_radius_amplitude_ratio(abar, abar_m, p.chi0, w / p.nu0)),
+                                 "status": "ok", "Abar": abar, "abar_m": abar_m, "A_over_am": float(
+                                     contact_radius_amplitude_ratio(abar, abar_m, chi0, problem.omega_check)),
                                  "stable": math.nan, "max_floquet_multiplier": math.nan})
     return pd.DataFrame(rows)[SWEEP_COLUMNS]

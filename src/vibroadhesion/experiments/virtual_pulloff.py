@@ -61,6 +61,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any, Literal, NamedTuple
 
 import numpy as np
@@ -69,14 +70,15 @@ from scipy.optimize import minimize_scalar
 
 from vibroadhesion import simulation
 from vibroadhesion.core import groups
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models import exact_averaging
-from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
-from vibroadhesion.models.leading_order import Fixation
+from vibroadhesion.models.compliant import pulloff_by_scan
 from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.numerics.roots import NoRootError
@@ -106,8 +108,7 @@ def _ended(failure: str, solved: int) -> VirtualPulloff:
     return VirtualPulloff(status, *(math.nan,) * 6, solved)
 
 
-def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.SpringFixation | None,
-                   last: simulation.SteadyState, failure: str) -> str:
+def _end_of_family(problem: Problem, last: simulation.SteadyState, failure: str) -> str:
     """Why the family ends: the shooting's own ``contact_loss``, or else what the transient says.
 
     The transient runs from the last orbit at the nearest failed deltabar0 over
@@ -116,16 +117,15 @@ def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.S
     if failure == "contact_loss":
         return failure
     try:
-        run = simulation.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
+        run = simulation.transient(problem, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
     except RuntimeError:
         return failure
     return "contact_loss" if run.status == "contact_loss" else failure
 
 
-def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz,
-                      fixation: simulation.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
-                      halvings: int = 6, iterations: int = 15) -> VirtualPulloff:
-    """Pull-off from the family of steady states in deltabar0 (module docstring); ``fixation=None`` is rigid.
+def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 400, halvings: int = 6,
+                      iterations: int = 15) -> VirtualPulloff:
+    """Pull-off from the family of steady states in deltabar0 (module docstring), from ``problem``'s base offset.
 
     ``step`` is the target change of the mean contact displacement deltabar_m per orbit; the base step
     is step (1 + sigma S) (module docstring). After a failed orbit the next steps go at most half-way
@@ -137,18 +137,19 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
     attempts cheap); the first, from the static state, the default of :func:`simulation.steady_state`.
     The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
     """
-    sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
-    run = _Withdrawal(law, chi0, eta1, omega_check, fixation, iterations)
+    fixation = problem.fixation
+    sigma = 0.0 if fixation.is_rigid else contact_radius_ratio(problem.chi0) / fixation.kappa
+    run = _Withdrawal(problem, iterations)
     family: list[tuple[float, simulation.SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
-    d0, state = 0.0, None
+    d0, state = problem.base_offset, None
     for _ in range(max_steps):
         orbit_k = run.orbit(d0, state)
         if orbit_k.status != "converged":
             if not family:
                 return _ended(orbit_k.status, run.solved)
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(run.excitation(d0), fixation, family[-1][1], orbit_k.status), run.solved)
+                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], orbit_k.status), run.solved)
             failure = (d0, orbit_k.status)
         else:
             family.append((d0, orbit_k))
@@ -174,25 +175,22 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
 class _Withdrawal:
     """One quasi-static withdrawal: the orbits solved at base offsets deltabar0, counted and cached."""
 
-    def __init__(self, law: GentSchultz, chi0: float, eta1: float, omega_check: float,
-                 fixation: simulation.SpringFixation | None, iterations: int) -> None:
-        """Excitation of Eq. (11) at (chi0, eta1, omega_check); ``iterations`` caps predicted shootings."""
-        self.law, self.chi0, self.eta1, self.omega_check = law, chi0, eta1, omega_check
-        self.fixation, self.iterations = fixation, iterations
+    def __init__(self, problem: Problem, iterations: int) -> None:
+        """The withdrawal of ``problem``'s base (Eq. 11); ``iterations`` caps predicted shootings."""
+        self.problem, self.iterations = problem, iterations
         self.solved = 0
         self.cache: dict[float, simulation.SteadyState] = {}
 
-    def excitation(self, d0: float) -> simulation.BaseExcitation:
-        """The base excitation at offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
-        return simulation.BaseExcitation(self.law, self.chi0, self.eta1, self.omega_check, deltabar0=d0)
+    def problem_at(self, d0: float) -> Problem:
+        """The problem at base offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
+        return replace(self.problem, base_offset=d0)
 
     def orbit(self, d0: float, state: np.ndarray | None) -> simulation.SteadyState:
         """The periodic steady state at ``d0``: from the static state (``state`` None) or a predicted one."""
         self.solved += 1
         if state is None:
-            return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=None)
-        return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=state,
-                                       max_iterations=self.iterations)
+            return simulation.steady_state(self.problem_at(d0), initial_state=None)
+        return simulation.steady_state(self.problem_at(d0), initial_state=state, max_iterations=self.iterations)
 
     def mean_force(self, d: float, bracket: list[tuple[float, simulation.SteadyState]]) -> float:
         """Phat_m of the orbit at ``d`` (solved once, from the bracket's interpolation); inf where none converges."""
@@ -251,18 +249,18 @@ def _interpolated_state(bracket: list[tuple[float, simulation.SteadyState]], d0:
     return np.array([np.interp(d0, ds, states[:, i]) for i in range(states.shape[1])])
 
 
-def _refined_compliant_ratio(omega_bar: float, case: CompliantFixation, law: GentSchultz) -> float:
+def _refined_compliant_ratio(omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: GentSchultz) -> float:
     """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn)."""
-    roots = pulloff_by_scan(omega_bar, case, law, PULLOFF_SCAN)
+    roots = pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN)
     if not roots:
         raise NoRootError(f"Eq. (90) at a_m = a_cr: no root on the scan at omega_bar = {omega_bar:.6g}")
     return float(j_integrals_for_law(roots[0][1], law)[0]) ** 2
 
 
-def _prediction(solve: Callable[[CompliantFixation], float], case: CompliantFixation) -> dict[str, Any]:
-    """{status, pulloff_ratio} of one prediction: ``ok`` and the ratio, or ``no_solution`` and NaN."""
+def _prediction(solve: Callable[[float], float], eta1: float) -> dict[str, Any]:
+    """{status, pulloff_ratio} of one prediction at ``eta1``: ``ok`` and the ratio, or ``no_solution`` and NaN."""
     try:
-        return {"status": "ok", "pulloff_ratio": solve(case)}
+        return {"status": "ok", "pulloff_ratio": solve(eta1)}
     except NoRootError:
         return {"status": "no_solution", "pulloff_ratio": math.nan}
 
@@ -272,12 +270,12 @@ COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "statu
 
 
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
-                  reduced_modulus: float, fixation: simulation.SpringFixation | None = None,
+                  reduced_modulus: float, fixation: Fixation = Fixation.rigid(),
                   progress: ProgressBar | None = None, predictions: bool = True) -> pd.DataFrame:
     """Rows of results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv.
 
     The simulated (virtual) experiment and, unless ``predictions`` is false, the predictions of the
-    module docstring, for the rigid (``fixation=None``) or the spring fixation. ``progress`` advances
+    module docstring, for the rigid (the default) or the compliant fixation. ``progress`` advances
     once per amplitude with the steady states solved for it.
     """
     law = GentSchultz(params.n)
@@ -288,7 +286,7 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     eta1 = h1_um * 1e-6 / radius
     rows = []
     for h1, e in zip(h1_um, eta1, strict=True):
-        result = simulated_pulloff(float(e), omega_check, chi0, law, fixation)
+        result = simulated_pulloff(Problem(law, chi0, float(e), omega_check, fixation))
         rows.append({"model": "simulation", "h1_um": h1, "status": result.status, "pulloff_ratio": result.ratio,
                      "abar_m": result.abar_m, "abar_cr": result.abar_cr, "steady_states": result.steady_states})
         if progress is not None:
@@ -296,21 +294,19 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
                                                    f"P/P_JKR = {result.ratio:.6g}")
     if predictions:
         rows += _predicted_rows(params, frequency_hz, h1_um, fixation, radius=radius, reduced_modulus=reduced_modulus)
-    constants = ({"fixation": "rigid", "kappa": math.nan, "zeta": math.nan} if fixation is None
-                 else {"fixation": "compliant", "kappa": fixation.kappa, "zeta": fixation.zeta})
-    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **constants)
+    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **fixation.csv_constants)
     table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN
     return table.reindex(columns=COLUMNS)
 
 
 def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray,
-                    fixation: simulation.SpringFixation | None, *, radius: float,
+                    fixation: Fixation, *, radius: float,
                     reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
-    if fixation is None:
+    if fixation.is_rigid:
         rows: list[dict[str, Any]] = []
         for model in ("leading", "refined"):
             pred = predict_pulloff(model, params, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus)
@@ -323,10 +319,9 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
         rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r,
                   "abar_m": a} for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m, strict=True)]
         return rows
-    omega_bar = float(groups.omega_check(frequency_hz, params.v0, radius)) * fixation.nu0
-    spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
-    cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
-    solvers = {"leading": lambda case: float(pulloff_leading(case.eta1, chi0, law, spring).ratio),
-               "refined": lambda case: _refined_compliant_ratio(omega_bar, case, law)}
-    return [{"model": model, "h1_um": h, **_prediction(solve, case)}
-            for model, solve in solvers.items() for h, case in zip(h1_um, cases, strict=True)]
+    omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
+    omega_bar = fixation.omega_bar(omega_check)
+    solvers = {"leading": lambda e: float(pulloff_leading(e, chi0, law, fixation, omega_check).ratio),
+               "refined": lambda e: _refined_compliant_ratio(omega_bar, fixation, chi0, e, law)}
+    return [{"model": model, "h1_um": h, **_prediction(solve, float(e))}
+            for model, solve in solvers.items() for h, e in zip(h1_um, eta1, strict=True)]
