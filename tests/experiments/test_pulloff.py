@@ -39,8 +39,8 @@ def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: floa
     assert residual < 1e-12, f"Abar_cr = {abar!r}: relative residual {residual:.3e}"
     # Eq. (71): the reported amplification is J0(Abar_cr)^2, and pulloff_leading agrees with the scalar solver
     est = pulloff_leading(np.array([eta1]), CHI0, law)
-    assert est.abar_cr[0] == abar
-    assert abs(est.ratio[0] / float(j0**2) - 1) < 1e-12
+    assert est.Abar_cr[0] == abar
+    assert abs(est.pulloff_ratio[0] / float(j0**2) - 1) < 1e-12
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
@@ -69,9 +69,9 @@ def test_eta1_zero_gives_abar_zero_and_ratio_exactly_one() -> None:
     assert critical_abar_refined(0.0, CHI0, 1e6, law) == 0.0
     lead = pulloff_leading(0.0, CHI0, law)
     ref = pulloff_refined(0.0, CHI0, 1e6, law)
-    assert float(lead.abar_cr) == 0.0 and float(ref.abar_cr) == 0.0
-    assert (float(lead.ratio), float(ref.ratio)) == (1.0, 1.0), (
-        f"ratio - 1 = {float(lead.ratio) - 1:.3e} (leading), {float(ref.ratio) - 1:.3e} (refined)"
+    assert float(lead.Abar_cr) == 0.0 and float(ref.Abar_cr) == 0.0
+    assert (float(lead.pulloff_ratio), float(ref.pulloff_ratio)) == (1.0, 1.0), (
+        f"ratio - 1 = {float(lead.pulloff_ratio) - 1:.3e} (leading), {float(ref.pulloff_ratio) - 1:.3e} (refined)"
     )
 
 
@@ -81,9 +81,9 @@ def test_tiny_eta1_gives_ratio_within_1e6_of_one(n: float) -> None:
     law = GentSchultz(n)
     lead = pulloff_leading(1e-9, CHI0, law)
     ref = pulloff_refined(1e-9, CHI0, 1e4, law)
-    assert abs(float(lead.ratio) - 1) < 1e-6
-    assert abs(float(ref.ratio) - 1) < 1e-6
-    assert float(lead.ratio) >= 1 - 1e-14 and float(ref.ratio) >= 1 - 1e-14  # J0 >= 1 (S >= 2)
+    assert abs(float(lead.pulloff_ratio) - 1) < 1e-6
+    assert abs(float(ref.pulloff_ratio) - 1) < 1e-6
+    assert float(lead.pulloff_ratio) >= 1 - 1e-14 and float(ref.pulloff_ratio) >= 1 - 1e-14  # J0 >= 1 (S >= 2)
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
@@ -97,9 +97,9 @@ def test_very_large_eta1_gives_finite_ratio_without_warning(n: float) -> None:
         lead = pulloff_leading(0.05, CHI0, law)
         ref = pulloff_refined(0.05, CHI0, np.array([1e2, 1e6]), law)
     for est in (lead, ref):
-        assert np.all(np.isfinite(est.abar_cr)) and np.all(np.isfinite(est.ratio))
-        assert np.all(est.ratio > 1)
-    assert np.all(ref.ratio <= float(lead.ratio) * (1 + 1e-14))
+        assert np.all(np.isfinite(est.Abar_cr)) and np.all(np.isfinite(est.pulloff_ratio))
+        assert np.all(est.pulloff_ratio > 1)
+    assert np.all(ref.pulloff_ratio <= float(lead.pulloff_ratio) * (1 + 1e-14))
 
 
 @pytest.mark.parametrize(
@@ -136,11 +136,11 @@ def test_refined_ratio_not_above_leading_ratio(n: float) -> None:
     omega = np.array([1e1, 1e3, 1e5, 1e8])[None, :]
     lead = pulloff_leading(eta1[:, 0], CHI0, law)
     ref = pulloff_refined(eta1, CHI0, omega, law)
-    assert ref.ratio.shape == (3, 4)
-    assert np.all(ref.abar_cr <= lead.abar_cr[:, None] * (1 + 1e-13))
-    assert np.all(ref.ratio <= lead.ratio[:, None] * (1 + 1e-14))
+    assert ref.pulloff_ratio.shape == (3, 4)
+    assert np.all(ref.Abar_cr <= lead.Abar_cr[:, None] * (1 + 1e-13))
+    assert np.all(ref.pulloff_ratio <= lead.pulloff_ratio[:, None] * (1 + 1e-14))
     # and increases towards the leading value with omega_check (frequency term shrinks as 1/omega^2)
-    assert np.all(np.diff(ref.abar_cr, axis=1) >= 0)
+    assert np.all(np.diff(ref.Abar_cr, axis=1) >= 0)
 
 
 @pytest.mark.parametrize("n", [0.05, 4.0])
@@ -191,14 +191,15 @@ def _saturating_j_mp(abar: float) -> tuple[mp.mpf, mp.mpf]:
 
 def test_bounded_lhs_rate_law_raises_no_root_error() -> None:
     """Closed-form bound: LHS of Eq. (72) < 1.7 for the Saturating law; eta1 = 1e-2 needs 3 eta1/chi0^2 = 44.8,
-    so there is no root: NoRootError, not a number (also for Eq. 106 with omega_check = inf).
+    so there is no root: NoRootError, not a number (also for Eq. 106 with omega_check = inf); at the level's
+    boundary (pulloff_leading) the status no_solution with NaN numbers.
     """
     law = Saturating()
     assert 3 * 1e-2 / CHI0**2 > 1.7
     with pytest.raises(NoRootError):
         critical_abar_leading(1e-2, CHI0, law)
-    with pytest.raises(NoRootError):
-        pulloff_leading(np.array([1e-6, 1e-2]), CHI0, law)
+    unsolved = pulloff_leading(np.array([1e-6, 1e-2]), CHI0, law)
+    assert unsolved.status.tolist() == ["ok", "no_solution"] and np.all(np.isnan(unsolved.pulloff_ratio[1:]))
     with pytest.raises(NoRootError):
         critical_abar_refined(1e-2, CHI0, math.inf, law)
 

@@ -1,9 +1,10 @@
 """Parameters and kernels of the model, on which every model level builds.
 
 The Gent–Schultz rate law (Eqs. 6, 73–75), the J-integrals (Eqs. 28, 29, 36), JKR contact
-(Eqs. 4, 5, 60, 70) and the dimensionless groups (Eqs. 64–66, 81, 86, 97, 105).
+(Eqs. 4, 5, 60, 70), the dimensionless groups (Eqs. 64–66, 81, 86, 97, 105) and the two result
+records every model level returns (:mod:`~vibroadhesion.core.records`).
 
 Layer 1: imports only from :mod:`vibroadhesion.numerics`.
 """
 
-__all__ = ["ratelaw", "integrals", "jkr", "groups"]
+__all__ = ["ratelaw", "integrals", "jkr", "groups", "records"]

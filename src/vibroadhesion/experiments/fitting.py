@@ -33,7 +33,7 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import least_squares
 
-from vibroadhesion.experiments.pulloff import MODELS, GentSchultzParameters, Model, predict_pulloff
+from vibroadhesion.experiments.pulloff import MODELS, GentSchultzParameters, Model, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.roots import NoRootError
 
 UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
@@ -66,7 +66,11 @@ def _residual_function(
         return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values, strict=True)})
 
     def residuals(log_values: np.ndarray) -> np.ndarray:
-        return predict_pulloff(model, params_of(log_values), freq, h1, **geometry).pulloff_mN / observed - 1.0
+        params = params_of(log_values)
+        pulloff = predict_pulloff(model, params, freq, h1, **geometry)
+        if not np.all(pulloff.found):
+            raise FitError(f"{model} fit of {free}: the model has no solution at a trial point ({params})")
+        return pulloff_mN(pulloff, params.w0, geometry["radius"]) / observed - 1.0
 
     return residuals, params_of
 

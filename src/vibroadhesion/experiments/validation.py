@@ -30,14 +30,12 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion import simulation
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models import exact_averaging, exact_harmonic_balance
 from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
-from vibroadhesion.models.leading_order import mean_force_over_pulloff
-from vibroadhesion.models.refined import nominal_point_contact
+from vibroadhesion.models.refined import leading_nominal_point_contact, nominal_point_contact
 from vibroadhesion.numerics.progress import ProgressBar
-from vibroadhesion.numerics.roots import NoRootError
 
 MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
 QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")
@@ -50,60 +48,31 @@ APPLICABILITY_LIMIT = 0.1
 TRUSTED_ERROR = 0.05
 
 
-#: One model level at one point: (eta1, omega_check, chi0, law) -> (status, QUANTITIES or None).
-Level = Callable[[float, float, float, GentSchultz], tuple[str, tuple[float, ...] | None]]
+#: One model level at one point: (eta1, omega_check, chi0, law) -> its steady-state record.
+Level = Callable[[float, float, float, GentSchultz], SteadyState]
 
 
-def _j_model_values(sol: Any) -> tuple[float, ...]:
-    """QUANTITIES of a J-integral level's solution, P_m/|P_JKR| from Eq. (52)."""
-    abar, abar_m, w_eff = float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio)
-    pm = float(mean_force_over_pulloff(abar_m, math.sqrt(w_eff)))  # Eq. (52)
-    return abar, abar_m, w_eff, float(sol.a_over_am), pm
+def simulated_nominal_point_contact(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> SteadyState:
+    """The direct simulation's periodic steady state of the rigidly fixed nominal point contact (Eqs. 4-11, 78)."""
+    return simulation.steady_state(simulation.BaseExcitation(law, chi0, eta1, omega_check))
 
 
-def _simulation(
-    eta1: float, omega_check: float, chi0: float, law: GentSchultz
-) -> tuple[str, tuple[float, ...] | None]:
-    """The direct simulation's periodic steady state (rigid fixation) as a level."""
-    sim = simulation.steady_state(simulation.BaseExcitation(law, chi0, eta1, omega_check))
-    if sim.status != "converged":
-        return sim.status, None
-    return "ok", (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)
-
-
-def _leading(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
-    """Leading order: the refined solution at omega_check = inf, A/a_m at the actual omega_check (corrected Eq. 98)."""
-    sol = nominal_point_contact(eta1, math.inf, chi0, law)
-    a_over_am = contact_radius_amplitude_ratio(sol.abar, sol.abar_m, chi0, omega_check)
-    return "ok", _j_model_values(sol._replace(a_over_am=a_over_am))
-
-
-def _refined(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
-    """The refined nominal point contact (Eqs. 122-123)."""
-    return "ok", _j_model_values(nominal_point_contact(eta1, omega_check, chi0, law))
-
-
-def _exact(solve: Callable[[float, float, float, GentSchultz], Any]) -> Level:
-    """An exact level (harmonic balance, averaging) as a :data:`Level`; no root gives ``no_solution``."""
-
-    def level(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
-        try:
-            sol = solve(eta1, omega_check, chi0, law)
-        except NoRootError:  # includes NoSteadyStateError
-            return "no_solution", None
-        return "ok", (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio), float(sol.a_over_am),
-                      float(sol.mean_force_ratio))
-    return level
-
-
-#: Each model level as a solver of one point: (eta1, omega_check, chi0, law) -> (status, QUANTITIES or None).
-LEVELS = {
-    "simulation": _simulation,
-    "leading": _leading,
-    "refined": _refined,
-    "exact_hb": _exact(exact_harmonic_balance.rigid_fixation),
-    "exact_averaging": _exact(exact_averaging.nominal_point_contact),
+#: Each model level as a solver of one point, in the row order of rigid_grid.csv.
+LEVELS: dict[str, Level] = {
+    "simulation": simulated_nominal_point_contact,
+    "leading": leading_nominal_point_contact,
+    "refined": nominal_point_contact,
+    "exact_hb": exact_harmonic_balance.rigid_fixation,
+    "exact_averaging": exact_averaging.nominal_point_contact,
 }
+
+
+def _row_numbers(state: SteadyState) -> dict[str, float]:
+    """QUANTITIES of a record (P_m/|P_JKR| as ``Pm_over_PJKR``); NaN unless its status is ``ok``."""
+    values = (state.Abar, state.abar_m, state.w_eff_ratio, state.A_over_am, state.pm_over_abs_pjkr)
+    if not state.ok:
+        return dict.fromkeys(QUANTITIES, math.nan)
+    return {quantity: float(value) for quantity, value in zip(QUANTITIES, values, strict=True)}
 
 
 def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict[str, Any]]:
@@ -111,12 +80,9 @@ def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float,
     law = GentSchultz(n)
     rows = []
     for model, level in LEVELS.items():
-        status, values = level(h1_um * 1e-6 / radius, omega_check, chi0, law)
-        if values is None:
-            numbers = dict.fromkeys(QUANTITIES, math.nan)
-        else:
-            numbers = dict(zip(QUANTITIES, values, strict=True))
-        rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": status, **numbers})
+        state = level(h1_um * 1e-6 / radius, omega_check, chi0, law)
+        rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": str(state.status),
+                     **_row_numbers(state)})
     return rows
 
 
@@ -206,25 +172,26 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
             excitation = simulation.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
             sim = simulation.steady_state(excitation, fixation, initial_state=state)
             status, solved = "ok", 1
-            if sim.status != "converged" and state is not None:
+            if not sim.ok and state is not None:
                 sim = simulation.steady_state(excitation, fixation)
                 status, solved = "ok, restarted from the static state", 2
             if progress is not None:
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
-            if sim.status == "converged":
-                state = sim.start_state
+            if sim.ok and sim.orbit is not None:
+                state = sim.orbit.start_state
                 rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
-                             "status": status, "Abar": sim.abar, "abar_m": sim.abar_m, "A_over_am": sim.a_over_am,
-                             "stable": sim.stable,
-                             "max_floquet_multiplier": float(np.max(np.abs(sim.floquet_multipliers)))})
+                             "status": status, "Abar": float(sim.Abar), "abar_m": float(sim.abar_m),
+                             "A_over_am": float(sim.A_over_am), "stable": bool(sim.stable),
+                             "max_floquet_multiplier": float(np.max(np.abs(sim.orbit.floquet_multipliers)))})
             else:
                 rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
-                             "status": sim.status, "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
+                             "status": str(sim.status), "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
                              "stable": False, "max_floquet_multiplier": math.nan})
             if direction == "up":
-                for k, (abar_m, abar) in enumerate(sorted(curve.solutions_at(w, law), key=lambda s: s[1])):
-                    rows.append({"direction": "-", "omega_bar": w, "model": "refined", "branch": k, "status": "ok",
-                                 "Abar": abar, "abar_m": abar_m,
-                                 "A_over_am": float(contact_radius_amplitude_ratio(abar, abar_m, p.chi0, w / p.nu0)),
-                                 "stable": math.nan, "max_floquet_multiplier": math.nan})
+                refined = curve.steady_states_at(w, law)
+                rows += [{"direction": "-", "omega_bar": w, "model": refined.level, "branch": k, "status": str(status),
+                          "Abar": float(abar), "abar_m": float(abar_m), "A_over_am": float(a_over_am),
+                          "stable": math.nan, "max_floquet_multiplier": math.nan}
+                         for k, (status, abar, abar_m, a_over_am) in enumerate(
+                             zip(refined.status, refined.Abar, refined.abar_m, refined.A_over_am, strict=True))]
     return pd.DataFrame(rows)[SWEEP_COLUMNS]

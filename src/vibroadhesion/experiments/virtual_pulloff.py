@@ -60,8 +60,7 @@ Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from typing import Any, Literal, NamedTuple
+from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -70,44 +69,37 @@ from scipy.optimize import minimize_scalar
 from vibroadhesion import simulation
 from vibroadhesion.core import groups
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
-from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.models.leading_order import Fixation
-from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
+from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_from_abar, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
-from vibroadhesion.numerics.roots import NoRootError
-
-Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
-
-
-class VirtualPulloff(NamedTuple):
-    """Outcome of one simulated pull-off: the extremum of the mean force along the family, or why none."""
-
-    status: Status
-    ratio: float  # P_cr / P_cr^JKR = -min P_m / |P_JKR| (positive), NaN without an extremum
-    deltabar0: float  # base offset (hhat - h0) R/a_o^2 at pull-off
-    abar_m: float  # simulated mean contact radius at pull-off, a_m/a_o
-    abar_cr: float  # the paper's criterion (Eq. 61) with the simulated w_eff there
-    w_eff_ratio: float
-    a_over_am: float
-    steady_states: int  # periodic orbits solved along the family (failed attempts included)
-
 
 #: Periods of the transient that tells how a family without an extremum ends (module docstring).
 END_TRANSIENT_PERIODS = 200
 
 
-def _ended(failure: str, solved: int) -> VirtualPulloff:
-    status: Status = "contact_loss_before_extremum" if failure == "contact_loss" else "no_steady_state_before_extremum"
-    return VirtualPulloff(status, *(math.nan,) * 6, solved)
+def _ended(failure: str, solved: int) -> Pulloff:
+    """The record of a family without a force extremum: why it ended, every number NaN."""
+    status: PulloffStatus = ("contact_loss_before_extremum" if failure == "contact_loss"
+                             else "no_steady_state_before_extremum")
+    nan = np.asarray(math.nan)
+    return Pulloff("simulation", np.asarray(status), *(nan,) * 8, steady_states=solved)
+
+
+def _orbit(state: SteadyState) -> OrbitDiagnostics:
+    """The orbit diagnostics of a simulated steady state (every record of the simulation has them)."""
+    if state.orbit is None:
+        raise TypeError(f"a {state.level} steady state has no orbit diagnostics")
+    return state.orbit
 
 
 def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.SpringFixation | None,
-                   last: simulation.SteadyState, failure: str) -> str:
+                   last: SteadyState, failure: str) -> str:
     """Why the family ends: the shooting's own ``contact_loss``, or else what the transient says.
 
     The transient runs from the last orbit at the nearest failed deltabar0 over
@@ -116,7 +108,8 @@ def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.S
     if failure == "contact_loss":
         return failure
     try:
-        run = simulation.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
+        run = simulation.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS,
+                                   initial_state=_orbit(last).start_state)
     except RuntimeError:
         return failure
     return "contact_loss" if run.status == "contact_loss" else failure
@@ -124,8 +117,12 @@ def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.S
 
 def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz,
                       fixation: simulation.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
-                      halvings: int = 6, iterations: int = 15) -> VirtualPulloff:
+                      halvings: int = 6, iterations: int = 15) -> Pulloff:
     """Pull-off from the family of steady states in deltabar0 (module docstring); ``fixation=None`` is rigid.
+
+    The record of level ``simulation`` (scalar): status ``pulloff`` with P_cr/P_cr^JKR = -min P_m/|P_JKR|,
+    the base offset, mean radius, w_eff/w0 and A/a_m of the most tensile orbit and the paper's
+    criterion abar_cr (Eq. 61) at its w_eff; or why the family ended without an extremum, NaN.
 
     ``step`` is the target change of the mean contact displacement deltabar_m per orbit; the base step
     is step (1 + sigma S) (module docstring). After a failed orbit the next steps go at most half-way
@@ -139,22 +136,23 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
     """
     sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
     run = _Withdrawal(law, chi0, eta1, omega_check, fixation, iterations)
-    family: list[tuple[float, simulation.SteadyState]] = []
+    family: list[tuple[float, SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
     d0, state = 0.0, None
     for _ in range(max_steps):
         orbit_k = run.orbit(d0, state)
-        if orbit_k.status != "converged":
+        if not orbit_k.ok:
+            status = str(orbit_k.status)
             if not family:
-                return _ended(orbit_k.status, run.solved)
+                return _ended(status, run.solved)
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(run.excitation(d0), fixation, family[-1][1], orbit_k.status), run.solved)
-            failure = (d0, orbit_k.status)
+                return _ended(_end_of_family(run.excitation(d0), fixation, family[-1][1], status), run.solved)
+            failure = (d0, status)
         else:
             family.append((d0, orbit_k))
             if failure is not None and d0 == failure[0]:  # the earlier failure was the shooting's, not the family's
                 failure = None
-            if len(family) >= 3 and family[-1][1].phat_m > family[-2][1].phat_m:
+            if len(family) >= 3 and _orbit(family[-1][1]).phat_m > _orbit(family[-2][1]).phat_m:
                 break
         d0, state = _next_offset(family, failure, step, sigma, halvings)
     else:
@@ -166,9 +164,13 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
                     options={"xatol": 1e-4 * step})
     d_best = min(run.cache, key=run.cached_force)  # every evaluation is cached: the most tensile orbit found
     at = run.cache[d_best]
-    return VirtualPulloff("pulloff", float(at.phat_m / PHAT_JKR), float(d_best), float(at.abar_m),
-                          float(pulloff_closure(math.sqrt(at.w_eff_ratio))), float(at.w_eff_ratio),
-                          float(at.a_over_am), run.solved)
+    w_eff_ratio = float(at.w_eff_ratio)
+    sqrt_w_eff_ratio = math.sqrt(w_eff_ratio)
+    return Pulloff("simulation", np.asarray("pulloff"), pulloff_ratio=np.asarray(float(_orbit(at).phat_m / PHAT_JKR)),
+                   Abar_cr=np.asarray(math.nan), sqrt_w_eff_ratio=np.asarray(sqrt_w_eff_ratio),
+                   w_eff_ratio=np.asarray(w_eff_ratio), abar_cr=np.asarray(float(pulloff_closure(sqrt_w_eff_ratio))),
+                   abar_m=np.asarray(float(at.abar_m)), A_over_am=np.asarray(float(at.A_over_am)),
+                   base_offset=np.asarray(float(d_best)), steady_states=run.solved)
 
 
 class _Withdrawal:
@@ -180,13 +182,13 @@ class _Withdrawal:
         self.law, self.chi0, self.eta1, self.omega_check = law, chi0, eta1, omega_check
         self.fixation, self.iterations = fixation, iterations
         self.solved = 0
-        self.cache: dict[float, simulation.SteadyState] = {}
+        self.cache: dict[float, SteadyState] = {}
 
     def excitation(self, d0: float) -> simulation.BaseExcitation:
         """The base excitation at offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
         return simulation.BaseExcitation(self.law, self.chi0, self.eta1, self.omega_check, deltabar0=d0)
 
-    def orbit(self, d0: float, state: np.ndarray | None) -> simulation.SteadyState:
+    def orbit(self, d0: float, state: np.ndarray | None) -> SteadyState:
         """The periodic steady state at ``d0``: from the static state (``state`` None) or a predicted one."""
         self.solved += 1
         if state is None:
@@ -194,7 +196,7 @@ class _Withdrawal:
         return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=state,
                                        max_iterations=self.iterations)
 
-    def mean_force(self, d: float, bracket: list[tuple[float, simulation.SteadyState]]) -> float:
+    def mean_force(self, d: float, bracket: list[tuple[float, SteadyState]]) -> float:
         """Phat_m of the orbit at ``d`` (solved once, from the bracket's interpolation); inf where none converges."""
         if d not in self.cache:
             self.cache[d] = self.orbit(d, _interpolated_state(bracket, d))
@@ -202,10 +204,10 @@ class _Withdrawal:
 
     def cached_force(self, d: float) -> float:
         """Phat_m of the cached orbit at ``d``; inf where it did not converge (never the most tensile)."""
-        return self.cache[d].phat_m if self.cache[d].status == "converged" else math.inf
+        return _orbit(self.cache[d]).phat_m if self.cache[d].ok else math.inf
 
 
-def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tuple[float, str] | None,
+def _next_offset(family: list[tuple[float, SteadyState]], failure: tuple[float, str] | None,
                  step: float, sigma: float, halvings: int) -> tuple[float, np.ndarray]:
     """The next base offset and its predicted start state (module docstring: base step step (1 + sigma S)).
 
@@ -216,10 +218,10 @@ def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tu
     d_last, last = family[-1]
     if len(family) >= 2:
         previous = family[-2][1]
-        stiffness = (last.phat_m - previous.phat_m) / (last.deltabar_m - previous.deltabar_m)
+        stiffness = (_orbit(last).phat_m - _orbit(previous).phat_m) / float(last.deltabar_m - previous.deltabar_m)
     else:
-        stiffness = 2.0 * last.abar_m
-    stiffness = min(max(stiffness, 0.0), 2.0 * last.abar_m)
+        stiffness = 2.0 * float(last.abar_m)
+    stiffness = min(max(stiffness, 0.0), 2.0 * float(last.abar_m))
     d0 = d_last - step * (1.0 + sigma * stiffness)
     if failure is not None:
         gap = d_last - failure[0]
@@ -227,7 +229,7 @@ def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tu
     return d0, _predicted_state(family, d0, sigma * stiffness)
 
 
-def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float,
+def _predicted_state(family: list[tuple[float, SteadyState]], d0: float,
                      sigma_stiffness: float) -> np.ndarray:
     """Start state for the orbit at ``d0``, extrapolated from the family.
 
@@ -237,34 +239,43 @@ def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: flo
     d_last, last = family[-1]
     if len(family) >= 2:
         d_prev, previous = family[-2]
-        return last.start_state + (last.start_state - previous.start_state) * (d0 - d_last) / (d_last - d_prev)
-    state = last.start_state.copy()
+        start, previous_start = _orbit(last).start_state, _orbit(previous).start_state
+        return start + (start - previous_start) * (d0 - d_last) / (d_last - d_prev)
+    state = _orbit(last).start_state.copy()
     if state.size == 3:
         state[0] -= sigma_stiffness / (1.0 + sigma_stiffness) * (d0 - d_last)
     return state
 
 
-def _interpolated_state(bracket: list[tuple[float, simulation.SteadyState]], d0: float) -> np.ndarray:
+def _interpolated_state(bracket: list[tuple[float, SteadyState]], d0: float) -> np.ndarray:
     """Start state inside the bracket of the extremum: piecewise-linear in deltabar0 between its orbits."""
     ds = np.array([d for d, _ in bracket])[::-1]  # ascending
-    states = np.array([o.start_state for _, o in bracket])[::-1]
+    states = np.array([_orbit(o).start_state for _, o in bracket])[::-1]
     return np.array([np.interp(d0, ds, states[:, i]) for i in range(states.shape[1])])
 
 
-def _refined_compliant_ratio(omega_bar: float, case: CompliantFixation, law: GentSchultz) -> float:
-    """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn)."""
+def _refined_compliant_pulloff(omega_bar: float, case: CompliantFixation, law: GentSchultz) -> Pulloff:
+    """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn).
+
+    The record of level ``refined`` (scalar); no root on the scan gives ``no_solution``.
+    """
     roots = pulloff_by_scan(omega_bar, case, law, PULLOFF_SCAN)
-    if not roots:
-        raise NoRootError(f"Eq. (90) at a_m = a_cr: no root on the scan at omega_bar = {omega_bar:.6g}")
-    return float(j_integrals_for_law(roots[0][1], law)[0]) ** 2
+    return pulloff_from_abar("refined", np.asarray(roots[0][1] if roots else math.nan), law)
 
 
-def _prediction(solve: Callable[[CompliantFixation], float], case: CompliantFixation) -> dict[str, Any]:
-    """{status, pulloff_ratio} of one prediction: ``ok`` and the ratio, or ``no_solution`` and NaN."""
-    try:
-        return {"status": "ok", "pulloff_ratio": solve(case)}
-    except NoRootError:
-        return {"status": "no_solution", "pulloff_ratio": math.nan}
+def _record_rows(pulloff: Pulloff, h1_um: np.ndarray) -> list[dict[str, Any]]:
+    """Rows of :func:`pulloff_table` from one record, one per amplitude; NaN where the level gives no number."""
+    rows: list[dict[str, Any]] = [
+        {"model": pulloff.level, "h1_um": h, "status": str(status), "pulloff_ratio": ratio, "abar_m": abar_m,
+         "abar_cr": abar_cr}
+        for h, status, ratio, abar_m, abar_cr in zip(
+            h1_um, *(np.ravel(v) for v in (pulloff.status, pulloff.pulloff_ratio, pulloff.abar_m, pulloff.abar_cr)),
+            strict=True)
+    ]
+    if pulloff.steady_states is not None:
+        for row in rows:
+            row["steady_states"] = pulloff.steady_states
+    return rows
 
 
 COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "status", "pulloff_ratio", "pulloff_mN",
@@ -289,11 +300,10 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     rows = []
     for h1, e in zip(h1_um, eta1, strict=True):
         result = simulated_pulloff(float(e), omega_check, chi0, law, fixation)
-        rows.append({"model": "simulation", "h1_um": h1, "status": result.status, "pulloff_ratio": result.ratio,
-                     "abar_m": result.abar_m, "abar_cr": result.abar_cr, "steady_states": result.steady_states})
+        rows += _record_rows(result, np.asarray([h1]))
         if progress is not None:
-            progress.advance(result.steady_states, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
-                                                   f"P/P_JKR = {result.ratio:.6g}")
+            progress.advance(result.steady_states or 0, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
+                                                        f"P/P_JKR = {float(result.pulloff_ratio):.6g}")
     if predictions:
         rows += _predicted_rows(params, frequency_hz, h1_um, fixation, radius=radius, reduced_modulus=reduced_modulus)
     constants = ({"fixation": "rigid", "kappa": math.nan, "zeta": math.nan} if fixation is None
@@ -314,19 +324,14 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
         rows: list[dict[str, Any]] = []
         for model in ("leading", "refined"):
             pred = predict_pulloff(model, params, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus)
-            rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r}
-                     for h, r in zip(h1_um, pred.ratio, strict=True)]
-        exact = exact_averaging.pulloff_at_critical_radius(eta1, chi0, law)
-        rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
-                 for h, r, a in zip(h1_um, exact.ratio, exact.abar_m, strict=True)]
-        minimum = exact_averaging.pulloff_at_force_minimum(eta1, chi0, law)
-        rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r,
-                  "abar_m": a} for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m, strict=True)]
+            rows += _record_rows(pred, h1_um)
+        rows += _record_rows(exact_averaging.pulloff_at_critical_radius(eta1, chi0, law), h1_um)
+        rows += _record_rows(exact_averaging.pulloff_at_force_minimum(eta1, chi0, law), h1_um)
         return rows
     omega_bar = float(groups.omega_check(frequency_hz, params.v0, radius)) * fixation.nu0
     spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
     cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
-    solvers = {"leading": lambda case: float(pulloff_leading(case.eta1, chi0, law, spring).ratio),
-               "refined": lambda case: _refined_compliant_ratio(omega_bar, case, law)}
-    return [{"model": model, "h1_um": h, **_prediction(solve, case)}
-            for model, solve in solvers.items() for h, case in zip(h1_um, cases, strict=True)]
+    leading = [pulloff_leading(case.eta1, chi0, law, spring) for case in cases]
+    refined = [_refined_compliant_pulloff(omega_bar, case, law) for case in cases]
+    return [row for pulloff, h in zip(leading + refined, [*h1_um, *h1_um], strict=True)
+            for row in _record_rows(pulloff, np.asarray([h]))]
