@@ -186,7 +186,9 @@ def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> Non
 
 # Run in a fresh interpreter: import the package modules named on the command line, then, until
 # nothing new loads, every module named by an IMPORT_NAME instruction in the bytecode of a function
-# (or method) of a loaded package module; print the files of the package modules Python loaded.
+# (or method) of a loaded package module, and the modules of the registry's functions a loaded module
+# resolves (its LEVEL_FUNCTIONS, imported by name at run time); print the files of the package modules
+# Python loaded.
 _REFERENCE = r"""
 import dis, importlib, sys, types
 
@@ -227,6 +229,9 @@ while len(done) < len(loaded()):
         if name in done:
             continue
         done.add(name)
+        for role, function in getattr(module, "LEVEL_FUNCTIONS", ()):  # the registry's functions it resolves
+            for level_module in importlib.import_module("vibroadhesion.core.levels").modules(role, function):
+                load(level_module)
         for code in (c for top in functions(module) for c in nested(top)):
             for target, fromlist in imports(code):
                 load(target)

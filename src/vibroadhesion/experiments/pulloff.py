@@ -16,21 +16,17 @@ v0 does not enter them either.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from vibroadhesion.core import groups
+from vibroadhesion.core import groups, levels
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import Pulloff
-from vibroadhesion.models import exact_averaging
-from vibroadhesion.models.leading_pulloff import pulloff_leading
-from vibroadhesion.models.refined import pulloff_refined
 
-Model = Literal["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]
-MODELS: tuple[Model, ...] = ("leading", "refined", "exact_averaging", "exact_averaging_force_minimum")
+#: The registry's functions this module resolves (vibroadhesion.core.levels): the pull-off of every fitted level.
+LEVEL_FUNCTIONS = (("fit", "pulloff"),)
 
 
 @dataclass(frozen=True)
@@ -43,7 +39,7 @@ class GentSchultzParameters:
 
 
 def predict_pulloff(
-    model: Model,
+    model: str,
     params: GentSchultzParameters,
     frequency_hz: ArrayLike,
     h1_um: ArrayLike,
@@ -51,27 +47,25 @@ def predict_pulloff(
     radius: float,
     reduced_modulus: float,
 ) -> Pulloff:
-    """Pull-off of ``model`` at base amplitudes ``h1_um`` (um) and frequencies (Hz), broadcast (Eqs. 49, 71)."""
+    """Pull-off of ``model`` (a level of role ``fit``) at base amplitudes ``h1_um`` (um) and frequencies (Hz).
+
+    Broadcast over amplitudes and frequencies (Eqs. 49, 71); a frequency-independent level is solved
+    once per distinct amplitude and scattered back.
+    """
+    if model not in levels.names("fit"):
+        raise ValueError(f"unknown model {model!r}; expected one of {levels.names('fit')}")
+    entry = levels.level(model)
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = groups.eta1(np.asarray(h1_um, dtype=float) * 1e-6, radius)
-    if model == "refined":
-        return pulloff_refined(eta1, chi0, groups.omega_check(frequency_hz, params.v0, radius), law)
-    if model in MODELS:
-        eta1_each = np.broadcast_arrays(eta1, np.asarray(frequency_hz, dtype=float))[0]
-        return _frequency_independent(model, eta1_each, chi0, law)
-    raise ValueError(f"unknown model {model!r}; expected one of {MODELS}")
+    if entry.frequency_dependent:
+        return entry.pulloff_function()(eta1, chi0, groups.omega_check(frequency_hz, params.v0, radius), law)
+    eta1_each = np.broadcast_arrays(eta1, np.asarray(frequency_hz, dtype=float))[0]
+    distinct, back = np.unique(eta1_each, return_inverse=True)
+    pulloff: Pulloff = entry.pulloff_function()(distinct, chi0, law)
+    return pulloff.taken(np.reshape(back, eta1_each.shape))
 
 
 def pulloff_mN(pulloff: Pulloff, w0: float, radius: float) -> NDArray[np.float64]:
     """|P_cr| in mN: P_cr/P_cr^JKR times |P_cr^JKR| = (3 pi/2) R w0 (Eqs. 70–71)."""
     return -pulloff_force(w0, radius) * pulloff.pulloff_ratio * 1e3
-
-
-def _frequency_independent(model: Model, eta1: NDArray[np.float64], chi0: float, law: GentSchultz) -> Pulloff:
-    """The pull-off of a level without omega, solved once per distinct eta1 and scattered back."""
-    distinct, back = np.unique(eta1, return_inverse=True)
-    detachment = {"leading": pulloff_leading,
-                  "exact_averaging": exact_averaging.pulloff_at_critical_radius,
-                  "exact_averaging_force_minimum": exact_averaging.pulloff_at_force_minimum}[model]
-    return detachment(distinct, chi0, law).taken(np.reshape(back, eta1.shape))

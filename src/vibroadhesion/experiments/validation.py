@@ -1,7 +1,8 @@
 """Every model level against the direct simulation of the full model (rigid nominal point contact).
 
 For each base amplitude h1 and frequency omega_check the steady state of the rigidly fixed
-nominal point contact (h0 = hhat, Eq. 78) is computed five ways:
+nominal point contact (h0 = hhat, Eq. 78) is computed by every level of role ``validation_rigid``
+of :mod:`vibroadhesion.core.levels`, in its order:
 
 * ``simulation``: periodic orbit of Eqs. (4), (5) with w = w0 f(adot/v0), shooting on the
   one-period map (:mod:`vibroadhesion.simulation`), the ground truth;
@@ -23,21 +24,22 @@ Mean force of the J-integral levels: Eq. (52), P_m/|P_JKR| = (4/3) [(4/3) abar_m
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from vibroadhesion import simulation
+from vibroadhesion.core import levels
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState
-from vibroadhesion.models import exact_averaging, exact_harmonic_balance
 from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
-from vibroadhesion.models.refined import leading_nominal_point_contact, nominal_point_contact
 from vibroadhesion.numerics.progress import ProgressBar
 
-MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
+#: The registry's functions this module resolves (vibroadhesion.core.levels): the rigid steady states.
+LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
+
 QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")
 RIGID_GRID_COLUMNS = ["h1_um", "omega_check", "model", "status", *QUANTITIES]
 ERROR_COLUMNS = ["h1_um", "omega_check", "model", "quantity", "relative_error", "refined_A_over_am", "applicable"]
@@ -48,23 +50,9 @@ APPLICABILITY_LIMIT = 0.1
 TRUSTED_ERROR = 0.05
 
 
-#: One model level at one point: (eta1, omega_check, chi0, law) -> its steady-state record.
-Level = Callable[[float, float, float, GentSchultz], SteadyState]
-
-
 def simulated_nominal_point_contact(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> SteadyState:
     """The direct simulation's periodic steady state of the rigidly fixed nominal point contact (Eqs. 4-11, 78)."""
     return simulation.steady_state(simulation.BaseExcitation(law, chi0, eta1, omega_check))
-
-
-#: Each model level as a solver of one point, in the row order of rigid_grid.csv.
-LEVELS: dict[str, Level] = {
-    "simulation": simulated_nominal_point_contact,
-    "leading": leading_nominal_point_contact,
-    "refined": nominal_point_contact,
-    "exact_hb": exact_harmonic_balance.rigid_fixation,
-    "exact_averaging": exact_averaging.nominal_point_contact,
-}
 
 
 def _row_numbers(state: SteadyState) -> dict[str, float]:
@@ -76,11 +64,11 @@ def _row_numbers(state: SteadyState) -> dict[str, float]:
 
 
 def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict[str, Any]]:
-    """The five model levels at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
+    """Every level of role ``validation_rigid`` at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
     law = GentSchultz(n)
     rows = []
-    for model, level in LEVELS.items():
-        state = level(h1_um * 1e-6 / radius, omega_check, chi0, law)
+    for model in levels.names("validation_rigid"):
+        state = levels.level(model).steady_state_function()(h1_um * 1e-6 / radius, omega_check, chi0, law)
         rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": str(state.status),
                      **_row_numbers(state)})
     return rows
@@ -107,7 +95,9 @@ def relative_errors(grid: pd.DataFrame) -> pd.DataFrame:
     sim = grid[grid["model"] == "simulation"].set_index(["h1_um", "omega_check"])
     refined = grid[grid["model"] == "refined"].set_index(["h1_um", "omega_check"])["A_over_am"]
     frames = []
-    for model in MODELS[1:]:
+    for model in levels.names("validation_rigid"):
+        if model == "simulation":  # the reference
+            continue
         rows = grid[grid["model"] == model].set_index(["h1_um", "omega_check"])
         both = (rows["status"] == "ok") & (sim["status"] == "ok")
         for quantity in QUANTITIES:

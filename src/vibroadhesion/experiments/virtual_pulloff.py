@@ -67,13 +67,12 @@ import pandas as pd
 from scipy.optimize import minimize_scalar
 
 from vibroadhesion import simulation
-from vibroadhesion.core import groups
+from vibroadhesion.core import groups, levels
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
-from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
 from vibroadhesion.models.leading_order import Fixation
 from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_from_abar, pulloff_leading
@@ -317,21 +316,29 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
                     fixation: simulation.SpringFixation | None, *, radius: float,
                     reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
+    if fixation is None:
+        return [row for model in levels.names("virtual_pulloff_rigid") if model != "simulation"
+                for row in _record_rows(predict_pulloff(model, params, frequency_hz, h1_um, radius=radius,
+                                                        reduced_modulus=reduced_modulus), h1_um)]
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
-    if fixation is None:
-        rows: list[dict[str, Any]] = []
-        for model in ("leading", "refined"):
-            pred = predict_pulloff(model, params, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus)
-            rows += _record_rows(pred, h1_um)
-        rows += _record_rows(exact_averaging.pulloff_at_critical_radius(eta1, chi0, law), h1_um)
-        rows += _record_rows(exact_averaging.pulloff_at_force_minimum(eta1, chi0, law), h1_um)
-        return rows
     omega_bar = float(groups.omega_check(frequency_hz, params.v0, radius)) * fixation.nu0
     spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
     cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
-    leading = [pulloff_leading(case.eta1, chi0, law, spring) for case in cases]
-    refined = [_refined_compliant_pulloff(omega_bar, case, law) for case in cases]
-    return [row for pulloff, h in zip(leading + refined, [*h1_um, *h1_um], strict=True)
-            for row in _record_rows(pulloff, np.asarray([h]))]
+    return [row for model in levels.names("virtual_pulloff_compliant") if model != "simulation"
+            for h, case in zip(h1_um, cases, strict=True)
+            for row in _record_rows(_compliant_prediction(model, case, omega_bar, spring, law), np.asarray([h]))]
+
+
+def _compliant_prediction(model: str, case: CompliantFixation, omega_bar: float, spring: Fixation,
+                          law: GentSchultz) -> Pulloff:
+    """The pull-off ``model`` predicts for the spring fixation (module docstring): a scalar record.
+
+    ``leading``: Eqs. (67)–(69) with (71); ``refined``: Eq. (90) at a_m = a_cr with (71).
+    """
+    if model == "leading":
+        return pulloff_leading(case.eta1, case.chi0, law, spring)
+    if model == "refined":
+        return _refined_compliant_pulloff(omega_bar, case, law)
+    raise ValueError(f"no compliant pull-off prediction for model level {model!r}")
