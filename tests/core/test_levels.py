@@ -124,8 +124,11 @@ def test_identifiability_rules_name_no_level_literally() -> None:
 
 
 def test_every_source_that_resolves_level_functions_declares_them() -> None:
-    """A source that calls steady_state_function()/pulloff_function() declares LEVEL_FUNCTIONS, so its rules
-    rerun when a level's module changes (vibroadhesion.pipeline.imports); the registry itself excepted."""
+    """Whoever calls steady_state_function()/pulloff_function() declares LEVEL_FUNCTIONS.
+
+    So its rules rerun when a level's module changes (vibroadhesion.pipeline.imports); the registry itself
+    is excepted.
+    """
     sources = [*(ROOT / "src/vibroadhesion").rglob("*.py"), *(ROOT / "workflow/scripts").glob("*.py"),
                *(ROOT / "benchmarks").glob("*.py")]
     for path in sources:

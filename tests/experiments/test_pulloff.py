@@ -17,8 +17,9 @@ import pytest
 from conftest import CHI0, ETA1, N_PUBLISHED, NU0, RADIUS, REDUCED_MODULUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.core import groups, jkr
+from vibroadhesion.core import groups, jkr, levels
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.leading_pulloff import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
 from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
 from vibroadhesion.numerics.roots import NoRootError
@@ -275,3 +276,23 @@ def test_omega_check_equals_eq105_closed_form() -> None:
     """Eq. (105): omega_check = omega R / v0 with omega = 2 pi f; 200 Hz, R = 51.5 mm, v0 = 44.5 um/s; 1e-15."""
     got = float(groups.omega_check(200.0, V0, RADIUS))
     assert abs(got / (2 * math.pi * 200 * RADIUS / V0) - 1) < 1e-15
+
+
+@pytest.mark.parametrize("model", ["exact_averaging", "exact_averaging_force_minimum"])
+def test_predict_pulloff_solves_sorted_distinct_amplitudes_as_one_direct_call(model: str) -> None:
+    """predict_pulloff solves a frequency-independent level on np.unique(eta1) and scatters back; for sorted,
+    distinct amplitudes (the rig's, Fig. 4's grid) that is the same array, so the same operations give the
+    same bits as the level's own call on eta1 (the route Fig. 4 and the virtual pull-off took before the
+    registry); with repeated amplitudes each copy is the distinct value's result.
+    """
+    params = GentSchultzParameters(W0, N_PUBLISHED, V0)
+    h1_um = np.array([0.0, 20.0, 40.0, 60.0, 80.0, 100.0])
+    chi0 = groups.chi0(W0, REDUCED_MODULUS, RADIUS)
+    direct = levels.level(model).pulloff_function()(h1_um * 1e-6 / RADIUS, chi0, GentSchultz(N_PUBLISHED))
+    routed = predict_pulloff(model, params, 200.0, h1_um, radius=RADIUS, reduced_modulus=REDUCED_MODULUS)
+    for field in ("pulloff_ratio", "Abar_cr", "sqrt_w_eff_ratio", "abar_m"):
+        assert np.array_equal(getattr(routed, field), getattr(direct, field)), field
+    repeated = predict_pulloff(model, params, 200.0, [40.0, 20.0, 40.0], radius=RADIUS, reduced_modulus=REDUCED_MODULUS)
+    distinct = levels.level(model).pulloff_function()(np.array([20.0, 40.0]) * 1e-6 / RADIUS, chi0,
+                                                      GentSchultz(N_PUBLISHED))
+    assert np.array_equal(repeated.pulloff_ratio, distinct.pulloff_ratio[[1, 0, 1]])
