@@ -40,7 +40,7 @@ rule all:
     input:
         rules.fit_gent_schultz.output,
         expand("results/{fig}/{fig}.{ext}", fig=FIGURES, ext=["csv", "pdf", "png"]),
-        expand(rules.report_index.output, index="index"),
+        rules.report_index.output.index,
 
 
 rule validation:
@@ -54,4 +54,4 @@ rule validation:
         rules.identifiability.output.fits,
         rules.identifiability.output.information,
         rules.benchmark_speed_vs_error.output.csv,
-        expand(rules.report_index.output, index="validation_index"),
+        rules.report_validation_index.output.index,

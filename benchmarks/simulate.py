@@ -20,9 +20,11 @@ import time
 
 import numpy as np
 
+from vibroadhesion.core.fixation import Fixation
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.benchmarking import machine_description
-from vibroadhesion.simulation import BaseExcitation, SpringFixation, steady_state, transient
+from vibroadhesion.simulation import steady_state, transient
 
 CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5
 FIELDS = ("abar_m", "Abar", "w_eff_ratio", "pm_over_abs_pjkr")
@@ -30,22 +32,22 @@ TRANSIENT_PERIODS = 5
 
 
 def rigid(n, h1_um, omega_check):
-    return BaseExcitation(GentSchultz(n), CHI0, h1_um * 1e-6 / RADIUS, omega_check)
+    return Problem(GentSchultz(n), CHI0, h1_um * 1e-6 / RADIUS, omega_check)
 
 
 def cases():
     for n in (0.531,):
         for h1 in (20.0, 60.0, 100.0):
             for omega_check in (1e4, 1e5, 1e6, 1e7, 1e8, 1e9):
-                yield f"rigid n={n} h1={h1:g}um", rigid(n, h1, omega_check), None
+                yield f"rigid n={n} h1={h1:g}um", rigid(n, h1, omega_check)
     for n, h1 in ((0.05, 5.0), (4.0, 20.0)):
         for omega_check in (1e4, 1e6, 1e8):
-            yield f"rigid n={n} h1={h1:g}um", rigid(n, h1, omega_check), None
+            yield f"rigid n={n} h1={h1:g}um", rigid(n, h1, omega_check)
     for kappa, zeta in ((0.01, 0.05), (0.1, 0.2)):
         for omega_bar in (1.0, 2.0, 17.85):
             yield (f"spring k={kappa} z={zeta}",
-                   BaseExcitation(GentSchultz(0.531), CHI0, 20e-6 / RADIUS, omega_bar / NU0),
-                   SpringFixation(kappa, zeta, NU0))
+                   Problem(GentSchultz(0.531), CHI0, 20e-6 / RADIUS, omega_bar / NU0,
+                           Fixation.compliant(kappa, zeta, NU0)))
 
 
 def timed(function):
@@ -58,18 +60,18 @@ def timed(function):
     return result, statistics.median(cpu), statistics.median(wall)
 
 
-def row(label, excitation, fixation):
-    result, cpu, wall = timed(lambda: steady_state(excitation, fixation))
-    line = {"case": label, "omega_check": excitation.omega_check, "status": str(result.status),
+def row(label, problem):
+    result, cpu, wall = timed(lambda: steady_state(problem))
+    line = {"case": label, "omega_check": problem.omega_check, "status": str(result.status),
             "periods": result.orbit.iterations, "cpu_ms": 1e3 * cpu, "wall_ms": 1e3 * wall}
     if not result.ok:
         return line
-    tight = steady_state(excitation, fixation, rtol=1e-13)
+    tight = steady_state(problem, rtol=1e-13)
     line["self_consistency"] = max(abs(float(getattr(tight, f) / getattr(result, f)) - 1) for f in FIELDS)
     slowest = float(np.max(np.abs(result.orbit.floquet_multipliers)))
     needed = math.inf if slowest >= 1 else max(1.0, math.log(1e-10) / math.log(max(slowest, 1e-300)))
     start = time.process_time()
-    transient(excitation, fixation, periods=TRANSIENT_PERIODS, initial_state=result.orbit.start_state)
+    transient(problem, periods=TRANSIENT_PERIODS, initial_state=result.orbit.start_state)
     per_period = (time.process_time() - start) / TRANSIENT_PERIODS
     line.update(multiplier=slowest, transient_periods=needed, transient_s=needed * per_period,
                 speedup=needed * per_period / cpu)

@@ -24,7 +24,7 @@ from vibroadhesion.core.records import Pulloff, SteadyState
 #: Documented leading parameters of each kind of function (module docstring of core/levels.py).
 STEADY_STATE_PARAMETERS = ["eta1", "omega_check", "chi0", "law"]
 PULLOFF_PARAMETERS = {False: ["eta1", "chi0", "law"], True: ["eta1", "chi0", "omega_check", "law"]}
-SIMULATED_PULLOFF_PARAMETERS = ["eta1", "omega_check", "chi0", "law", "fixation"]
+SIMULATED_PULLOFF_PARAMETERS = ["problem"]
 
 
 def _leading_parameters(function, count: int) -> list[str]:

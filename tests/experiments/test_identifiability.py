@@ -139,11 +139,11 @@ def test_recommendation_picks_the_smallest_misfit_and_trusts_only_unbiased_param
     nan = math.nan
     fits = pd.DataFrame([
         {"model": "A", "status": "fitted", "rms_relative_residual": 0.20, "max_relative_residual": 0.3,
-         "w0_error": 0.5, "n_error": 0.1, "v0_error": nan},
+         "w0_relative_bias": 0.5, "n_relative_bias": 0.1, "v0_relative_bias": nan},
         {"model": "B", "status": "fitted", "rms_relative_residual": 0.05, "max_relative_residual": 0.13,
-         "w0_error": 0.01, "n_error": -0.8, "v0_error": nan},
+         "w0_relative_bias": 0.01, "n_relative_bias": -0.8, "v0_relative_bias": nan},
         {"model": "C", "status": "failed", "rms_relative_residual": nan, "max_relative_residual": nan,
-         "w0_error": nan, "n_error": nan, "v0_error": nan},
+         "w0_relative_bias": nan, "n_relative_bias": nan, "v0_relative_bias": nan},
     ])
     sensitivity = pd.DataFrame({"dlnP_dlnw0": [1.0, 0, 0], "dlnP_dlnn": [0, 25.0, 0], "dlnP_dlnv0": [0, 0, 0.05],
                                 "h1_um": [20.0, 100.0, 60.0]})

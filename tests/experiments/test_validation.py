@@ -32,8 +32,8 @@ def test_small_amplitude_every_level_agrees_with_the_simulation_and_the_static_c
     sim = rows["simulation"]
     for model, r in rows.items():
         assert abs(r["abar_m"] - 1) < 1e-3 and abs(r["w_eff_ratio"] - 1) < 1e-3, model
-        assert abs(r["Pm_over_PJKR"] + 8 / 9) < 1e-3, model
-        for q in ("abar_m", "w_eff_ratio", "Pm_over_PJKR"):
+        assert abs(r["pm_over_abs_pjkr"] + 8 / 9) < 1e-3, model
+        for q in ("abar_m", "w_eff_ratio", "pm_over_abs_pjkr"):
             assert abs(r[q] / sim[q] - 1) < 1e-3, (model, q)
 
 
@@ -44,7 +44,7 @@ def test_very_high_frequency_simulation_equals_exact_averaging() -> None:
     """
     rows = _by_model(validation.rigid_point(20.0, 1e8, chi0=CHI0, radius=RADIUS, n=N_PUBLISHED))
     sim, avg, refined = rows["simulation"], rows["exact_averaging"], rows["refined"]
-    for q in ("abar_m", "w_eff_ratio", "Pm_over_PJKR"):
+    for q in ("abar_m", "w_eff_ratio", "pm_over_abs_pjkr"):
         assert abs(avg[q] / sim[q] - 1) < 1e-6, q
     assert refined["w_eff_ratio"] / sim["w_eff_ratio"] - 1 < -0.1
 
@@ -74,10 +74,10 @@ def test_compliant_sweep_far_from_resonance_agrees_with_refined_and_orbits_are_s
     with A/a_m within 15 % of the refined model (the measured gap there is ~8 %, the same first-harmonic
     truncation as in the rigid case).
     """
-    from vibroadhesion.models.compliant import CompliantFixation
+    from vibroadhesion.core.fixation import Fixation
 
-    p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.01)
-    sweep = validation.compliant_sweep(p, N_PUBLISHED, [18.0, 20.0])
+    fixation = Fixation.compliant(kappa=1e-3, zeta=0.01, nu0=NU0, mu=0.0)
+    sweep = validation.compliant_sweep(fixation, CHI0, ETA1, N_PUBLISHED, [18.0, 20.0])
     sim, refined = sweep[sweep["model"] == "simulation"], sweep[sweep["model"] == "refined"]
     assert len(refined) == 2 and (sim["status"].str.startswith("ok")).all() and sim["stable"].astype(bool).all()
     for _, row in sim.iterrows():

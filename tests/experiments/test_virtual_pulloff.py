@@ -14,12 +14,12 @@ import math
 import pytest
 from conftest import CHI0, N_PUBLISHED, OMEGA_BAR_200HZ, RADIUS
 
+from vibroadhesion.core.fixation import Fixation
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 from vibroadhesion.models import exact_averaging
-from vibroadhesion.models.leading_order import Fixation
 from vibroadhesion.models.leading_pulloff import pulloff_leading
-from vibroadhesion.simulation import SpringFixation
 
 LAW = GentSchultz(N_PUBLISHED)
 OMEGA_CHECK_200HZ = 1.4543e6
@@ -31,7 +31,7 @@ def test_high_frequency_simulated_pulloff_equals_exact_averaging_force_minimum()
     to the simulation's O((omega_check c_o)^-2) and the minimiser's tolerances: 1e-4.
     """
     eta1 = 20e-6 / RADIUS
-    simulated = simulated_pulloff(eta1, 1e8, CHI0, LAW)
+    simulated = simulated_pulloff(Problem(LAW, CHI0, eta1, 1e8))
     reference = exact_averaging.pulloff_at_force_minimum(eta1, CHI0, LAW)
     assert simulated.status == "pulloff"
     assert abs(simulated.pulloff_ratio / float(reference.pulloff_ratio) - 1) < 1e-4
@@ -42,7 +42,7 @@ def test_family_that_loses_contact_before_a_force_extremum_reports_it() -> None:
     """h1 = 100 um at omega_check = 1e4: the steady state is lost (a -> 0 within a cycle) already at the
     nominal point contact, so the family never reaches a force extremum: a status, no number.
     """
-    result = simulated_pulloff(100e-6 / RADIUS, 1e4, CHI0, LAW)
+    result = simulated_pulloff(Problem(LAW, CHI0, 100e-6 / RADIUS, 1e4))
     assert result.status == "contact_loss_before_extremum"
     assert math.isnan(result.pulloff_ratio) and math.isnan(result.abar_m)
 
@@ -52,7 +52,7 @@ def test_paper_criterion_a_m_equals_a_cr_is_not_where_the_simulated_force_peaks(
     well below the JKR critical radius of Eq. (61) evaluated with the simulated w_eff (measured 1.01 a_o
     against 1.22 a_o): the paper's detachment criterion a_m = a_cr is not met at the force extremum.
     """
-    result = simulated_pulloff(20e-6 / RADIUS, OMEGA_CHECK_200HZ, CHI0, LAW)
+    result = simulated_pulloff(Problem(LAW, CHI0, 20e-6 / RADIUS, OMEGA_CHECK_200HZ))
     assert result.status == "pulloff"
     assert result.abar_m < 0.9 * result.abar_cr
 
@@ -67,13 +67,13 @@ def test_very_stiff_spring_gives_the_rigid_simulated_pulloff(omega_bar: float) -
     it: the simulated amplification grows faster with the amplitude than the leading order's).
     """
     eta1 = 20e-6 / RADIUS
-    rigid = simulated_pulloff(eta1, OMEGA_CHECK_200HZ, CHI0, LAW)
-    spring = simulated_pulloff(eta1, OMEGA_CHECK_200HZ, CHI0, LAW,
-                               SpringFixation(kappa=1e3, zeta=0.01, nu0=omega_bar / OMEGA_CHECK_200HZ))
+    fixation = Fixation.compliant(kappa=1e3, zeta=0.01, nu0=omega_bar / OMEGA_CHECK_200HZ)
+    rigid = simulated_pulloff(Problem(LAW, CHI0, eta1, OMEGA_CHECK_200HZ))
+    spring = simulated_pulloff(Problem(LAW, CHI0, eta1, OMEGA_CHECK_200HZ, fixation))
     assert rigid.status == spring.status == "pulloff"
     simulated_effect = spring.pulloff_ratio / rigid.pulloff_ratio - 1
     assert abs(simulated_effect) < 1e-4
-    leading_effect = float(pulloff_leading(eta1, CHI0, LAW, Fixation.spring_mass_dashpot(1e3, omega_bar, 0.01)).pulloff_ratio
+    leading_effect = float(pulloff_leading(eta1, CHI0, LAW, fixation, OMEGA_CHECK_200HZ).pulloff_ratio
                            / pulloff_leading(eta1, CHI0, LAW).pulloff_ratio) - 1
     assert 0.7 < simulated_effect / leading_effect < 1.3
 
@@ -84,7 +84,8 @@ def test_compliant_family_that_loses_contact_before_a_force_extremum_reports_it(
     contact to deltabar0 = -26.15 with the mean force still growing more tensile (measured -2.185 |P_JKR|),
     and the transient just beyond its last orbit loses contact (after 60 periods): a status, no number.
     """
-    result = simulated_pulloff(20e-6 / RADIUS, 1e4, CHI0, LAW, SpringFixation(kappa=1e-3, zeta=0.01, nu0=OMEGA_BAR_200HZ / 1e4))
+    fixation = Fixation.compliant(kappa=1e-3, zeta=0.01, nu0=OMEGA_BAR_200HZ / 1e4)
+    result = simulated_pulloff(Problem(LAW, CHI0, 20e-6 / RADIUS, 1e4, fixation))
     assert result.status == "contact_loss_before_extremum"
     assert result.steady_states > 10  # a family, not a loss at the start
     assert math.isnan(result.pulloff_ratio) and math.isnan(result.abar_m)

@@ -19,12 +19,12 @@ from mpmath_reference import j_integrals_mp
 from scipy.optimize import root
 from test_leading_order_steady_state import printed_eq_67_log_excess, printed_eq_87_terms
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import (
     NOTCH_FLOOR,
-    CompliantFixation,
     amplitude_residual_on_closure,
     mean_balance_excess,
     newton_at_frequency,
@@ -47,7 +47,7 @@ from vibroadhesion.numerics.continuation import (
 
 LAW = GentSchultz(N_PUBLISHED)
 SCAN = np.linspace(-40.0, 40.0, 4001)  # ln Abar grid of the independent root scan
-FOLDING = CompliantFixation(CHI0, ETA1, NU0, kappa=1e-3, mu=0.0, zeta=0.0)  # the folded curve of Fig. 5
+FOLDING = Fixation.compliant(kappa=1e-3, zeta=0.0, nu0=NU0, mu=0.0)  # the folded curve of Fig. 5
 
 
 # ----------------------------------------------------------------- continuation on a known curve
@@ -79,7 +79,7 @@ def test_continuation_follows_the_unit_circle_through_both_folds_of_x() -> None:
 
 @pytest.fixture(scope="module")
 def folded() -> tuple:
-    return trace_response_curve(FOLDING, LAW)
+    return trace_response_curve(FOLDING, CHI0, ETA1, LAW)
 
 
 def test_corrected_point_lies_on_the_circle_in_the_arclength_hyperplane() -> None:
@@ -107,7 +107,7 @@ def test_continuation_passes_both_folds_and_reaches_the_end_of_the_range(folded)
     for fold in folded.folds:
         from vibroadhesion.numerics.continuation import jacobian
 
-        jac = jacobian(lambda x: residual(x, FOLDING, LAW), fold, 1e-7)[:, 1:]
+        jac = jacobian(lambda x: residual(x, FOLDING, CHI0, ETA1, LAW), fold, 1e-7)[:, 1:]
         sv = np.linalg.svd(jac, compute_uv=False)
         assert sv[-1] / sv[0] < 1e-6, sv
 
@@ -122,13 +122,13 @@ def test_three_solutions_between_the_folds_each_satisfying_eqs_87_and_90_to_1e10
         on_curve = sorted(folded.solutions_at(omega_bar, LAW), key=lambda s: s[1])
         assert len(on_curve) == 3
         for abar_m, abar in on_curve:
-            r87, r90 = residual_linear(omega_bar, abar_m, abar, FOLDING, LAW)
+            r87, r90 = residual_linear(omega_bar, abar_m, abar, FOLDING, CHI0, ETA1, LAW)
             assert abs(r87) < 1e-10 and abs(r90) < 1e-10, (omega_bar, abar_m, abar, r87, r90)
-        scanned = sorted(solutions_by_scan(omega_bar, FOLDING, LAW, SCAN), key=lambda s: s[1])
+        scanned = sorted(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN), key=lambda s: s[1])
         assert len(scanned) == 3
         assert np.allclose(np.array(on_curve), np.array(scanned), rtol=1e-9, atol=0)
     for omega_bar in (0.5 * lo, 2.0 * hi):  # outside the fold interval: one solution, both ways
-        assert len(folded.solutions_at(omega_bar, LAW)) == 1 == len(solutions_by_scan(omega_bar, FOLDING, LAW, SCAN))
+        assert len(folded.solutions_at(omega_bar, LAW)) == 1 == len(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN))
 
 
 # ----------------------------------------------------------------- zeta = 0, omega_bar = 1
@@ -144,18 +144,18 @@ def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the
         end = piece.points[-1]
         assert folded.a_over_am(end[None, :])[0] < NOTCH_FLOOR
         assert side * end[0] > 0 and abs(end[0]) < 1e-2
-        assert abs(math.exp(end[1]) / static_abar_m(FOLDING) - 1) < 1e-6
+        assert abs(math.exp(end[1]) / static_abar_m(FOLDING, CHI0) - 1) < 1e-6
 
 
 def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -> None:
     """Just off omega_bar = 1 (1 +- 1e-9) Newton from the static state converges to Abar < 1e-12 and
     abar_m within 1e-9 of the static root of Eq. (82); the Fig. 5 table carries the exact point.
     """
-    static = static_abar_m(FOLDING)
+    static = static_abar_m(FOLDING, CHI0)
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
-        abar_m, abar = newton_at_frequency(omega_bar, FOLDING, LAW, (static, 1e-14))
+        abar_m, abar = newton_at_frequency(omega_bar, FOLDING, CHI0, ETA1, LAW, (static, 1e-14))
         assert abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
-    curves, _, _ = fig5_tables(FOLDING, [1e-3], [0.0], N_PUBLISHED, {}, (0.1, 50.0), 20)
+    curves, _, _ = fig5_tables([FOLDING], CHI0, ETA1, N_PUBLISHED, {}, (0.1, 50.0), 20)
     exact = curves[curves["branch"] == "anti-resonance"]
     assert len(exact) == 1 and exact["omega_bar"].iloc[0] == 1.0 and exact["Abar"].iloc[0] == 0.0
     assert exact["abar_m"].iloc[0] == static
@@ -170,7 +170,7 @@ def test_mean_balance_excess_is_printed_eq_87_over_its_j0_part(abar_m: float, j0
     with mp.workdps(30):
         terms = printed_eq_87_terms(abar_m, mp.mpf(j0), kappa, mu)
         j0_part = -(terms[2] + terms[3])
-        ours = mean_balance_excess(math.log(abar_m), j0, CompliantFixation(CHI0, ETA1, NU0, kappa, mu, 0.0))
+        ours = mean_balance_excess(math.log(abar_m), j0, Fixation.compliant(kappa, 0.0, NU0, mu), CHI0)
         assert abs(float(ours - sum(terms) / j0_part)) < 1e-13 * float(max(abs(t) for t in terms) / j0_part)
 
 
@@ -181,9 +181,9 @@ def test_amplitude_residual_at_a_cr_tends_to_half_the_log_of_printed_eq_67(kappa
     of Eqs. (94), (96), O(Abar nu0/omega_bar); tolerance 1e-12 + 10 Abar nu0/omega_bar.
     """
     nu0 = 1e-15
-    p = CompliantFixation(CHI0, ETA1, nu0, kappa, 0.0, zeta)
+    p = Fixation.compliant(kappa, zeta, nu0, 0.0)
     for abar in (0.01, 3.0, 1e4):
-        ours = amplitude_residual_on_closure(np.log([abar]), math.log(omega_bar), p, LAW, pulloff_closure)[0]
+        ours = amplitude_residual_on_closure(np.log([abar]), math.log(omega_bar), p, CHI0, ETA1, LAW, pulloff_closure)[0]
         with mp.workdps(30):
             printed = printed_eq_67_log_excess(abar, kappa, omega_bar, zeta, ETA1, j_integrals_mp(abar, LAW.n)[:2])
         assert abs(ours - 0.5 * printed) < 1e-12 + 10 * abar * nu0 / omega_bar
@@ -191,8 +191,8 @@ def test_amplitude_residual_at_a_cr_tends_to_half_the_log_of_printed_eq_67(kappa
 
 def test_static_contact_radius_solves_eq_82() -> None:
     """Eq. (82) in a_0/R (not the a_o-scaled Eq. 87 the code uses), mu = 1e-4, kappa = 0.01, in mpmath: 1e-12."""
-    p = CompliantFixation(CHI0, ETA1, NU0, kappa=0.01, mu=1e-4, zeta=0.0)
-    r = mp.mpf(static_abar_m(p)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
+    p = Fixation.compliant(kappa=0.01, zeta=0.0, nu0=NU0, mu=1e-4)
+    r = mp.mpf(static_abar_m(p, CHI0)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
     lhs = r**2 * (mp.mpf(4) / 3 * r + mp.mpf(p.kappa)) - mp.sqrt(2) * mp.mpf(CHI0) ** 1.5 / 3 * mp.sqrt(r) * (2 * r + mp.mpf(p.kappa))
     assert abs(float(lhs / mp.mpf(p.mu) - 1)) < 1e-12
 
@@ -207,11 +207,11 @@ def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, z
     Fig. 6's nominal point contact at omega_check = omega_bar/nu0; with a_m = a_cr it is Fig. 7's Eq. (106).
     The differences are O(1/kappa): tolerance 1e-6.
     """
-    p = CompliantFixation(CHI0, ETA1, NU0, kappa=1e12, mu=0.0, zeta=zeta)
-    (abar_m, abar), = solutions_by_scan(omega_bar, p, LAW, SCAN)
+    p = Fixation.compliant(kappa=1e12, zeta=zeta, nu0=NU0, mu=0.0)
+    (abar_m, abar), = solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
     rigid = nominal_point_contact(ETA1, omega_bar / NU0, CHI0, LAW)
     assert abs(abar / float(rigid.Abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
-    (_, abar_cr), = pulloff_by_scan(omega_bar, p, LAW, SCAN)
+    (_, abar_cr), = pulloff_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
     assert abs(abar_cr / float(pulloff_refined(ETA1, CHI0, omega_bar / NU0, LAW).Abar_cr) - 1) < 1e-6
 
 
@@ -246,9 +246,9 @@ def test_soft_fixation_reproduces_the_free_indenter_eqs_57_to_59(beta: float) ->
     k, O(1/omega_check) from the refined terms (omega_check ~ 1e9 here): tolerance 1e-6.
     """
     kappa, mu = 1e-10, 1e-5
-    p = CompliantFixation(CHI0, ETA1, NU0, kappa=kappa, mu=mu, zeta=0.0)
+    p = Fixation.compliant(kappa=kappa, zeta=0.0, nu0=NU0, mu=mu)
     omega_bar = math.sqrt(beta / kappa)
-    found = solutions_by_scan(omega_bar, p, LAW, SCAN)
+    found = solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
     assert len(found) == 1
     abar_m, abar = found[0]
     reference_am, reference_abar = free_indenter(beta, mu, N_PUBLISHED, (1.1 * abar_m, 0.9 * abar))

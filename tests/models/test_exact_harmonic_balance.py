@@ -27,9 +27,10 @@ from mpmath_reference import j_integrals_mp
 from scipy.integrate import quad
 from scipy.optimize import fsolve
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import folded_rule
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models.compliant import CompliantFixation, residual
+from vibroadhesion.models.compliant import residual
 from vibroadhesion.models.exact_harmonic_balance import (
     _k_integrals,
     compliant_residual,
@@ -189,9 +190,9 @@ def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() 
     x = np.log(np.array([[3.0, 1.2, 20.0], [0.5, 1.0, 2.0]]))
     scaled = []
     for nu0 in (1e-5, 1e-6):
-        p = CompliantFixation(CHI0, ETA1, nu0, kappa=1e-3, mu=1e-7, zeta=0.05)
+        p = Fixation.compliant(kappa=1e-3, zeta=0.05, nu0=nu0, mu=1e-7)
         epsilon = nu0 * np.exp(x[:, 2]) / (np.exp(x[:, 0]) * C_O)
-        difference = compliant_residual(x, p, law) - residual(x, p, law)
+        difference = compliant_residual(x, p, CHI0, ETA1, law) - residual(x, p, CHI0, ETA1, law)
         scaled.append(difference / epsilon[:, None] ** 2)
     assert np.max(np.abs(scaled[1] / scaled[0] - 1)) < 1e-3
     assert np.max(np.abs(difference)) < 1e-6
@@ -202,13 +203,13 @@ def test_compliant_mean_balance_reduces_to_the_rigid_and_static_cases() -> None:
     (Eq. 56 generalised), up to O(c_o/kappa); checked with kappa = 1e12 against exact_harmonics, to 1e-10.
     """
     law = GentSchultz(N_PUBLISHED)
-    p = CompliantFixation(CHI0, ETA1, 1e-5, kappa=1e12, mu=0.0, zeta=0.0)
+    p = Fixation.compliant(kappa=1e12, zeta=0.0, nu0=1e-5, mu=0.0)
     x = np.log(np.array([[3.0, 1.2, 20.0]]))
     epsilon = 1e-5 * 20.0 / (3.0 * C_O)
     h = exact_harmonics(1.2, 20.0, epsilon, law)
     k0_sqrt = 1.2**2 + 0.5 * epsilon**2 - float(h.mean_indentation)
     for deltabar0 in (0.0, 0.3):
-        col = float(compliant_residual(x, p, law, deltabar0)[0, 0])
+        col = float(compliant_residual(x, p, CHI0, ETA1, law, deltabar0)[0, 0])
         assert abs(col - (float(h.mean_indentation) - deltabar0) / k0_sqrt) < 1e-10
 
 

@@ -167,13 +167,13 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
     params = GentSchultzParameters(w0=w0, n=n, v0=V0)
     fig4 = fig4_table(dict.fromkeys(levels.fig4_names(), params), [200.0], np.array(AMPLITUDES_UM),
                               radius=RADIUS, reduced_modulus=9 * math.pi * w0 / (RADIUS * CHI0**3))
-    leading = fig4[fig4["model"] == "leading"].set_index("h1_um")["ratio"]
+    leading = fig4[fig4["model"] == "leading"].set_index("h1_um")["pulloff_ratio"]
     for omega_check, rows in fig7.groupby("omega_check"):
-        got = rows.set_index("h1_um")["ratio"]
+        got = rows.set_index("h1_um")["pulloff_ratio"]
         assert np.allclose(got.to_numpy(), leading.loc[got.index].to_numpy(), rtol=1e-9, atol=0), omega_check
     # and the refined ratio approaches it from below at finite frequency (delta_s only adds, Eq. 106)
     finite = fig7_table(AMPLITUDES_UM, np.array([1e3]), chi0=CHI0, radius=RADIUS, n=n)
-    assert np.all(finite["ratio"].to_numpy() < leading.loc[finite["h1_um"]].to_numpy())
+    assert np.all(finite["pulloff_ratio"].to_numpy() < leading.loc[finite["h1_um"]].to_numpy())
 
 
 # ----------------------------------------------------------------- Fig. 8: the two limits of Eq. (118)

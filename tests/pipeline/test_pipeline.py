@@ -33,21 +33,21 @@ from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.figures import plot_fig4, save_figure
 from vibroadhesion.pipeline.imports import import_closure
-from vibroadhesion.pipeline.pages import PAGES
+from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES
 
 ROOT = Path(__file__).resolve().parents[2]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
-DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig3_plot", "fig4_data", "fig4_plot", "fig5_data", "fig5_plot",
-              "fig6_data", "fig6_plot", "fig7_data", "fig7_plot", "fig8_data", "fig8_plot",
+DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data",
+              "plot_figures",
               "simulation_rigid", "simulation_rigid_grid", "virtual_pulloff", "virtual_pulloff_fixation",
-              "report_page", "report_index", "all"}
+              "report_index", "all"}
 # What `snakemake -c2 validation` adds to a finished default run: the checks against the simulation
 # (including the compliant virtual pull-off; the default run made the rigid one for Figs. 4 and 7).
 VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_compliant", "validation_compliant_plot",
                     "pulloff_sensitivity", "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
                     "identifiability_fit", "identifiability", "benchmark_j_integrals", "benchmark_simulate",
-                    "benchmark_speed_vs_error", "report_page", "report_index", "validation"}
+                    "benchmark_speed_vs_error", "report_validation_index", "validation"}
 
 
 def _copy_repo(dest: Path) -> Path:
@@ -105,7 +105,8 @@ def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: 
             assert (results / fig / f"{fig}.{ext}").stat().st_size > 0
     assert list(pd.read_csv(results / "fig3/fig3.csv").columns) == ["n", "Abar", "J0", "Jc1", "J1"]
     fig4 = pd.read_csv(results / "fig4/fig4.csv")
-    assert list(fig4.columns) == ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
+    assert list(fig4.columns) == ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio",
+                                  "pulloff_mN"]
     for model, n_freq in (("leading", 1), ("refined", 3)):
         rows = fig4[fig4["model"] == model]
         assert set(AMPLITUDES_UM) <= set(rows["h1_um"])
@@ -141,7 +142,7 @@ def test_data_edit_reruns_fit_figures_and_report_only(pipeline_run: Path) -> Non
 @pytest.mark.pipeline
 def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
     planned = _planned_after_edit(pipeline_run, "src/vibroadhesion/models/stiffness.py")
-    assert planned == {"fig8_data", "fig8_plot", "report_page", "report_index", "all"}
+    assert planned == {"fig8_data", "plot_figures", "report_index", "all"}
 
 
 @pytest.mark.pipeline
@@ -276,9 +277,12 @@ def test_import_closure_equals_the_modules_python_loads(source: Path) -> None:
 
 
 def _adapter_closures() -> dict[str, set[str]]:
-    """rule -> package files its adapter loads (reference), and report_page -> those of the default pages."""
+    """rule -> package files its adapter loads (reference); a report rule's include those of its pages' notebooks."""
     closures = {p.stem: set(_reference_closure(p)) for p in (ROOT / "workflow/scripts").glob("*.py")}
-    closures["report_page"] |= set().union(*(_reference_closure(ROOT / f"notebooks/{page}.ipynb") for page, _ in PAGES))
+    report = closures.pop("report")
+    for rule, pages in (("report_index", PAGES), ("report_validation_index", VALIDATION_PAGES)):
+        notebooks = (_reference_closure(ROOT / f"notebooks/{page}.ipynb") for page, _ in pages)
+        closures[rule] = report.union(*notebooks)
     return closures
 
 

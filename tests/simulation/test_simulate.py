@@ -20,6 +20,7 @@ Parameters: chi0 = 2.589e-2, n = 0.531 (published), R = 51.5 mm, h1 in um, nu0 =
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import mpmath as mp
 import numpy as np
@@ -27,20 +28,22 @@ import pytest
 from conftest import C_O, CHI0, N_PUBLISHED, NU0, RADIUS
 
 from vibroadhesion import simulation as sim
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_scale
 from vibroadhesion.core.jkr import contact_force, indentation
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.simulation.model import contact_kernel
 from vibroadhesion.simulation.shooting import _Bracket
 
 
-def excitation(h1_um: float, omega_check: float, n: float = N_PUBLISHED, **kw) -> sim.BaseExcitation:
-    return sim.BaseExcitation(GentSchultz(n), CHI0, h1_um * 1e-6 / RADIUS, omega_check, **kw)
+def excitation(h1_um: float, omega_check: float, n: float = N_PUBLISHED, **kw) -> Problem:
+    return Problem(GentSchultz(n), CHI0, h1_um * 1e-6 / RADIUS, omega_check, **kw)
 
 
-def excitation_eps(eps: float, omega_check: float, n: float) -> sim.BaseExcitation:
+def excitation_eps(eps: float, omega_check: float, n: float) -> Problem:
     """Excitation with the displacement amplitude eps = eta1/c_o^2 given directly."""
-    return sim.BaseExcitation(GentSchultz(n), CHI0, eps * C_O**2, omega_check)
+    return Problem(GentSchultz(n), CHI0, eps * C_O**2, omega_check)
 
 
 # --------------------------------------------------------------------------- the frozen-contact limit
@@ -178,7 +181,7 @@ def test_static_state_solves_eq_82(kappa: float, mu: float) -> None:
     """Reference: Eq. (82) for a_0/R solved by mpmath.findroot (30 digits) from a_0/R = c_o;
     a_0/a_o agrees to 1e-12, and xbar_0 = mu/(kappa c_o^2) - (c_o/kappa) Phat_0 (Eq. A.6).
     """
-    st = sim.static_state(excitation(20, 1e5), sim.SpringFixation(kappa, 0.05, NU0, mu))
+    st = sim.static_state(excitation(20, 1e5, fixation=Fixation.compliant(kappa, 0.05, NU0, mu)))
     with mp.workdps(30):
         c, k, m = mp.mpf(CHI0), mp.mpf(kappa), mp.mpf(mu)
 
@@ -196,10 +199,10 @@ def test_static_state_rigid_and_no_contact() -> None:
     for a preset; no static contact below the JKR fixed-grip pull-off s(4^(-2/3)) = -0.4725.
     """
     assert sim.static_state(excitation(20, 1e5)).abar == pytest.approx(1.0, abs=1e-15)
-    st = sim.static_state(excitation(20, 1e5, deltabar0=0.3))
+    st = sim.static_state(excitation(20, 1e5, base_offset=0.3))
     assert st.abar**2 - math.sqrt(st.abar) == pytest.approx(0.3, rel=1e-13)
     with pytest.raises(sim.NoStaticContactError):
-        sim.static_state(excitation(20, 1e5, deltabar0=-0.48))
+        sim.static_state(excitation(20, 1e5, base_offset=-0.48))
 
 
 # --------------------------------------------------------------------------- rigid fixation
@@ -229,9 +232,9 @@ def test_high_frequency_limit_matches_frozen_contact_reference(omega_check: floa
     assert r.orbit.abar_c * rate == pytest.approx(ref["a_c_rate"], rel=tol_b)
     assert abs(r.orbit.abar_s * rate - ref["a_s_rate"]) < 10 * r.A_over_am * abs(ref["a_c_rate"])  # lag O(A/a_m)
     assert r.orbit.peak_speed == pytest.approx(ref["peak"], rel=tol_b)
-    assert r.orbit.phat_s == pytest.approx(-2 * a_m * ex.displacement_amplitude, rel=10 * r.A_over_am)
+    assert r.orbit.phat_s == pytest.approx(-2 * a_m * ex.etahat, rel=10 * r.A_over_am)
     assert abs(r.orbit.phat_c) < 10 * r.A_over_am
-    assert r.orbit.deltabar_c == 0.0 and r.orbit.deltabar_s == -ex.displacement_amplitude and r.deltabar_m == 0.0
+    assert r.orbit.deltabar_c == 0.0 and r.orbit.deltabar_s == -ex.etahat and r.deltabar_m == 0.0
     assert 0 < 1 - r.orbit.floquet_multipliers[0].real < 1e-2 and r.orbit.periodicity_residual < 1e-10
 
 
@@ -244,7 +247,7 @@ def test_high_frequency_limit_for_extreme_exponents(n: float, h1_um: float, omeg
     """
     ex = excitation(h1_um, omega_check, n)
     r = sim.steady_state(ex)
-    ref = frozen_limit_mp(ex.displacement_amplitude, n)
+    ref = frozen_limit_mp(ex.etahat, n)
     assert r.status == "ok"
     assert r.abar_m == pytest.approx(ref["abar_m"], rel=1e-7)
     assert r.Abar == pytest.approx(ref["abar"], rel=1e-5)
@@ -397,8 +400,8 @@ def test_rigid_bracket_keeps_the_fixed_point_and_bisects_steps_that_leave_it() -
 # --------------------------------------------------------------------------- compliant fixation
 
 
-def spring(kappa: float, zeta: float, mu: float = 0.0) -> sim.SpringFixation:
-    return sim.SpringFixation(kappa, zeta, NU0, mu)
+def spring(kappa: float, zeta: float, mu: float = 0.0) -> Fixation:
+    return Fixation.compliant(kappa, zeta, NU0, mu)
 
 
 @pytest.mark.parametrize("kappa, zeta, omega_bar", [(0.01, 0.2, 2.0), (0.1, 0.05, 1.5), (0.1, 0.2, 17.85)])
@@ -408,7 +411,7 @@ def test_compliant_mean_force_balance_eq15(kappa: float, zeta: float, omega_bar:
     from different quadratures of the orbit and agree to 1e-9 relative.
     """
     for mu in (0.0, 1e-6):
-        r = sim.steady_state(excitation(20, omega_bar / NU0), spring(kappa, zeta, mu))
+        r = sim.steady_state(excitation(20, omega_bar / NU0, fixation=spring(kappa, zeta, mu)))
         assert r.status == "ok"
         mean_xbar = r.deltabar_m  # deltabar0 = 0
         assert mean_xbar == pytest.approx(mu / (kappa * C_O**2) - C_O / kappa * r.orbit.phat_m, rel=1e-9)
@@ -418,8 +421,8 @@ def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attract
     """Reference: central differences of the 3-D one-period map (transient() from the orbit +-
     steps of 1e-5 of each scale); eigenvalues agree to 1e-4. The orbit is stable (all |m| < 1).
     """
-    ex, fx = excitation(20, 1.0 / NU0), spring(0.1, 0.2)
-    r = sim.steady_state(ex, fx)
+    ex = excitation(20, 1.0 / NU0, fixation=spring(0.1, 0.2))
+    r = sim.steady_state(ex)
     assert r.status == "ok" and r.stable and np.all(np.abs(r.orbit.floquet_multipliers) < 1)
     z0 = r.orbit.start_state
     steps = np.array([1e-5 * max(abs(z0[0]), 1.0), 1e-5 * max(abs(z0[1]), 1.0), 1e-5 * r.A_over_am * r.abar_m])
@@ -429,7 +432,7 @@ def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attract
         for s in (1.0, -1.0):
             z = z0.copy()
             z[j] += s * steps[j]
-            ends.append(sim.transient(ex, fx, periods=1, initial_state=z).states[-1])
+            ends.append(sim.transient(ex, periods=1, initial_state=z).states[-1])
         monodromy[:, j] = (ends[0] - ends[1]) / (2 * steps[j])
     reference = np.sort_complex(np.linalg.eigvals(monodromy))
     assert np.allclose(np.sort_complex(r.orbit.floquet_multipliers), reference, rtol=0, atol=1e-4)
@@ -440,9 +443,9 @@ def test_compliant_shooting_equals_brute_force_transient() -> None:
     (multipliers 0.56, 0.29): after 60 periods the state equals the shooting start to 1e-9 of
     its scale.
     """
-    ex, fx = excitation(20, 1.0 / NU0), spring(0.1, 0.2)
-    r = sim.steady_state(ex, fx)
-    t = sim.transient(ex, fx, periods=60)
+    ex = excitation(20, 1.0 / NU0, fixation=spring(0.1, 0.2))
+    r = sim.steady_state(ex)
+    t = sim.transient(ex, periods=60)
     scale = np.array([abs(r.orbit.start_state[0]), abs(r.orbit.start_state[1]), r.orbit.start_state[2]])
     assert np.all(np.abs(t.states[-1] - r.orbit.start_state) <= 1e-9 * np.maximum(scale, 1.0))
 
@@ -455,7 +458,7 @@ def test_undamped_spring_near_resonance_converges_or_reports(kappa: float, omega
     orbit periodic to 1e-9 whose `stable` flag agrees with its multipliers, or an explicit
     non-convergence status, never an exception or a silent number.
     """
-    r = sim.steady_state(excitation(20, omega_bar / NU0), spring(kappa, 0.0))
+    r = sim.steady_state(excitation(20, omega_bar / NU0, fixation=spring(kappa, 0.0)))
     assert r.status in ("ok", "not_converged", "contact_loss")
     if r.status == "ok":
         assert r.orbit.periodicity_residual < 1e-9
@@ -470,7 +473,7 @@ def test_very_stiff_spring_reproduces_rigid_fixation() -> None:
     """
     ex = excitation(20, 1e6)
     rigid = sim.steady_state(ex)
-    stiff = sim.steady_state(ex, spring(1e6, 0.05))
+    stiff = sim.steady_state(replace(ex, fixation=spring(1e6, 0.05)))
     assert stiff.status == "ok"
     for field in ("abar_m", "Abar", "w_eff_ratio", "pm_over_abs_pjkr"):
         assert getattr(stiff, field) == pytest.approx(getattr(rigid, field), rel=1e-6), field
@@ -483,7 +486,9 @@ def test_invalid_inputs_raise() -> None:
     with pytest.raises(ValueError):
         excitation(20, -1.0)
     with pytest.raises(ValueError):
-        sim.SpringFixation(0.0, 0.1, NU0)
+        Fixation.compliant(0.0, 0.1, NU0)
+    with pytest.raises(ValueError, match="fixation"):
+        sim.steady_state(excitation(20, 1e5, fixation=Fixation.free(1.0)))
     with pytest.raises(ValueError):
         sim.steady_state(excitation(20, 1e5), integrator="Euler")  # type: ignore[arg-type]
     with pytest.raises(ValueError):

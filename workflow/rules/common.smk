@@ -31,26 +31,6 @@ def code(*sources):
     return import_closure(paths) + ["environment.lock"]
 
 
-# The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
-TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
-
-
-def page_inputs(wildcards):
-    """The artefacts a page reads (its papermill parameters), and the rule timings for the benchmarks page."""
-    inputs = dict(PAGE_INPUTS[wildcards.page])
-    if wildcards.page == "benchmarks":
-        inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
-    return inputs
-
-
-def page_parameters(wildcards):
-    """papermill parameters: the path of every artefact the page reads (strings)."""
-    parameters = {name: str(path) for name, path in PAGE_INPUTS[wildcards.page].items()}
-    if wildcards.page == "benchmarks":
-        parameters["rule_tsv_glob"] = "results/benchmarks/rules/*.tsv"
-    return parameters
-
-
 # Snakemake 9 runs a Python `script:` as `{py_exec} {fname:q}` with the interpreter unquoted, so every such
 # rule fails when the .venv lies under a path with spaces (snakemake/snakemake#2645, open). There, and only
 # there, run it quoted; this project uses no conda environment or container, the cases the original handles.

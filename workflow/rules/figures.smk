@@ -1,4 +1,5 @@
-# One compute rule (CSV) and one plot rule (PDF, PNG) per figure: restyling never reruns a solve.
+# One compute rule (CSV) per figure, and one rule that draws them all (PDF, PNG): restyling never reruns a
+# solve, and matplotlib is imported once, not once per figure.
 
 
 rule fig3_data:
@@ -21,22 +22,6 @@ rule fig3_data:
         "../scripts/fig3_data.py"
 
 
-rule fig3_plot:
-    input:
-        csv=rules.fig3_data.output[0],
-        fit=RIG["fit"],
-        code=code("fig3_plot"),
-    output:
-        pdf="results/fig3/fig3.pdf",
-        png=report("results/fig3/fig3.png", caption="../report/fig3.rst", category="Figures"),
-    log:
-        "results/logs/fig3_plot.log",
-    params:
-        panel_n=config["fig3"]["panel_n"],
-    script:
-        "../scripts/fig3_plot.py"
-
-
 rule fig4_data:
     """Pull-off amplification: leading order (Eqs. 71-72) and refined (Eq. 106) at the test frequencies."""
     input:
@@ -53,22 +38,6 @@ rule fig4_data:
         points=config["fig4"]["points"],
     script:
         "../scripts/fig4_data.py"
-
-
-rule fig4_plot:
-    input:
-        **RIG,
-        csv=rules.fig4_data.output[0],
-        pulloff=rules.ingest.output.pulloff,
-        virtual=VIRTUAL_RIGID,
-        code=code("fig4_plot"),
-    output:
-        pdf="results/fig4/fig4.pdf",
-        png=report("results/fig4/fig4.png", caption="../report/fig4.rst", category="Figures"),
-    log:
-        "results/logs/fig4_plot.log",
-    script:
-        "../scripts/fig4_plot.py"
 
 
 # Fig. 5: compliantly fixed indenter, refined model of Sec. 3.5.3, traced by continuation.
@@ -93,21 +62,6 @@ rule fig5_data:
         points=config["fig5"]["count_points"],
     script:
         "../scripts/fig5_data.py"
-
-
-rule fig5_plot:
-    input:
-        setup=RIG["setup"],
-        csv=rules.fig5_data.output.csv,
-        markers=rules.fig5_data.output.markers,
-        code=code("fig5_plot"),
-    output:
-        pdf="results/fig5/fig5.pdf",
-        png=report("results/fig5/fig5.png", caption="../report/fig5.rst", category="Figures"),
-    log:
-        "results/logs/fig5_plot.log",
-    script:
-        "../scripts/fig5_plot.py"
 
 
 # Figs. 6-8: rigidly fixed indenter, refined model (Secs. 3.5.4, 3.6, 3.7). Fig. 8 reuses the
@@ -168,46 +122,25 @@ rule fig8_data:
         "../scripts/fig8_data.py"
 
 
-rule fig6_plot:
+rule plot_figures:
+    """Figs. 3-8 from their tables, with the measured rows and the simulated overlays (no solve)."""
     input:
         **RIG,
-        csv=rules.fig6_data.output[0],
-        grid=rules.simulation_rigid_grid.output[0],
-        code=code("fig6_plot"),
-    output:
-        pdf="results/fig6/fig6.pdf",
-        png=report("results/fig6/fig6.png", caption="../report/fig6.rst", category="Figures"),
-    log:
-        "results/logs/fig6_plot.log",
-    script:
-        "../scripts/fig6_plot.py"
-
-
-rule fig7_plot:
-    input:
-        **RIG,
-        csv=rules.fig7_data.output[0],
-        fig4=rules.fig4_data.output[0],
+        **{fig: getattr(rules, f"{fig}_data").output[0] for fig in FIGURES},
+        fig5_markers=rules.fig5_data.output.markers,
+        pulloff=rules.ingest.output.pulloff,
         virtual=VIRTUAL_RIGID,
-        code=code("fig7_plot"),
+        grid=rules.simulation_rigid_grid.output[0],
+        code=code("plot_figures"),
     output:
-        pdf="results/fig7/fig7.pdf",
-        png=report("results/fig7/fig7.png", caption="../report/fig7.rst", category="Figures"),
+        **{f"{fig}_pdf": f"results/{fig}/{fig}.pdf" for fig in FIGURES},
+        **{
+            f"{fig}_png": report(f"results/{fig}/{fig}.png", caption=f"../report/{fig}.rst", category="Figures")
+            for fig in FIGURES
+        },
     log:
-        "results/logs/fig7_plot.log",
+        "results/logs/plot_figures.log",
+    params:
+        panel_n=config["fig3"]["panel_n"],
     script:
-        "../scripts/fig7_plot.py"
-
-
-rule fig8_plot:
-    input:
-        **RIG,
-        csv=rules.fig8_data.output[0],
-        code=code("fig8_plot"),
-    output:
-        pdf="results/fig8/fig8.pdf",
-        png=report("results/fig8/fig8.png", caption="../report/fig8.rst", category="Figures"),
-    log:
-        "results/logs/fig8_plot.log",
-    script:
-        "../scripts/fig8_plot.py"
+        "../scripts/plot_figures.py"

@@ -1,12 +1,19 @@
-# Report: each page is a notebook executed by papermill and exported to HTML by nbconvert, in one job.
-from vibroadhesion.pipeline.pages import PAGES as REPORT_PAGES, VALIDATION_PAGES as VALIDATION_REPORT_PAGES
+# Report: each page is a notebook executed by papermill and exported to HTML by nbconvert.
+from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES
+
+# The two indexes of the report and their pages: the default target builds the first, `validation` the second.
+REPORT_INDEXES = {"index": PAGES, "validation_index": VALIDATION_PAGES}
+
+# The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
+TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
+
 
 FIT_JSON, SETUP_JSON = RIG["fit"], RIG["setup"]
 PAGE_INPUTS = {
-    "fig3": {"fig_csv": rules.fig3_data.output[0], "fig_png": rules.fig3_plot.output.png, "fit_json": FIT_JSON},
+    "fig3": {"fig_csv": rules.fig3_data.output[0], "fig_png": rules.plot_figures.output.fig3_png, "fit_json": FIT_JSON},
     "fig4": {
         "fig_csv": rules.fig4_data.output[0],
-        "fig_png": rules.fig4_plot.output.png,
+        "fig_png": rules.plot_figures.output.fig4_png,
         "fit_json": FIT_JSON,
         "setup_json": SETUP_JSON,
         "pulloff_csv": rules.ingest.output.pulloff,
@@ -14,7 +21,7 @@ PAGE_INPUTS = {
     },
     "fig5": {
         "fig_csv": rules.fig5_data.output.csv,
-        "fig_png": rules.fig5_plot.output.png,
+        "fig_png": rules.plot_figures.output.fig5_png,
         "markers_csv": rules.fig5_data.output.markers,
         "counts_csv": rules.fig5_data.output.counts,
         "setup_json": SETUP_JSON,
@@ -23,7 +30,7 @@ PAGE_INPUTS = {
     **{
         fig: {
             "fig_csv": getattr(rules, f"{fig}_data").output[0],
-            "fig_png": getattr(rules, f"{fig}_plot").output.png,
+            "fig_png": getattr(rules.plot_figures.output, f"{fig}_png"),
             "fit_json": FIT_JSON,
             "setup_json": SETUP_JSON,
         }
@@ -58,40 +65,46 @@ PAGE_INPUTS = {
 }
 
 
-rule report_page:
-    """Execute one report notebook on the pipeline's artefacts and export it to a self-contained HTML page."""
-    input:
-        unpack(page_inputs),
-        notebook="notebooks/{page}.ipynb",
-        code=lambda wildcards: code("report_page", f"notebooks/{wildcards.page}.ipynb"),
-    output:
-        notebook="results/report/notebooks/{page}.ipynb",
-        html="results/report/{page}.html",
-    log:
-        "results/logs/report_page_{page}.log",
-    wildcard_constraints:
-        page="|".join(PAGE_INPUTS),
-    localrule: True
-    params:
-        parameters=page_parameters,
-    script:
-        "../scripts/report_page.py"
+def page_parameters(page):
+    """papermill parameters of ``page``: the path of every artefact it reads (strings)."""
+    parameters = {name: str(path) for name, path in PAGE_INPUTS[page].items()}
+    if page == "benchmarks":
+        parameters["rule_tsv_glob"] = "results/benchmarks/rules/*.tsv"
+    return parameters
 
 
-rule report_index:
-    """Index of the figure pages (default target) or of the validation pages (``validation`` target)."""
-    input:
-        pages=lambda wc: expand(
-            rules.report_page.output.html,
-            page=[stem for stem, _ in (REPORT_PAGES if wc.index == "index" else VALIDATION_REPORT_PAGES)],
-        ),
-        code=code("report_index"),
-    output:
-        "results/report/{index}.html",
-    log:
-        "results/logs/report_{index}.log",
-    wildcard_constraints:
-        index="index|validation_index",
-    localrule: True
-    script:
-        "../scripts/report_index.py"
+def report_inputs(index):
+    """Every artefact the pages of ``index`` read, named <page>_<parameter>, their notebooks and their code."""
+    pages = [stem for stem, _ in REPORT_INDEXES[index]]
+    inputs = {f"{page}_{name}": path for page in pages for name, path in PAGE_INPUTS[page].items()}
+    if "benchmarks" in pages:
+        inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
+    notebooks = [f"notebooks/{page}.ipynb" for page in pages]
+    return {**inputs, "notebooks": notebooks, "code": code("report", *notebooks)}
+
+
+def report_pages(index):
+    """page -> papermill parameters (artefact paths) of the pages of ``index``, in the index's order."""
+    return {stem: page_parameters(stem) for stem, _ in REPORT_INDEXES[index]}
+
+
+# One job per index renders its pages in one kernel (pipeline.steps.report): starting a kernel per page
+# cost as much as executing it. A page's output is its executed notebook and its HTML page.
+for index in REPORT_INDEXES:
+
+    rule:
+        name:
+            f"report_{index}"
+        input:
+            **report_inputs(index),
+        output:
+            notebooks=[f"results/report/notebooks/{stem}.ipynb" for stem, _ in REPORT_INDEXES[index]],
+            pages=[f"results/report/{stem}.html" for stem, _ in REPORT_INDEXES[index]],
+            index=f"results/report/{index}.html",
+        log:
+            f"results/logs/report_{index}.log",
+        localrule: True
+        params:
+            pages=report_pages(index),
+        script:
+            "../scripts/report.py"

@@ -15,7 +15,7 @@ fixed nominal point contact (Eqs. 4-11, 78) and its pull-off:
 * ``steady_state(eta1, omega_check, chi0, law) -> SteadyState``;
 * ``pulloff(eta1, chi0, law) -> Pulloff``, or ``pulloff(eta1, chi0, omega_check, law)`` for a
   frequency-dependent level; the simulation's pull-off is the virtual experiment,
-  ``simulated_pulloff(eta1, omega_check, chi0, law, fixation)``.
+  ``simulated_pulloff(problem)`` (:class:`vibroadhesion.core.problem.Problem`).
 
 A module that resolves the functions of a role declares it in ``LEVEL_FUNCTIONS`` (pairs of role
 and ``"steady_state"``/``"pulloff"``): the modules :func:`modules` names are then part of its code

@@ -43,8 +43,8 @@ IDENTIFIABLE_RELATIVE_SE = 0.5
 #: Step h in ln theta of the central differences (truncation error O(h^2), about 1e-3 relative here).
 LOG_STEP = 0.05
 
-FIT_COLUMNS = ["model", "status", "w0", "w0_se", "w0_error", "n", "n_se", "n_error", "v0", "v0_se", "v0_error",
-               "v0_identifiable", "rms_relative_residual", "max_relative_residual", "note"]
+FIT_COLUMNS = ["model", "status", "w0", "w0_se", "w0_relative_bias", "n", "n_se", "n_relative_bias", "v0", "v0_se",
+               "v0_relative_bias", "v0_identifiable", "rms_relative_residual", "max_relative_residual", "note"]
 
 
 def perturbed(
@@ -62,7 +62,7 @@ def fit_level(rows: pd.DataFrame, model: str, truth: GentSchultzParameters, *, r
               reduced_modulus: float) -> dict[str, Any]:
     """One row of the fits table: the pipeline's fit of ``model`` started from the true parameters.
 
-    ``*_error`` is estimate/true - 1; a fit that fails (:class:`FitError`) is a row with status
+    ``*_relative_bias`` is estimate/true - 1; a fit that fails (:class:`FitError`) is a row with status
     ``failed`` and the reason, never numbers.
     """
     try:
@@ -74,7 +74,7 @@ def fit_level(rows: pd.DataFrame, model: str, truth: GentSchultzParameters, *, r
         entry = summary["parameters"][name]
         row[name], row[f"{name}_se"] = entry["estimate"], entry["std_error"]
         free = name in summary["free_parameters"]
-        row[f"{name}_error"] = entry["estimate"] / getattr(truth, name) - 1.0 if free else math.nan
+        row[f"{name}_relative_bias"] = entry["estimate"] / getattr(truth, name) - 1.0 if free else math.nan
     relative = np.array([r["residual"] for r in summary["residuals_mN"]]) / rows["pulloff_mN"].to_numpy(float)
     row.update(v0_identifiable=summary["v0_identifiable"], rms_relative_residual=summary["rms_relative_residual"],
                max_relative_residual=float(np.max(np.abs(relative))),
@@ -174,19 +174,19 @@ def recommendation(fits: pd.DataFrame, information: pd.DataFrame, sensitivity: p
             f"which is pure model error, is {100 * best.rms_relative_residual:.1f} % rms "
             f"({100 * best.max_relative_residual:.1f} % at worst), "
             f"against {others}."]
-    fitted = [name for name in PARAMETERS if np.isfinite(best[f"{name}_error"])]
-    trusted = [name for name in fitted if abs(best[f"{name}_error"]) <= bound[f"{name}_relative_se"]]
+    fitted = [name for name in PARAMETERS if np.isfinite(best[f"{name}_relative_bias"])]
+    trusted = [name for name in fitted if abs(best[f"{name}_relative_bias"]) <= bound[f"{name}_relative_se"]]
     biased = [name for name in fitted if name not in trusted]
     if trusted:
-        text.append("Trust its " + ", ".join(f"**{name}** (bias {100 * best[f'{name}_error']:+.1f} %, within the "
-                                            f"{100 * bound[f'{name}_relative_se']:.2g} % that {100 * noise:g} % "
-                                            "scatter allows)" for name in trusted) + ".")
+        text.append("Trust its " + ", ".join(f"**{name}** (bias {100 * best[f'{name}_relative_bias']:+.1f} %, "
+                                            f"within the {100 * bound[f'{name}_relative_se']:.2g} % that "
+                                            f"{100 * noise:g} % scatter allows)" for name in trusted) + ".")
     for name in biased:
         column = f"dlnP_dln{name}"
         strongest = sensitivity.loc[sensitivity[column].abs().idxmax()]
-        text.append(f"Do not trust its {name}: bias {100 * best[f'{name}_error']:+.0f} % where the scatter alone "
-                    f"would allow {100 * bound[f'{name}_relative_se']:.2g} %. The rows that carry the information on "
-                    f"{name} (|d ln P/d ln {name}| up to {abs(strongest[column]):.2g}, "
+        text.append(f"Do not trust its {name}: bias {100 * best[f'{name}_relative_bias']:+.0f} % where the scatter "
+                    f"alone would allow {100 * bound[f'{name}_relative_se']:.2g} %. The rows that carry the "
+                    f"information on {name} (|d ln P/d ln {name}| up to {abs(strongest[column]):.2g}, "
                     f"at h1 = {strongest['h1_um']:g} um) are those where the asymptotic levels are wrong by up to "
                     f"{100 * best.max_relative_residual:.0f} %; "
                     f"only a fit with the full model (the simulation) could recover it.")

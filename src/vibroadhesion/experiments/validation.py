@@ -32,15 +32,17 @@ import pandas as pd
 
 from vibroadhesion import simulation
 from vibroadhesion.core import levels
+from vibroadhesion.core.fixation import Fixation
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState
-from vibroadhesion.models.compliant import CompliantFixation, trace_response_curve
+from vibroadhesion.models.compliant import trace_response_curve
 from vibroadhesion.numerics.progress import ProgressBar
 
 #: The registry's functions this module resolves (vibroadhesion.core.levels): the rigid steady states.
 LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
 
-QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "Pm_over_PJKR")
+QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "pm_over_abs_pjkr")
 RIGID_GRID_COLUMNS = ["h1_um", "omega_check", "model", "status", *QUANTITIES]
 ERROR_COLUMNS = ["h1_um", "omega_check", "model", "quantity", "relative_error", "refined_A_over_am", "applicable"]
 
@@ -52,11 +54,11 @@ TRUSTED_ERROR = 0.05
 
 def simulated_nominal_point_contact(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> SteadyState:
     """The direct simulation's periodic steady state of the rigidly fixed nominal point contact (Eqs. 4-11, 78)."""
-    return simulation.steady_state(simulation.BaseExcitation(law, chi0, eta1, omega_check))
+    return simulation.steady_state(Problem(law, chi0, eta1, omega_check))
 
 
 def _row_numbers(state: SteadyState) -> dict[str, float]:
-    """QUANTITIES of a record (P_m/|P_JKR| as ``Pm_over_PJKR``); NaN unless its status is ``ok``."""
+    """QUANTITIES of a record; NaN unless its status is ``ok``."""
     values = (state.Abar, state.abar_m, state.w_eff_ratio, state.A_over_am, state.pm_over_abs_pjkr)
     if not state.ok:
         return dict.fromkeys(QUANTITIES, math.nan)
@@ -134,13 +136,15 @@ def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float])
 
 # --- Compliant fixation: the Fig. 5 sweep, up and down in frequency ----------------------------
 
-SWEEP_COLUMNS = ["direction", "omega_bar", "model", "branch", "status", "Abar", "abar_m", "A_over_am", "stable",
+SWEEP_COLUMNS = ["direction", "omega_bar", "model", "solution_index", "status", "Abar", "abar_m", "A_over_am", "stable",
                  "max_floquet_multiplier"]
 
 
-def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
+def compliant_sweep(fixation: Fixation, chi0: float, eta1: float, n: float, omega_bar: Sequence[float],
                     progress: ProgressBar | None = None) -> pd.DataFrame:
     """Simulated steady states along ``omega_bar`` swept up, then down, next to the refined model.
+
+    The compliant ``fixation`` at chi0 (Eq. 64) and eta1 = h1/R (Eq. 65), omega_check = omega_bar/nu0 (Eq. 105).
 
     Each orbit is started from the previous one (a slow sweep, so a fold of the response shows as
     a jump and a hysteresis loop), next to every solution of the refined model (Eqs. 87, 90) on its
@@ -149,39 +153,38 @@ def compliant_sweep(p: CompliantFixation, n: float, omega_bar: Sequence[float],
     A start from the previous orbit that does not converge is retried from the static state
     (Eq. 82); the row says which (``status``). ``stable`` and the largest |Floquet multiplier| come
     from the monodromy matrix of the simulated orbit; the refined rows carry the index of their
-    solution in order of increasing Abar as ``branch`` and no stability (the averaged model does
+    solution in order of increasing Abar as ``solution_index`` and no stability (the averaged model does
     not provide one). ``progress`` advances once per simulated frequency.
     """
     law = GentSchultz(n)
-    fixation = simulation.SpringFixation(p.kappa, p.zeta, p.nu0, p.mu)
-    curve = trace_response_curve(p, law, (min(omega_bar), max(omega_bar)))
+    curve = trace_response_curve(fixation, chi0, eta1, law, (min(omega_bar), max(omega_bar)))
     rows = []
     for direction, grid in (("up", list(omega_bar)), ("down", list(omega_bar)[::-1])):
         state = None
         for w in grid:
-            excitation = simulation.BaseExcitation(law, p.chi0, p.eta1, w / p.nu0)
-            sim = simulation.steady_state(excitation, fixation, initial_state=state)
+            problem = Problem(law, chi0, eta1, w / fixation.nu0, fixation)
+            sim = simulation.steady_state(problem, initial_state=state)
             status, solved = "ok", 1
             if not sim.ok and state is not None:
-                sim = simulation.steady_state(excitation, fixation)
+                sim = simulation.steady_state(problem)
                 status, solved = "ok, restarted from the static state", 2
             if progress is not None:
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
             if sim.ok and sim.orbit is not None:
                 state = sim.orbit.start_state
-                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "solution_index": 0,
                              "status": status, "Abar": float(sim.Abar), "abar_m": float(sim.abar_m),
                              "A_over_am": float(sim.A_over_am), "stable": bool(sim.stable),
                              "max_floquet_multiplier": float(np.max(np.abs(sim.orbit.floquet_multipliers)))})
             else:
-                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "branch": 0,
+                rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "solution_index": 0,
                              "status": str(sim.status), "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
                              "stable": False, "max_floquet_multiplier": math.nan})
             if direction == "up":
                 refined = curve.steady_states_at(w, law)
-                rows += [{"direction": "-", "omega_bar": w, "model": refined.level, "branch": k, "status": str(status),
-                          "Abar": float(abar), "abar_m": float(abar_m), "A_over_am": float(a_over_am),
-                          "stable": math.nan, "max_floquet_multiplier": math.nan}
+                rows += [{"direction": "-", "omega_bar": w, "model": refined.level, "solution_index": k,
+                          "status": str(status), "Abar": float(abar), "abar_m": float(abar_m),
+                          "A_over_am": float(a_over_am), "stable": math.nan, "max_floquet_multiplier": math.nan}
                          for k, (status, abar, abar_m, a_over_am) in enumerate(
                              zip(refined.status, refined.Abar, refined.abar_m, refined.A_over_am, strict=True))]
     return pd.DataFrame(rows)[SWEEP_COLUMNS]

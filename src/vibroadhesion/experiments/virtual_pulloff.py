@@ -60,6 +60,7 @@ Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -68,13 +69,14 @@ from scipy.optimize import minimize_scalar
 
 from vibroadhesion import simulation
 from vibroadhesion.core import groups, levels
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
 from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
-from vibroadhesion.models.compliant import CompliantFixation, pulloff_by_scan
-from vibroadhesion.models.leading_order import Fixation
+from vibroadhesion.models.compliant import pulloff_by_scan
 from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_from_abar, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
 
@@ -97,8 +99,7 @@ def _orbit(state: SteadyState) -> OrbitDiagnostics:
     return state.orbit
 
 
-def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.SpringFixation | None,
-                   last: SteadyState, failure: str) -> str:
+def _end_of_family(problem: Problem, last: SteadyState, failure: str) -> str:
     """Why the family ends: the shooting's own ``contact_loss``, or else what the transient says.
 
     The transient runs from the last orbit at the nearest failed deltabar0 over
@@ -107,17 +108,15 @@ def _end_of_family(excitation: simulation.BaseExcitation, fixation: simulation.S
     if failure == "contact_loss":
         return failure
     try:
-        run = simulation.transient(excitation, fixation, periods=END_TRANSIENT_PERIODS,
-                                   initial_state=_orbit(last).start_state)
+        run = simulation.transient(problem, periods=END_TRANSIENT_PERIODS, initial_state=_orbit(last).start_state)
     except RuntimeError:
         return failure
     return "contact_loss" if run.status == "contact_loss" else failure
 
 
-def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSchultz,
-                      fixation: simulation.SpringFixation | None = None, *, step: float = 0.2, max_steps: int = 400,
-                      halvings: int = 6, iterations: int = 15) -> Pulloff:
-    """Pull-off from the family of steady states in deltabar0 (module docstring); ``fixation=None`` is rigid.
+def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 400, halvings: int = 6,
+                      iterations: int = 15) -> Pulloff:
+    """Pull-off from the family of steady states in deltabar0 (module docstring), from ``problem``'s base offset.
 
     The record of level ``simulation`` (scalar): status ``pulloff`` with P_cr/P_cr^JKR = -min P_m/|P_JKR|,
     the base offset, mean radius, w_eff/w0 and A/a_m of the most tensile orbit and the paper's
@@ -133,11 +132,12 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
     attempts cheap); the first, from the static state, the default of :func:`simulation.steady_state`.
     The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
     """
-    sigma = 0.0 if fixation is None else contact_radius_ratio(chi0) / fixation.kappa
-    run = _Withdrawal(law, chi0, eta1, omega_check, fixation, iterations)
+    fixation = problem.fixation
+    sigma = 0.0 if fixation.is_rigid else contact_radius_ratio(problem.chi0) / fixation.kappa
+    run = _Withdrawal(problem, iterations)
     family: list[tuple[float, SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
-    d0, state = 0.0, None
+    d0, state = problem.base_offset, None
     for _ in range(max_steps):
         orbit_k = run.orbit(d0, state)
         if not orbit_k.ok:
@@ -145,7 +145,7 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
             if not family:
                 return _ended(status, run.solved)
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(run.excitation(d0), fixation, family[-1][1], status), run.solved)
+                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], status), run.solved)
             failure = (d0, status)
         else:
             family.append((d0, orbit_k))
@@ -175,25 +175,22 @@ def simulated_pulloff(eta1: float, omega_check: float, chi0: float, law: GentSch
 class _Withdrawal:
     """One quasi-static withdrawal: the orbits solved at base offsets deltabar0, counted and cached."""
 
-    def __init__(self, law: GentSchultz, chi0: float, eta1: float, omega_check: float,
-                 fixation: simulation.SpringFixation | None, iterations: int) -> None:
-        """Excitation of Eq. (11) at (chi0, eta1, omega_check); ``iterations`` caps predicted shootings."""
-        self.law, self.chi0, self.eta1, self.omega_check = law, chi0, eta1, omega_check
-        self.fixation, self.iterations = fixation, iterations
+    def __init__(self, problem: Problem, iterations: int) -> None:
+        """The withdrawal of ``problem``'s base (Eq. 11); ``iterations`` caps predicted shootings."""
+        self.problem, self.iterations = problem, iterations
         self.solved = 0
         self.cache: dict[float, SteadyState] = {}
 
-    def excitation(self, d0: float) -> simulation.BaseExcitation:
-        """The base excitation at offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
-        return simulation.BaseExcitation(self.law, self.chi0, self.eta1, self.omega_check, deltabar0=d0)
+    def problem_at(self, d0: float) -> Problem:
+        """The problem at base offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
+        return replace(self.problem, base_offset=d0)
 
     def orbit(self, d0: float, state: np.ndarray | None) -> SteadyState:
         """The periodic steady state at ``d0``: from the static state (``state`` None) or a predicted one."""
         self.solved += 1
         if state is None:
-            return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=None)
-        return simulation.steady_state(self.excitation(d0), self.fixation, initial_state=state,
-                                       max_iterations=self.iterations)
+            return simulation.steady_state(self.problem_at(d0), initial_state=None)
+        return simulation.steady_state(self.problem_at(d0), initial_state=state, max_iterations=self.iterations)
 
     def mean_force(self, d: float, bracket: list[tuple[float, SteadyState]]) -> float:
         """Phat_m of the orbit at ``d`` (solved once, from the bracket's interpolation); inf where none converges."""
@@ -253,12 +250,13 @@ def _interpolated_state(bracket: list[tuple[float, SteadyState]], d0: float) -> 
     return np.array([np.interp(d0, ds, states[:, i]) for i in range(states.shape[1])])
 
 
-def _refined_compliant_pulloff(omega_bar: float, case: CompliantFixation, law: GentSchultz) -> Pulloff:
+def _refined_compliant_pulloff(omega_bar: float, fixation: Fixation, chi0: float, eta1: float,
+                               law: GentSchultz) -> Pulloff:
     """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn).
 
     The record of level ``refined`` (scalar); no root on the scan gives ``no_solution``.
     """
-    roots = pulloff_by_scan(omega_bar, case, law, PULLOFF_SCAN)
+    roots = pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN)
     return pulloff_from_abar("refined", np.asarray(roots[0][1] if roots else math.nan), law)
 
 
@@ -282,12 +280,12 @@ COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "statu
 
 
 def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray, *, radius: float,
-                  reduced_modulus: float, fixation: simulation.SpringFixation | None = None,
+                  reduced_modulus: float, fixation: Fixation = Fixation.rigid(),
                   progress: ProgressBar | None = None, predictions: bool = True) -> pd.DataFrame:
     """Rows of results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv.
 
     The simulated (virtual) experiment and, unless ``predictions`` is false, the predictions of the
-    module docstring, for the rigid (``fixation=None``) or the spring fixation. ``progress`` advances
+    module docstring, for the rigid (the default) or the compliant fixation. ``progress`` advances
     once per amplitude with the steady states solved for it.
     """
     law = GentSchultz(params.n)
@@ -298,47 +296,44 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     eta1 = h1_um * 1e-6 / radius
     rows = []
     for h1, e in zip(h1_um, eta1, strict=True):
-        result = simulated_pulloff(float(e), omega_check, chi0, law, fixation)
+        result = simulated_pulloff(Problem(law, chi0, float(e), omega_check, fixation))
         rows += _record_rows(result, np.asarray([h1]))
         if progress is not None:
             progress.advance(result.steady_states or 0, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
                                                         f"P/P_JKR = {float(result.pulloff_ratio):.6g}")
     if predictions:
         rows += _predicted_rows(params, frequency_hz, h1_um, fixation, radius=radius, reduced_modulus=reduced_modulus)
-    constants = ({"fixation": "rigid", "kappa": math.nan, "zeta": math.nan} if fixation is None
-                 else {"fixation": "compliant", "kappa": fixation.kappa, "zeta": fixation.zeta})
-    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **constants)
+    table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **fixation.csv_constants)
     table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN
     return table.reindex(columns=COLUMNS)
 
 
 def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: np.ndarray,
-                    fixation: simulation.SpringFixation | None, *, radius: float,
+                    fixation: Fixation, *, radius: float,
                     reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
-    if fixation is None:
+    if fixation.is_rigid:
         return [row for model in levels.names("virtual_pulloff_rigid") if model != "simulation"
                 for row in _record_rows(predict_pulloff(model, params, frequency_hz, h1_um, radius=radius,
                                                         reduced_modulus=reduced_modulus), h1_um)]
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
-    omega_bar = float(groups.omega_check(frequency_hz, params.v0, radius)) * fixation.nu0
-    spring = Fixation.spring_mass_dashpot(fixation.kappa, omega_bar, fixation.zeta)
-    cases = [CompliantFixation(chi0, float(e), fixation.nu0, fixation.kappa, fixation.mu, fixation.zeta) for e in eta1]
+    omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
     return [row for model in levels.names("virtual_pulloff_compliant") if model != "simulation"
-            for h, case in zip(h1_um, cases, strict=True)
-            for row in _record_rows(_compliant_prediction(model, case, omega_bar, spring, law), np.asarray([h]))]
+            for h, e in zip(h1_um, eta1, strict=True)
+            for row in _record_rows(_compliant_prediction(model, fixation, chi0, float(e), omega_check, law),
+                                    np.asarray([h]))]
 
 
-def _compliant_prediction(model: str, case: CompliantFixation, omega_bar: float, spring: Fixation,
+def _compliant_prediction(model: str, fixation: Fixation, chi0: float, eta1: float, omega_check: float,
                           law: GentSchultz) -> Pulloff:
     """The pull-off ``model`` predicts for the spring fixation (module docstring): a scalar record.
 
     ``leading``: Eqs. (67)–(69) with (71); ``refined``: Eq. (90) at a_m = a_cr with (71).
     """
     if model == "leading":
-        return pulloff_leading(case.eta1, case.chi0, law, spring)
+        return pulloff_leading(eta1, chi0, law, fixation, omega_check)
     if model == "refined":
-        return _refined_compliant_pulloff(omega_bar, case, law)
+        return _refined_compliant_pulloff(fixation.omega_bar(omega_check), fixation, chi0, eta1, law)
     raise ValueError(f"no compliant pull-off prediction for model level {model!r}")

@@ -50,6 +50,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
@@ -66,52 +67,28 @@ Array = NDArray[np.float64]
 NOTCH_FLOOR = 1e-12
 
 
-@dataclass(frozen=True)
-class CompliantFixation:
-    """Dimensionless parameters of Sec. 3.5.3 (Eqs. 64–66, 81, 97)."""
-
-    chi0: float  # (9 pi w0 / (E* R))^(1/3), Eq. (64)
-    eta1: float  # h1 / R, Eq. (65)
-    nu0: float  # v0 / (omega0 R), Eq. (97)
-    kappa: float  # k / (E* R), Eq. (66)
-    mu: float  # m g / (E* R^2), Eq. (81)
-    zeta: float  # c / (2 sqrt(k m)), Eq. (65)
-
-    def __post_init__(self) -> None:
-        """Reject parameters outside their ranges (Eqs. 64–66, 81, 97): chi0, eta1, nu0, kappa > 0; mu, zeta >= 0."""
-        for name in ("chi0", "eta1", "nu0", "kappa"):
-            if not (math.isfinite(getattr(self, name)) and getattr(self, name) > 0):
-                raise ValueError(f"{name} must be a positive number, got {getattr(self, name)!r}")
-        for name in ("mu", "zeta"):
-            if not (math.isfinite(getattr(self, name)) and getattr(self, name) >= 0):
-                raise ValueError(f"{name} must be a non-negative number, got {getattr(self, name)!r}")
-
-    @property
-    def anti_resonance_is_exact(self) -> bool:
-        """zeta = 0: Eq. (90) has the exact solution Abar = 0 at omega_bar = 1 (Appendix B)."""
-        return self.zeta == 0.0
-
-
-def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -> tuple[Array, Array]:
+def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float) -> tuple[Array, Array]:
     """Eq. (87) as (positive part, J0 part): the equation is ``positive == negative``."""
     abar_m = np.asarray(abar_m, dtype=float)
-    positive = (2.0 ** (7 / 3) * p.chi0 / 3.0 ** (5 / 3)) * abar_m**3 + p.kappa * abar_m**2 - (
-        3.0 ** (4 / 3) * p.mu / (2.0 ** (2 / 3) * p.chi0**2)
+    positive = (2.0 ** (7 / 3) * chi0 / 3.0 ** (5 / 3)) * abar_m**3 + fixation.kappa * abar_m**2 - (
+        3.0 ** (4 / 3) * fixation.mu / (2.0 ** (2 / 3) * chi0**2)
     )
-    negative = np.asarray(j0) * ((2.0 ** (4 / 3) * p.chi0 / 3.0 ** (2 / 3)) * abar_m**1.5 + p.kappa * np.sqrt(abar_m))
+    negative = np.asarray(j0) * (
+        (2.0 ** (4 / 3) * chi0 / 3.0 ** (2 / 3)) * abar_m**1.5 + fixation.kappa * np.sqrt(abar_m)
+    )
     return positive, negative
 
 
-def mean_balance_excess(log_abar_m: ArrayLike, j0: ArrayLike, p: CompliantFixation) -> Array:
+def mean_balance_excess(log_abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float) -> Array:
     """positive/negative - 1 of Eq. (87) (:func:`mean_balance_parts`) at abar_m = exp(``log_abar_m``).
 
     Zero on the mean balance, increasing with abar_m (see :func:`static_abar_m`).
     """
-    positive, negative = mean_balance_parts(np.exp(log_abar_m), j0, p)
+    positive, negative = mean_balance_parts(np.exp(log_abar_m), j0, fixation, chi0)
     return positive / negative - 1.0
 
 
-def static_abar_m(p: CompliantFixation) -> float:
+def static_abar_m(fixation: Fixation, chi0: float) -> float:
     """Static contact radius a_0/a_o: Eq. (87) with J0 = 1, i.e. Eq. (82) (unique root, see below).
 
     Dividing both parts by abar^(3/2): positive/negative = (c1 abar^(3/2) + kappa abar^(1/2) - M abar^(-3/2))
@@ -119,19 +96,20 @@ def static_abar_m(p: CompliantFixation) -> float:
     positive denominator decreases with abar, so the ratio increases strictly, from below 1 (it tends
     to -inf for M > 0 and to 0 for M = 0) to infinity: exactly one root.
     """
-    return float(abar_m_from_mean_balance(np.array([1.0]), p)[0])
+    return float(abar_m_from_mean_balance(np.array([1.0]), fixation, chi0)[0])
 
 
 def harmonic_coefficients(
-    omega_bar: ArrayLike, abar_m: ArrayLike, abar: ArrayLike, p: CompliantFixation, law: RateLaw
+    omega_bar: ArrayLike, abar_m: ArrayLike, abar: ArrayLike, fixation: Fixation, chi0: float, law: RateLaw
 ) -> tuple[Array, Array, Array, Array, Array]:
     """(J0, delta_c, delta_s, P_c, P_s) of Eqs. (93)–(96), broadcast over the inputs."""
     omega_bar, abar_m, abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, abar)))
     j0, jc1, j1 = j_integrals_for_law(abar.ravel(), law)
     j0, jc1, j1 = (v.reshape(abar.shape) for v in (j0, jc1, j1))
-    delta_c, delta_s = displacement_harmonics(abar, abar_m, jc1, j1, p.chi0, omega_bar / p.nu0)
-    p_c = -(4.0 * p.chi0**3 / (9.0 * p.kappa)) * abar_m**1.5 * jc1
-    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * p.chi0**2 * (p.nu0 / (p.kappa * omega_bar)) * abar * abar_m**2 * (
+    delta_c, delta_s = displacement_harmonics(abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
+    p_c = -(4.0 * chi0**3 / (9.0 * fixation.kappa)) * abar_m**1.5 * jc1
+    kappa, nu0 = fixation.kappa, fixation.nu0
+    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * abar * abar_m**2 * (
         1.0 - 3.0 * j1 / (4.0 * abar_m**1.5)
     )
     return j0, delta_c, delta_s, p_c, p_s
@@ -149,26 +127,26 @@ def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
 
 
 def amplitude_log_residual(log_omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
-                           p: CompliantFixation) -> Array:
+                           zeta: float, eta1: float) -> Array:
     """Eq. (90) in logarithms, ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
 
     From the harmonic coefficients of any model level (Eqs. 93-96 here, Eqs. 125-126 in
     exact_harmonic_balance).
     """
-    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_c, delta_s, p_c, p_s, p.zeta)
-    return np.log(np.hypot(xi_c, xi_s)) - math.log(p.eta1) - np.log(forcing_modulus(log_omega_bar, p.zeta))
+    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_c, delta_s, p_c, p_s, zeta)
+    return np.log(np.hypot(xi_c, xi_s)) - math.log(eta1) - np.log(forcing_modulus(log_omega_bar, zeta))
 
 
-def residual(x: ArrayLike, p: CompliantFixation, law: RateLaw) -> Array:
+def residual(x: ArrayLike, fixation: Fixation, chi0: float, eta1: float, law: RateLaw) -> Array:
     """Eqs. (87) and (90) at x = (ln omega_bar, ln abar_m, ln Abar), rows of an (m, 3) array -> (m, 2).
 
     Column 0: positive/negative - 1 of Eq. (87); column 1: ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
     """
     x = np.atleast_2d(np.asarray(x, dtype=float))
     omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
-    amplitude = amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, p)
-    return np.stack([mean_balance_excess(x[:, 1], j0, p), amplitude], axis=1)
+    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, fixation, chi0, law)
+    amplitude = amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, fixation.zeta, eta1)
+    return np.stack([mean_balance_excess(x[:, 1], j0, fixation, chi0), amplitude], axis=1)
 
 
 def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
@@ -181,20 +159,20 @@ def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_
 
 
 def residual_linear(
-    omega_bar: float, abar_m: float, abar: float, p: CompliantFixation, law: RateLaw
+    omega_bar: float, abar_m: float, abar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw
 ) -> tuple[float, float]:
     """Eqs. (87) and (90) in their printed (polynomial) form, relative: for checking a solution.
 
     Returns ((positive - negative)/negative, (xi_c^2 + xi_s^2 - rhs)/rhs) of Eqs. (87) and (90).
     """
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, p, law)
-    positive, negative = mean_balance_parts(abar_m, j0, p)
-    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_c, delta_s, p_c, p_s, p.zeta)
-    rhs = (p.eta1 * forcing_modulus(math.log(omega_bar), p.zeta)) ** 2
+    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, fixation, chi0, law)
+    positive, negative = mean_balance_parts(abar_m, j0, fixation, chi0)
+    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_c, delta_s, p_c, p_s, fixation.zeta)
+    rhs = (eta1 * forcing_modulus(math.log(omega_bar), fixation.zeta)) ** 2
     return float((positive - negative) / negative), float((xi_c**2 + xi_s**2 - rhs) / rhs)
 
 
-def abar_m_from_mean_balance(j0: ArrayLike, p: CompliantFixation) -> Array:
+def abar_m_from_mean_balance(j0: ArrayLike, fixation: Fixation, chi0: float) -> Array:
     """abar_m solving Eq. (87) for given J0(Abar), vectorised (unique root, see :func:`static_abar_m`).
 
     Bisection in ln abar_m on [ln J0^(2/3) - 1, ln J0^(2/3) + 1] (widened upwards while needed): at
@@ -203,7 +181,7 @@ def abar_m_from_mean_balance(j0: ArrayLike, p: CompliantFixation) -> Array:
     width-2 bracket reach the spacing of doubles.
     """
     j0 = np.asarray(j0, dtype=float)
-    excess = partial(mean_balance_excess, j0=j0, p=p)
+    excess = partial(mean_balance_excess, j0=j0, fixation=fixation, chi0=chi0)
     centre = (2.0 / 3.0) * np.log(j0)
     lo, hi = centre - 1.0, centre + 1.0
     for _ in range(200):
@@ -222,13 +200,14 @@ def abar_m_from_mean_balance(j0: ArrayLike, p: CompliantFixation) -> Array:
 
 
 def newton_at_frequency(
-    omega_bar: float, p: CompliantFixation, law: RateLaw, guess: tuple[float, float]
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, guess: tuple[float, float]
 ) -> tuple[float, float]:
     """Newton in (ln abar_m, ln Abar) at fixed omega_bar from ``guess`` = (abar_m, Abar), to 1e-13 in the residual.
 
     Raises NoRootError when Newton does not converge.
     """
-    at_frequency = partial(residual_at_frequency, log_omega_bar=math.log(omega_bar), p=p, law=law)
+    at_frequency = partial(residual_at_frequency, log_omega_bar=math.log(omega_bar), fixation=fixation, chi0=chi0,
+                           eta1=eta1, law=law)
     z = np.log(np.asarray(guess, dtype=float))
     for _ in range(40):
         f = at_frequency(z[None, :])[0]
@@ -239,32 +218,37 @@ def newton_at_frequency(
     raise NoRootError(f"Eqs. (87), (90): Newton did not converge at omega_bar = {omega_bar:.6g} from {guess}")
 
 
-def residual_at_frequency(z: Array, log_omega_bar: float, p: CompliantFixation, law: RateLaw) -> Array:
+def residual_at_frequency(
+    z: Array, log_omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw
+) -> Array:
     """:func:`residual` (Eqs. 87, 90) at fixed ln omega_bar for rows z = (ln abar_m, ln Abar) of an (m, 2) array."""
-    return residual(np.column_stack([np.full(len(z), log_omega_bar), z]), p, law)
+    return residual(np.column_stack([np.full(len(z), log_omega_bar), z]), fixation, chi0, eta1, law)
 
 
 def amplitude_residual_on_closure(
-    log_abar: Array, log_omega_bar: float, p: CompliantFixation, law: RateLaw, abar_m_of_j0: Callable[[Array], Array]
+    log_abar: Array, log_omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
+    abar_m_of_j0: Callable[[Array], Array]
 ) -> Array:
     """Eq. (90) in logarithms (column 1 of :func:`residual`) along abar_m = abar_m_of_j0(J0(Abar)).
 
     Vectorised over ln Abar; the closure is Eq. (87) (:func:`abar_m_from_mean_balance`) or a_m = a_cr (Eq. 61).
     """
     abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_abar), law)[0])
-    return residual(np.column_stack([np.full(len(log_abar), log_omega_bar), np.log(abar_m), log_abar]), p, law)[:, 1]
+    x = np.column_stack([np.full(len(log_abar), log_omega_bar), np.log(abar_m), log_abar])
+    return residual(x, fixation, chi0, eta1, law)[:, 1]
 
 
 def _roots_by_scan(
-    omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array, abar_m_of_j0: Callable[[Array], Array]
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array,
+    abar_m_of_j0: Callable[[Array], Array]
 ) -> list[tuple[float, float]]:
     """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)).
 
     Sign changes on the grid ``log_abar`` polished by Brent's method. Roots closer than the grid
     spacing can be missed.
     """
-    g = partial(amplitude_residual_on_closure, log_omega_bar=math.log(omega_bar), p=p, law=law,
-                abar_m_of_j0=abar_m_of_j0)
+    g = partial(amplitude_residual_on_closure, log_omega_bar=math.log(omega_bar), fixation=fixation, chi0=chi0,
+                eta1=eta1, law=law, abar_m_of_j0=abar_m_of_j0)
     values = g(log_abar)
     roots = []
     for k in np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0):
@@ -274,28 +258,31 @@ def _roots_by_scan(
 
 
 def solutions_by_scan(
-    omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
 ) -> list[tuple[float, float]]:
     """All solutions (abar_m, Abar) of Eqs. (87), (90) at one omega_bar with Abar in the scanned range.
 
     Independent of the continuation: Eq. (87) gives abar_m(Abar) uniquely, so Eq. (90) becomes a
     scalar equation in ln Abar.
     """
-    return _roots_by_scan(omega_bar, p, law, log_abar, lambda j0: abar_m_from_mean_balance(j0, p))
+    closure = partial(abar_m_from_mean_balance, fixation=fixation, chi0=chi0)
+    return _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, closure)
 
 
-def pulloff_by_scan(omega_bar: float, p: CompliantFixation, law: RateLaw, log_abar: Array) -> list[tuple[float, float]]:
+def pulloff_by_scan(
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
+) -> list[tuple[float, float]]:
     """Refined pull-off of the compliantly fixed indenter: Eq. (90) at a_m = a_cr (Eq. 61), all roots.
 
     The compliant counterpart of Eq. (106) (which it becomes as kappa -> infinity) and the refined
     counterpart of Eqs. (67)-(69); P_cr/P_cr^JKR = J0(Abar_cr)^2 (Eq. 71) for each root.
     """
-    return _roots_by_scan(omega_bar, p, law, log_abar, pulloff_closure)
+    return _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, pulloff_closure)
 
 
-def _a_over_am(x: Array, p: CompliantFixation) -> Array:
+def _a_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
     """A/a_m at points x = (ln omega_bar, ln abar_m, ln Abar) (corrected Eq. 98, omega_check = omega_bar/nu0)."""
-    return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), p.chi0, np.exp(x[:, 0]) / p.nu0)
+    return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), chi0, np.exp(x[:, 0]) / fixation.nu0)
 
 
 # --- The response curve, Fig. 5 --------------------------------------------------------------
@@ -305,13 +292,15 @@ def _a_over_am(x: Array, p: CompliantFixation) -> Array:
 class ResponseCurve:
     """The traced solution curve: pieces (split at the exact anti-resonance) and their folds."""
 
-    parameters: CompliantFixation
+    fixation: Fixation
+    chi0: float  # Eq. (64)
+    eta1: float  # h1 / R, Eq. (65)
     pieces: tuple[Curve, ...]  # points x = (ln omega_bar, ln abar_m, ln Abar) in trace order
     folds: Array  # (k, 3) fold points in x
 
     def a_over_am(self, x: Array) -> Array:
         """A/a_m along points x (corrected Eq. 98)."""
-        return _a_over_am(x, self.parameters)
+        return _a_over_am(x, self.fixation, self.chi0)
 
     def count_at(self, omega_bar: float) -> int:
         """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
@@ -320,7 +309,8 @@ class ResponseCurve:
     def solutions_at(self, omega_bar: float, law: RateLaw) -> list[tuple[float, float]]:
         """Every solution (abar_m, Abar) on the traced curve at ``omega_bar``, polished by Newton."""
         s = math.log(omega_bar)
-        return [newton_at_frequency(omega_bar, self.parameters, law, (math.exp(g[1]), math.exp(g[2])))
+        case = (self.fixation, self.chi0, self.eta1, law)
+        return [newton_at_frequency(omega_bar, *case, (math.exp(g[1]), math.exp(g[2])))
                 for piece in self.pieces for g in crossings(piece, s)]
 
     def steady_states_at(self, omega_bar: float, law: RateLaw) -> SteadyState:
@@ -333,14 +323,14 @@ class ResponseCurve:
         abar_m = np.array([am for am, _ in solutions], dtype=float)
         abar = np.array([a for _, a in solutions], dtype=float)
         j0 = j_integrals_for_law(abar, law)[0]
-        p = self.parameters
         return SteadyState("refined", np.full(abar.shape, "ok"), abar, abar_m, j0**2,
-                           contact_radius_amplitude_ratio(abar, abar_m, p.chi0, omega_bar / p.nu0),
+                           contact_radius_amplitude_ratio(abar, abar_m, self.chi0, omega_bar / self.fixation.nu0),
                            mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
 
 
-def _start(omega_bar: float, p: CompliantFixation, law: RateLaw) -> Array:
-    roots = solutions_by_scan(omega_bar, p, law, np.linspace(-60.0, 60.0, 2401))
+def _start(omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw) -> Array:
+    """The one solution x = (ln omega_bar, ln abar_m, ln Abar) of Eqs. (87), (90) at an end of the range."""
+    roots = solutions_by_scan(omega_bar, fixation, chi0, eta1, law, np.linspace(-60.0, 60.0, 2401))
     if len(roots) != 1:
         raise NoRootError(
             f"Eqs. (87), (90): expected one solution at the end omega_bar = {omega_bar:.6g} to start from, "
@@ -350,7 +340,7 @@ def _start(omega_bar: float, p: CompliantFixation, law: RateLaw) -> Array:
 
 
 def trace_response_curve(
-    p: CompliantFixation, law: RateLaw, omega_bar_range: tuple[float, float] = (0.1, 50.0),
+    fixation: Fixation, chi0: float, eta1: float, law: RateLaw, omega_bar_range: tuple[float, float] = (0.1, 50.0),
     settings: ContinuationSettings = ContinuationSettings(),
 ) -> ResponseCurve:
     """Trace Eqs. (87), (90) over ``omega_bar_range`` by pseudo-arclength continuation (Fig. 5).
@@ -360,9 +350,9 @@ def trace_response_curve(
     omega_bar = 1 is added by the caller). Folds are located on every piece.
     """
     lo, hi = (math.log(v) for v in omega_bar_range)
-    res = partial(residual, p=p, law=law)
-    split = p.anti_resonance_is_exact and lo < 0.0 < hi
-    into_notch = partial(_into_notch, p=p)
+    res = partial(residual, fixation=fixation, chi0=chi0, eta1=eta1, law=law)
+    split = fixation.zeta == 0.0 and lo < 0.0 < hi  # the exact anti-resonance Abar = 0 at omega_bar = 1 (App. B)
+    into_notch = partial(_into_notch, fixation=fixation, chi0=chi0)
     ends: list[tuple[float, float, Callable[[Array], bool]]]
     if split:
         ends = [(lo, 1.0, into_notch), (hi, -1.0, into_notch)]
@@ -370,28 +360,31 @@ def trace_response_curve(
         ends = [(lo, 1.0, lambda x: x[0] >= hi)]
     pieces = []
     for s0, sign, stop in ends:
-        curve = trace(res, _start(math.exp(s0), p, law), np.array([sign, 0.0, 0.0]), stop, settings)
-        pieces.append(_clip(curve, p, law, lo, hi))
+        curve = trace(res, _start(math.exp(s0), fixation, chi0, eta1, law), np.array([sign, 0.0, 0.0]), stop, settings)
+        pieces.append(_clip(curve, fixation, chi0, eta1, law, (lo, hi)))
     folds = np.concatenate([locate_folds(res, c, settings) for c in pieces])
-    return ResponseCurve(p, tuple(pieces), folds)
+    return ResponseCurve(fixation, chi0, eta1, tuple(pieces), folds)
 
 
-def _into_notch(x: Array, p: CompliantFixation) -> bool:
+def _into_notch(x: Array, fixation: Fixation, chi0: float) -> bool:
     """A/a_m < NOTCH_FLOOR at x = (ln omega_bar, ln abar_m, ln Abar) (Eq. 98 corrected).
 
     A branch approaching the anti-resonance omega_bar = 1, where Eq. (90) has the exact solution
     Abar = 0 for zeta = 0 (Appendix B).
     """
-    return _a_over_am(x[None, :], p)[0] < NOTCH_FLOOR
+    return _a_over_am(x[None, :], fixation, chi0)[0] < NOTCH_FLOOR
 
 
-def _clip(curve: Curve, p: CompliantFixation, law: RateLaw, lo: float, hi: float) -> Curve:
-    """Replace a last point beyond the range by the solution exactly at the range's end."""
+def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
+          bounds: tuple[float, float]) -> Curve:
+    """Replace a last point beyond the range ``bounds`` of ln omega_bar by the solution at its end (Eqs. 87, 90)."""
+    lo, hi = bounds
     last = curve.points[-1]
     if lo <= last[0] <= hi:
         return curve
     edge = hi if last[0] > hi else lo
-    abar_m, abar = newton_at_frequency(math.exp(edge), p, law, (math.exp(last[1]), math.exp(last[2])))
+    guess = (math.exp(last[1]), math.exp(last[2]))
+    abar_m, abar = newton_at_frequency(math.exp(edge), fixation, chi0, eta1, law, guess)
     points = curve.points.copy()
     points[-1] = [edge, math.log(abar_m), math.log(abar)]
     return Curve(points, curve.tangents, curve.residuals)

@@ -108,6 +108,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import (
     PHAT_JKR,
     amplitude_in_contact_units,
@@ -117,7 +118,7 @@ from vibroadhesion.core.groups import (
 from vibroadhesion.core.integrals import folded_rule
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
 from vibroadhesion.core.records import SteadyState
-from vibroadhesion.models.compliant import CompliantFixation, amplitude_log_residual
+from vibroadhesion.models.compliant import amplitude_log_residual
 from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
@@ -390,7 +391,9 @@ def _rigid_record(abar: float, abar_m: float, w_eff_ratio: float, a_over_am: flo
 # --- Compliant fixation (Sec. 3.5.3): residuals for continuation ----------------------------
 
 
-def compliant_residual(x: ArrayLike, p: CompliantFixation, law: RateLaw, deltabar0: float = 0.0) -> Array:
+def compliant_residual(
+    x: ArrayLike, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, deltabar0: float = 0.0
+) -> Array:
     """Exact counterpart of :func:`vibroadhesion.models.compliant.residual`.
 
     Rows x = (ln omega_bar, ln abar_m, ln Abar) of an (m, 3) array -> (m, 2) residuals.
@@ -404,18 +407,19 @@ def compliant_residual(x: ArrayLike, p: CompliantFixation, law: RateLaw, deltaba
     """
     x = np.atleast_2d(np.asarray(x, dtype=float))
     omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
-    c_o = contact_radius_ratio(p.chi0)
-    epsilon = p.nu0 * abar / (omega_bar * c_o)
+    c_o = contact_radius_ratio(chi0)
+    epsilon = fixation.nu0 * abar / (omega_bar * c_o)
     h = exact_harmonics(abar_m, abar, epsilon, law)
     positive = (
-        p.kappa * (abar_m**2 + 0.5 * epsilon**2 - deltabar0)
+        fixation.kappa * (abar_m**2 + 0.5 * epsilon**2 - deltabar0)
         + c_o * ((4.0 / 3.0) * abar_m**3 + 2.0 * abar_m * epsilon**2)
-        - p.mu / c_o**2
+        - fixation.mu / c_o**2
     )
     k0_half = abar_m**2 + 0.5 * epsilon**2 - h.mean_indentation
     k0_three_halves = 0.5 * ((4.0 / 3.0) * abar_m**3 + 2.0 * abar_m * epsilon**2 - h.mean_force)
-    negative = p.kappa * k0_half + 2.0 * c_o * k0_three_halves
-    delta_scale, force_scale = c_o**2, c_o**3 / p.kappa
+    negative = fixation.kappa * k0_half + 2.0 * c_o * k0_three_halves
+    delta_scale, force_scale = c_o**2, c_o**3 / fixation.kappa
     amplitude = amplitude_log_residual(x[:, 0], delta_scale * h.indentation_cos, delta_scale * h.indentation_sin,
-                                       force_scale * h.force_cos, force_scale * h.force_sin, p)
+                                       force_scale * h.force_cos, force_scale * h.force_sin,
+                                       fixation.zeta, eta1)
     return np.stack([positive / negative - 1.0, amplitude], axis=1)

@@ -51,13 +51,13 @@ from (II) and P_m = m g, Eq. (59).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 from functools import partial
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
@@ -70,85 +70,6 @@ from vibroadhesion.numerics.scan import (
     polish_sign_change,
     roots_on_nodes,
 )
-
-
-@dataclass(frozen=True)
-class Fixation:
-    """Fixation element of the indenter in the units of Eq. (66) (stiffnesses over E* R).
-
-    ``kappa`` = k/(E* R) is the static stiffness that enters the mean balance (Eq. 54);
-    ``dynamic_stiffness`` = d = (k - m omega^2 + i c omega)/(E* R) is the complex dynamic stiffness
-    at the excitation frequency that enters the amplitude equation (Eq. 43). A rigid fixation has
-    kappa = inf and d = inf. Build it with :meth:`rigid`, :meth:`free` or :meth:`spring_mass_dashpot`.
-    """
-
-    kappa: float
-    dynamic_stiffness: complex
-
-    def __post_init__(self) -> None:
-        """Reject a fixation that no k >= 0, m >= 0, c >= 0 gives (Eq. 66)."""
-        d = complex(self.dynamic_stiffness)
-        if math.isnan(self.kappa) or self.kappa < 0:
-            raise ValueError(f"kappa must be a non-negative number or inf, got {self.kappa!r}")
-        if math.isinf(self.kappa) != (math.isinf(d.real) or math.isinf(d.imag)):
-            raise ValueError("the dynamic stiffness is infinite exactly when the fixation is rigid (kappa = inf)")
-        if not self.is_rigid and (math.isnan(d.real) or math.isnan(d.imag) or d.imag < 0 or d.real > self.kappa):
-            raise ValueError(
-                "d = (k - m omega^2 + i c omega)/(E* R) needs Re d <= kappa (m >= 0) and Im d >= 0 (c >= 0), "
-                f"got d = {d!r}"
-            )
-
-    @classmethod
-    def rigid(cls) -> Fixation:
-        """Rigid fixation, k/(E* R) -> infinity (Sec. 3.1.2)."""
-        return cls(math.inf, complex(math.inf, 0.0))
-
-    @classmethod
-    def free(cls, beta: float) -> Fixation:
-        """Free indenter under its dead weight, k = c = 0 (Sec. 3.1.3): d = -beta, beta = m omega^2/(E* R) > 0."""
-        if not (math.isfinite(beta) and beta > 0):
-            raise ValueError(f"beta = m omega^2/(E* R) must be a positive number, got {beta!r}")
-        return cls(0.0, complex(-beta, 0.0))
-
-    @classmethod
-    def spring_mass_dashpot(cls, kappa: float, omega_bar: float, zeta: float) -> Fixation:
-        """Spring k, mass m, dashpot c: d = kappa (1 - omega_bar^2 + 2 i zeta omega_bar) (Eqs. 65–66).
-
-        omega_bar = 1, zeta = 0 gives d = 0 exactly: the anti-resonance of Appendix B.
-        """
-        if not (math.isfinite(kappa) and kappa > 0):
-            raise ValueError(f"kappa must be a positive number, got {kappa!r}")
-        if not (math.isfinite(omega_bar) and omega_bar > 0 and math.isfinite(zeta) and zeta >= 0):
-            raise ValueError(f"need omega_bar > 0 and zeta >= 0, got omega_bar = {omega_bar!r}, zeta = {zeta!r}")
-        return cls(kappa, kappa * complex(1.0 - omega_bar**2, 2.0 * zeta * omega_bar))
-
-    @property
-    def is_rigid(self) -> bool:
-        """kappa = inf: the rigid fixation of Sec. 3.1.2."""
-        return math.isinf(self.kappa)
-
-    def contact_resonance(self, chi0: float) -> float | None:
-        """abar_m at which d + 2 c_o abar_m = 0 (pole of Eq. II: the mass resonates on fixation plus contact).
-
-        Exists only for a real negative d (no damping, above the fixation's own resonance, or a
-        free indenter); there |delta_c| = infinity, no steady state. ``None`` otherwise.
-        """
-        d = complex(self.dynamic_stiffness)
-        if self.is_rigid or d.imag != 0 or d.real >= 0:
-            return None
-        return -d.real / (2.0 * contact_radius_ratio(chi0))
-
-
-def fixation_transmissibility(abar_m: float, fixation: Fixation, chi0: float) -> float:
-    """|delta_c| / h1 = |d| / |d + 2 c_o abar_m|: Eq. (I) of the module docstring (Eq. B.3 with damping).
-
-    1 for rigid fixation, infinite at the contact resonance (:meth:`Fixation.contact_resonance`), zero at d = 0.
-    """
-    if fixation.is_rigid:
-        return 1.0
-    d = complex(fixation.dynamic_stiffness)
-    denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
-    return math.inf if denominator == 0 else abs(d) / denominator
 
 
 def indentation_amplitude(abar_m: ArrayLike, jc1: ArrayLike, chi0: float) -> NDArray[np.float64]:
@@ -173,8 +94,10 @@ def mean_indentation(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
     return abar_m**2 - np.asarray(j0) * np.sqrt(abar_m)
 
 
-def internal_variable(abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz) -> float:
-    """Abar on the amplitude equation (II) at a given abar_m.
+def internal_variable(
+    abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float
+) -> float:
+    """Abar on the amplitude equation (II) at a given abar_m, d of the fixation at ``omega_check`` (Eqs. 43, 105).
 
     The root of |Jc1(Abar)| = target,
 
@@ -188,7 +111,7 @@ def internal_variable(abar_m: float, eta1: float, fixation: Fixation, chi0: floa
         raise ValueError(f"abar_m must be a positive number, got {abar_m!r}")
     if eta1 < 0 or not math.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1!r}")
-    transmissibility = fixation_transmissibility(abar_m, fixation, chi0)
+    transmissibility = fixation.transmissibility(abar_m, chi0, omega_check)
     if math.isinf(transmissibility):
         raise NoRootError(
             f"Eq. (43) at abar_m = {abar_m:.6g}: contact resonance (d + 2 c_o abar_m = 0), amplitude unbounded"
@@ -202,20 +125,19 @@ def internal_variable(abar_m: float, eta1: float, fixation: Fixation, chi0: floa
     )
 
 
-def mean_balance_residual(
-    abar_m: float, j0: float, fixation: Fixation, chi0: float, mu: float, base_offset: float
-) -> float:
+def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: float, base_offset: float) -> float:
     """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - deltabar_base (Eq. 56).
 
     ``base_offset`` = (hhat - h0) R / a_o^2 (positive: base pushed towards the indenter); for a
-    rigid fixation it is the imposed mean indentation, and ``mu`` (carried by the fixation) drops out.
+    rigid fixation it is the imposed mean indentation. The weight mu is the fixation's (Eq. 81).
     """
     deltabar_m = float(mean_indentation(abar_m, j0))
     if fixation.is_rigid:
         return deltabar_m - base_offset
     c_o = contact_radius_ratio(chi0)
     force = 0.75 * float(mean_force_over_pulloff(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
-    return c_o * force + fixation.kappa * deltabar_m - load_group(mu, base_offset, fixation.kappa, chi0) / c_o**2
+    load = load_group(fixation.mu, base_offset, fixation.kappa, chi0)
+    return c_o * force + fixation.kappa * deltabar_m - load / c_o**2
 
 
 def load_group(mu: float, base_offset: float, kappa: float, chi0: float) -> float:
@@ -234,7 +156,6 @@ def steady_states(
     chi0: float,
     law: GentSchultz,
     *,
-    mu: float = 0.0,
     base_offset: float = 0.0,
     omega_check: float = math.inf,
     abar_min: float = 1e-4,
@@ -242,10 +163,11 @@ def steady_states(
     """All leading-order steady states with abar_m >= ``abar_min``, sorted by abar_m (Sec. 3.1).
 
     Solves the amplitude equation (II) and the mean balance (III) (derivation in the module
-    docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation, chi0 (Eq. 64), the
-    Gent–Schultz law, the weight mu = m g/(E* R^2) (Eq. 81), the base offset
-    (hhat - h0) R/a_o^2 (load group ``load_group``) and omega_check = omega R/v0 (Eq. 105; only
-    for A/a_m). Raises :class:`NoRootError` if there is none (e.g. a tensile load beyond pull-off).
+    docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation (with
+    its weight mu = m g/(E* R^2), Eq. 81), chi0 (Eq. 64), the Gent–Schultz law, the base offset
+    (hhat - h0) R/a_o^2 (load group ``load_group``) and omega_check = omega R/v0 (Eq. 105; the
+    fixation's d at that frequency, and A/a_m; a rigid fixation admits omega_check = inf). Raises
+    :class:`NoRootError` if there is none (e.g. a tensile load beyond pull-off).
 
     Method. For given abar_m, (II) fixes Abar uniquely (:func:`internal_variable`), so the
     solutions are the roots of the one-variable residual F(abar_m) of (III) along that curve
@@ -277,11 +199,11 @@ def steady_states(
     criterion under a compliant machine, dP_m/da_m + k d delta_m/da_m > 0, which is dP_m/da_m > 0 under
     load control (kappa = 0) and d delta_m/da_m > 0 under displacement control (rigid).
     """
-    _check_steady_state_inputs(law, chi0, mu, base_offset, abar_min, omega_check)
-    balance = MeanBalance(eta1, fixation, chi0, law, mu, base_offset)
-    vibrating = eta1 > 0 and complex(fixation.dynamic_stiffness) != 0  # else Abar = 0, J0 = 1 throughout
-    resonance = fixation.contact_resonance(chi0) if vibrating else None
-    abar_turn = monotone_tail_start(fixation, chi0) if vibrating else 0.0
+    _check_steady_state_inputs(law, chi0, base_offset, abar_min, omega_check)
+    balance = MeanBalance(eta1, fixation, chi0, law, omega_check, base_offset)
+    vibrating = eta1 > 0 and fixation.d(omega_check) != 0  # else Abar = 0, J0 = 1 throughout
+    resonance = fixation.contact_resonance(chi0, omega_check) if vibrating else None
+    abar_turn = monotone_tail_start(fixation, chi0, omega_check) if vibrating else 0.0
     what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
     z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
     segments = scan_segments(balance, math.log(abar_min), z_res, abar_turn, what)
@@ -292,16 +214,16 @@ def steady_states(
         roots.append(polish_sign_change(residual, *tail_root_bracket, True, what))
     if not roots:
         raise NoRootError(
-            f"{what}: no steady state with abar_m >= {abar_min:.3g} (mu = {mu:.6g}, base offset = {base_offset:.6g}); "
+            f"{what}: no steady state with abar_m >= {abar_min:.3g} (base offset = {base_offset:.6g}); "
             "a tensile load beyond the vibroadhesive pull-off has none"
         )
     return tuple(steady_state_at(abar_m, stable, balance, omega_check) for abar_m, stable in sorted(roots))
 
 
 def _check_steady_state_inputs(
-    law: GentSchultz, chi0: float, mu: float, base_offset: float, abar_min: float, omega_check: float
+    law: GentSchultz, chi0: float, base_offset: float, abar_min: float, omega_check: float
 ) -> None:
-    """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 81, 105).
+    """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 105); the fixation checks itself.
 
     ValueError, or TypeError for a law other than Gent–Schultz (Eqs. 73–75).
     """
@@ -309,8 +231,8 @@ def _check_steady_state_inputs(
         raise TypeError("steady_states needs the Gent–Schultz law: the scan's end rests on its monotone J0 and |Jc1|")
     if not (math.isfinite(chi0) and chi0 > 0):
         raise ValueError(f"chi0 must be a positive number, got {chi0!r}")
-    if not (math.isfinite(mu) and mu >= 0 and math.isfinite(base_offset)):
-        raise ValueError(f"need mu >= 0 and a finite base offset, got mu = {mu!r}, base_offset = {base_offset!r}")
+    if not math.isfinite(base_offset):
+        raise ValueError(f"need a finite base offset, got base_offset = {base_offset!r}")
     if not (math.isfinite(abar_min) and abar_min > 0):
         raise ValueError(f"abar_min must be a positive number, got {abar_min!r}")
     if not omega_check > 0:
@@ -324,7 +246,7 @@ class MeanBalance(NamedTuple):
     fixation: Fixation
     chi0: float  # Eq. (64)
     law: GentSchultz
-    mu: float  # m g / (E* R^2), Eq. (81)
+    omega_check: float  # omega R / v0, Eq. (105): the frequency of the fixation's d
     base_offset: float  # (hhat - h0) R / a_o^2
 
 
@@ -335,9 +257,9 @@ def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
     mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`).
     """
     abar_m = math.exp(z)
-    abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law)
+    abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check)
     j0 = float(j_integrals_for_law(abar, balance.law)[0])
-    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.mu, balance.base_offset), abar, j0
+    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), abar, j0
 
 
 def balance_residual(z: float, balance: MeanBalance) -> float:
@@ -345,15 +267,15 @@ def balance_residual(z: float, balance: MeanBalance) -> float:
     return balance_state(z, balance)[0]
 
 
-def monotone_tail_start(fixation: Fixation, chi0: float) -> float:
-    """abar_turn = max(0, -Re d/(2 c_o)), 0 for a rigid fixation (Eqs. 43, 86).
+def monotone_tail_start(fixation: Fixation, chi0: float, omega_check: float) -> float:
+    """abar_turn = max(0, -Re d/(2 c_o)) with d at ``omega_check``, 0 for a rigid fixation (Eqs. 43, 86).
 
     Beyond it the target of the amplitude equation (II) decreases strictly with abar_m (proof in
     :func:`steady_states`).
     """
     if fixation.is_rigid:
         return 0.0
-    return max(0.0, -complex(fixation.dynamic_stiffness).real / (2.0 * contact_radius_ratio(chi0)))
+    return max(0.0, -fixation.d(omega_check).real / (2.0 * contact_radius_ratio(chi0)))
 
 
 def in_monotone_tail(z: float, j0: float, abar_turn: float) -> bool:

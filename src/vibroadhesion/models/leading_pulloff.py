@@ -56,15 +56,17 @@ Uniqueness of Eq. (72) (Gent–Schultz law). J0 and |Jc1| are strictly increasin
 from __future__ import annotations
 
 import math
+from functools import partial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff
-from vibroadhesion.models.leading_order import Fixation, fixation_transmissibility, indentation_amplitude
+from vibroadhesion.models.leading_order import indentation_amplitude
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 
 
@@ -91,19 +93,20 @@ def pulloff_closure(j0: ArrayLike) -> NDArray[np.float64]:
     return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
 
 
-def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> float:
+def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
+                          omega_check: float = math.inf) -> float:
     """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 (0 gives 0).
 
-    Rigid fixation (``None`` or :meth:`Fixation.rigid`): the unique root of Eq. (72). Any other
-    fixation: the smallest root of Eqs. (67)–(69), (IV) of the module docstring (:func:`critical_abars`),
-    the first reached as the base is withdrawn (module docstring).
+    Rigid fixation (the default): the unique root of Eq. (72). Any other fixation, with its d at
+    ``omega_check`` = omega R/v0 (Eq. 105): the smallest root of Eqs. (67)–(69), (IV) of the module
+    docstring (:func:`critical_abars`), the first reached as the base is withdrawn (module docstring).
     """
     if eta1 < 0 or not np.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
     if eta1 == 0:
         return 0.0
-    if fixation is not None and not fixation.is_rigid:
-        return critical_abars(eta1, fixation, chi0, law)[0]
+    if not fixation.is_rigid:
+        return critical_abars(eta1, fixation, chi0, law, omega_check)[0]
     log_target = np.log(3.0 * eta1 / chi0**2)
     return solve_log_increasing(
         lambda z: float(np.log(pulloff_lhs_leading(np.exp(z), law))) - log_target,
@@ -111,21 +114,23 @@ def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixa
     )
 
 
-def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation | None = None) -> Pulloff:
+def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
+                    omega_check: float = math.inf) -> Pulloff:
     """Leading-order pull-off, vectorised over eta1 (Eqs. 67–72): the record of level ``leading``.
 
-    Eqs. (71)–(72) for rigid fixation (``None``), Eqs. (67)–(69) and (71) for any other
-    (:func:`critical_abar_leading`). An amplitude without a root has the status ``no_solution``.
+    Eqs. (71)–(72) for rigid fixation (the default), Eqs. (67)–(69) and (71) for any other, with its d
+    at ``omega_check`` (:func:`critical_abar_leading`). An amplitude without a root has the status
+    ``no_solution``.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    abar = np.vectorize(lambda e: critical_abar_or_nan(e, chi0, law, fixation), otypes=[float])(eta1)
+    abar = np.vectorize(lambda e: critical_abar_or_nan(e, chi0, law, fixation, omega_check), otypes=[float])(eta1)
     return pulloff_from_abar("leading", abar, law)
 
 
-def critical_abar_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation | None) -> float:
+def critical_abar_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation, omega_check: float) -> float:
     """:func:`critical_abar_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
     try:
-        return critical_abar_leading(eta1, chi0, law, fixation)
+        return critical_abar_leading(eta1, chi0, law, fixation, omega_check)
     except NoRootError:
         return math.nan
 
@@ -134,9 +139,9 @@ def critical_abar_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixat
 PULLOFF_SCAN = np.linspace(-40.0, 40.0, 1601)
 
 
-def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw,
+def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
                    log_abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
-    """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending.
+    """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending; d at ``omega_check``.
 
     g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)] with abar_cr = :func:`pulloff_closure` (J0),
     i.e. (IV) of the module docstring in logarithms, is evaluated on the grid ``log_abar``; each sign
@@ -147,22 +152,23 @@ def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw,
     """
     if not (eta1 > 0 and math.isfinite(eta1)):
         raise ValueError(f"eta1 must be a positive number, got {eta1!r}")
-    if complex(fixation.dynamic_stiffness) == 0:
+    if fixation.d(omega_check) == 0:
         return [0.0]
-    values = critical_log_excess(np.asarray(log_abar, dtype=float), eta1, fixation, chi0, law)
+    values = critical_log_excess(np.asarray(log_abar, dtype=float), eta1, fixation, chi0, law, omega_check)
     what = f"Eqs. (67)-(69) at eta1 = {eta1:.6g}, {fixation}"
     if not values[0] < 0:
         raise NoRootError(f"{what}: the left-hand side reaches the target below Abar = {math.exp(log_abar[0]):.3g}")
     crossings = np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)
     if crossings.size == 0:
         raise NoRootError(f"{what}: no root for Abar up to {math.exp(log_abar[-1]):.3g}")
-    return [math.exp(brentq(lambda z: float(critical_log_excess(np.array([z]), eta1, fixation, chi0, law)[0]),
+    excess = partial(critical_log_excess, eta1=eta1, fixation=fixation, chi0=chi0, law=law, omega_check=omega_check)
+    return [math.exp(brentq(lambda z: float(excess(np.array([z]))[0]),
                             log_abar[k], log_abar[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps))
             for k in crossings]
 
 
 def critical_log_excess(
-    log_abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw
+    log_abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float
 ) -> NDArray[np.float64]:
     """g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)], z = ln Abar (Eqs. 67–69, 72).
 
@@ -174,6 +180,6 @@ def critical_log_excess(
     """
     j0, jc1, _ = j_integrals_for_law(np.exp(log_abar), law)
     abar_cr = pulloff_closure(j0)
-    transmissibility = np.array([fixation_transmissibility(float(a), fixation, chi0) for a in abar_cr])
+    transmissibility = np.array([fixation.transmissibility(float(a), chi0, omega_check) for a in abar_cr])
     return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(eta1 * transmissibility)
 

@@ -86,7 +86,6 @@ class Setup:
     n: float
     v0: float  # m/s
     sources: dict[str, str]  # "group.entry" -> source text
-    fixation: dict[str, SetupValue] = field(default_factory=dict)  # optional group: entry -> value
     values: dict[str, SetupValue] = field(default_factory=dict)  # "group.entry" -> value
     units: dict[str, str] = field(default_factory=dict)  # "group.entry" -> unit
 
@@ -188,14 +187,12 @@ def _setup_from_document(path: str | Path, doc: Any, locate: Callable[[tuple[Any
             sources[key] = spec["source"]
             values[key] = tuple(float(x) for x in v) if isinstance(v, list) else float(v)
             units[key] = spec["unit"]
-    fixation = {entry: values[f"fixation.{entry}"] for entry in doc.get("fixation", {})}
     scalars: dict[str, Any] = {name: float(value(*where)) for name, where in _SETUP_FIELDS.items()}
     lists: dict[str, Any] = {name: tuple(float(x) for x in value(*where)) for name, where in _SETUP_LISTS.items()}
     return Setup(
         **scalars,
         **lists,
         sources=sources,
-        fixation=fixation,
         values=values,
         units=units,
     )

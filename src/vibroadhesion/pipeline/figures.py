@@ -105,12 +105,13 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     """
     fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)
     lead = table[table["model"] == "leading"]
-    ax.plot(lead["h1_um"], lead["ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
+    ax.plot(lead["h1_um"], lead["pulloff_ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
     refined = table[table["model"] == "refined"]
     for k, (f, rows) in enumerate(refined.groupby("frequency_hz", sort=True)):
-        ax.plot(rows["h1_um"], rows["ratio"], "--", color=f"C{k}", lw=1.0, label=f"refined, Eq. (106), {f:g} Hz")
+        ax.plot(rows["h1_um"], rows["pulloff_ratio"], "--", color=f"C{k}", lw=1.0,
+                label=f"refined, Eq. (106), {f:g} Hz")
     exact = table[table["model"] == "exact_averaging"]
-    ax.plot(exact["h1_um"], exact["ratio"], "k:", lw=1.4,
+    ax.plot(exact["h1_um"], exact["pulloff_ratio"], "k:", lw=1.4,
             label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
     if virtual is not None:
         sim = _simulated_rigid_pulloff(virtual)
@@ -189,12 +190,12 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     for k, (h1, rows) in enumerate(_by_amplitude(table)):
         lead = leading[np.isclose(leading["h1_um"], h1)].iloc[0]
-        for ax, column, asymptote in ((ax_a, "Abar_cr", lead["Abar_cr"]), (ax_b, "ratio", lead["ratio"])):
+        for ax, column in ((ax_a, "Abar_cr"), (ax_b, "pulloff_ratio")):
             ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
-            ax.axhline(asymptote, color=f"C{k}", ls="--", lw=0.8)
+            ax.axhline(lead[column], color=f"C{k}", ls="--", lw=0.8)
         if exact is not None:
             row = exact[np.isclose(exact["h1_um"], h1)].iloc[0]
-            for ax, column in ((ax_a, "Abar_cr"), (ax_b, "ratio")):
+            for ax, column in ((ax_a, "Abar_cr"), (ax_b, "pulloff_ratio")):
                 ax.axhline(row[column], color=f"C{k}", ls=":", lw=1.0)
         if virtual is not None:
             sim = _simulated_rigid_pulloff(virtual)

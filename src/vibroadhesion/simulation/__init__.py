@@ -4,8 +4,8 @@ Floquet multipliers and contact loss are reported with every steady state.
 
 Modules, each importing only from those before it:
 
-* :mod:`~vibroadhesion.simulation.model`: the nondimensional model (derivation), its parameters
-  (:class:`BaseExcitation`, :class:`SpringFixation`), the contact kernel and the static state;
+* :mod:`~vibroadhesion.simulation.model`: the nondimensional model (derivation), the constants of a
+  :class:`vibroadhesion.core.problem.Problem`, the contact kernel and the static state;
 * :mod:`~vibroadhesion.simulation.integrators`: one period in scaled variables (right-hand sides,
   Jacobians) and the choice between the Fortran DOP853 and :func:`scipy.integrate.solve_ivp`;
 * :mod:`~vibroadhesion.simulation.orbits`: a period as a :class:`~vibroadhesion.core.records.SteadyState`
@@ -18,9 +18,7 @@ Layer 3: imports from the layers below (numerics, core, models).
 """
 
 from vibroadhesion.simulation.model import (
-    BaseExcitation,
     NoStaticContactError,
-    SpringFixation,
     StaticState,
     static_state,
 )
@@ -28,9 +26,7 @@ from vibroadhesion.simulation.orbits import Transient, transient
 from vibroadhesion.simulation.shooting import steady_state
 
 __all__ = [
-    "BaseExcitation",
     "NoStaticContactError",
-    "SpringFixation",
     "StaticState",
     "Transient",
     "static_state",

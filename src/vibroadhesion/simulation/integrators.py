@@ -403,7 +403,7 @@ def v_scale_estimate(model: Model, abar: float) -> float:
     tau = np.linspace(0.0, TWO_PI, 257)
     d = model.deltabar0 - model.eps * np.sin(tau)
     gap = np.maximum(abar * abar - d, 1e-150)
-    law = model.excitation.law
+    law = model.problem.law
     x = np.clip(law.speed(gap * gap / abar), -SPEED_CAP * model.rate, SPEED_CAP * model.rate)
     u = np.concatenate([[0.0], np.cumsum(0.5 * (x[1:] + x[:-1]) * np.diff(tau))])
     frozen = 0.5 * float(u.max() - u.min())

@@ -3,8 +3,8 @@
 The asymptotic models of the paper replace the contact dynamics by averages (Bogoliubov,
 Eqs. 14–19) and first harmonics (Eqs. 25–36). The sub-package :mod:`vibroadhesion.simulation`
 integrates the model itself and finds its periodic steady state by shooting, so that every
-asymptotic formula can be checked against it. This module holds the model: its parameters
-(:class:`BaseExcitation`, :class:`SpringFixation`), the contact kernel of Eqs. (4')–(6')
+asymptotic formula can be checked against it. This module holds the model: the constants
+of a :class:`vibroadhesion.core.problem.Problem` (:class:`Model`), the contact kernel of Eqs. (4')–(6')
 (:func:`contact_kernel`), the constants of the right-hand side (:class:`Model`) and the static
 state (:func:`static_state`).
 
@@ -83,15 +83,13 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
-from vibroadhesion.core.groups import contact_radius_ratio
-from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.problem import Problem
 
 Array = NDArray[np.float64]
 
@@ -103,73 +101,6 @@ _SATURATION_SHARPNESS = 8.0
 _TINY_EXCESS = 1e-300
 #: For n > 1, dx/dPhi is evaluated no closer to Phi = 1 than this excess (it diverges there).
 _SINGULAR_EXCESS = 1e-12
-
-
-@dataclass(frozen=True)
-class BaseExcitation:
-    """The contact and its rigid-base excitation h = h0 + h1 sin(omega t) (Eqs. 4–7, 11).
-
-    ``eta1`` = h1/R (Eq. 65), ``omega_check`` = omega R/v0 (Eq. 105), ``chi0`` of Eq. (64), the
-    rate law, and ``deltabar0`` = (hhat - h0) R/a_o^2 (0 for the nominal point contact, Eq. 78).
-    """
-
-    law: GentSchultz
-    chi0: float
-    eta1: float
-    omega_check: float
-    deltabar0: float = 0.0
-
-    def __post_init__(self) -> None:
-        """Reject a law other than Gent–Schultz (Eqs. 73–75) and non-finite or non-positive scales."""
-        if not isinstance(self.law, GentSchultz):
-            raise TypeError("the simulation implements the Gent–Schultz law (Eqs. 73–75)")
-        if not (math.isfinite(self.chi0) and self.chi0 > 0):
-            raise ValueError(f"chi0 must be positive, got {self.chi0}")
-        if not (math.isfinite(self.eta1) and self.eta1 >= 0):
-            raise ValueError(f"eta1 must be finite and non-negative, got {self.eta1}")
-        if not (math.isfinite(self.omega_check) and self.omega_check > 0):
-            raise ValueError(f"omega_check must be positive, got {self.omega_check}")
-        if not math.isfinite(self.deltabar0):
-            raise ValueError(f"deltabar0 must be finite, got {self.deltabar0}")
-
-    @property
-    def contact_scale(self) -> float:
-        """c_o = a_o/R."""
-        return contact_radius_ratio(self.chi0)
-
-    @property
-    def displacement_amplitude(self) -> float:
-        """eps = h1 R/a_o^2 = eta1/c_o^2, the base amplitude in units of a_o^2/R."""
-        return self.eta1 / self.contact_scale**2
-
-    @property
-    def speed_scale(self) -> float:
-        """omega_check c_o = omega a_o/v0: d abar/d tau = x / (omega_check c_o), Eq. (6')."""
-        return self.omega_check * self.contact_scale
-
-
-@dataclass(frozen=True)
-class SpringFixation:
-    """Spring–dashpot fixation of an indenter of mass m (Eqs. 2, 3, 65, 66, 81, 97).
-
-    ``kappa`` = k/(E* R), ``zeta`` = c/(2 sqrt(k m)), ``nu0`` = v0/(omega0 R), ``mu`` = m g/(E* R^2).
-    """
-
-    kappa: float
-    zeta: float
-    nu0: float
-    mu: float = 0.0
-
-    def __post_init__(self) -> None:
-        """Reject kappa, nu0 <= 0 and zeta, mu < 0 (Eqs. 65, 66, 97), and non-finite values."""
-        for name in ("kappa", "nu0"):
-            value = getattr(self, name)
-            if not (math.isfinite(value) and value > 0):
-                raise ValueError(f"{name} must be positive, got {value}")
-        for name in ("zeta", "mu"):
-            value = getattr(self, name)
-            if not (math.isfinite(value) and value >= 0):
-                raise ValueError(f"{name} must be finite and non-negative, got {value}")
 
 
 class NoStaticContactError(ValueError):
@@ -240,30 +171,33 @@ def contact_kernel(
 class Model:
     """Constants of the nondimensional model (module docstring) for one parameter point."""
 
-    def __init__(self, excitation: BaseExcitation, fixation: SpringFixation | None, contact_loss_abar: float):
-        """The constants of Eqs. (3'), (6') and (7); ``fixation=None`` is the rigid fixation.
+    def __init__(self, problem: Problem, contact_loss_abar: float):
+        """The constants of Eqs. (3'), (6') and (7) for a rigid or compliant fixation (a free one is a ValueError).
 
         ``contact_loss_abar``: the abar below which the contact counts as lost (module docstring).
         """
         if not (0 < contact_loss_abar < 1):
             raise ValueError(f"contact_loss_abar must lie in (0, 1), got {contact_loss_abar}")
-        self.excitation, self.fixation = excitation, fixation
-        self.inv_n = 1.0 / excitation.law.n
-        self.rate = excitation.speed_scale
-        self.eps = excitation.displacement_amplitude
-        self.deltabar0 = excitation.deltabar0
+        fixation = problem.fixation
+        if fixation.kind == "free":
+            raise ValueError("fixation: the simulation implements the rigid and the compliant kinds, not free")
+        self.problem = problem
+        self.inv_n = 1.0 / problem.law.n
+        self.rate = problem.speed_scale
+        self.eps = problem.etahat
+        self.deltabar0 = problem.base_offset
         self.log_cap = math.log(SPEED_CAP * self.rate)
         self.contact_loss_abar = contact_loss_abar
-        self.compliant = fixation is not None
+        self.compliant = not fixation.is_rigid
         self.dim = 3 if self.compliant else 1
         # For n > 1 the variational equations have an unbounded (integrable) coefficient at the
         # turning points that no error-controlled integrator resolves: Psi by differences instead.
-        self.variational = excitation.law.n <= 1.0
-        if fixation is not None:
-            c_o = excitation.contact_scale
+        self.variational = problem.law.n <= 1.0
+        if self.compliant:
+            c_o = problem.c_o
             self.force_offset = fixation.mu / (fixation.kappa * c_o**2)
             self.compliance = c_o / fixation.kappa
-            self.omega_bar = excitation.omega_check * fixation.nu0
+            self.omega_bar = fixation.omega_bar(problem.omega_check)
             self.zeta = fixation.zeta
 
 
@@ -293,19 +227,19 @@ def _spring_static_excess(abar: float, d0: float, stiffness: float, cube: float,
     return stiffness * (_jkr_displacement(abar) - d0) + cube * _jkr_force(abar) - mu
 
 
-def static_state(excitation: BaseExcitation, fixation: SpringFixation | None = None) -> StaticState:
+def static_state(problem: Problem) -> StaticState:
     """Static equilibrium (Eqs. A.4–A.7): the largest root of g(a) = 0 (module docstring).
 
     Raises :class:`NoStaticContactError` when there is no static contact (a tensile preset
     beyond the JKR pull-off of the displacement-controlled assembly).
     """
-    d0 = excitation.deltabar0
+    d0, fixation = problem.base_offset, problem.fixation
     excess: Callable[..., float]
     args: tuple[float, ...]
-    if fixation is None:
+    if fixation.is_rigid:
         excess, args = _rigid_static_excess, (d0,)
     else:
-        c_o = excitation.contact_scale
+        c_o = problem.c_o
         excess, args = _spring_static_excess, (d0, fixation.kappa * c_o**2, c_o**3, fixation.mu)
     hi = 2.0
     while excess(hi, *args) <= 0:
@@ -316,7 +250,7 @@ def static_state(excitation: BaseExcitation, fixation: SpringFixation | None = N
         if lo < 1e-9:
             raise NoStaticContactError(f"no static contact for deltabar0 = {d0} (Eqs. A.4–A.7)")
     abar = brentq(excess, lo, lo / 0.9, args=args, xtol=1e-15, rtol=4 * np.finfo(float).eps)
-    if fixation is None:
+    if fixation.is_rigid:
         # The stable branch of displacement control is a > 4^(-2/3) where s is increasing.
         if abar < 4.0 ** (-2.0 / 3.0):
             raise NoStaticContactError(f"deltabar0 = {d0} is beyond the JKR fixed-grip pull-off (-0.4725)")
@@ -330,7 +264,7 @@ def absolute_start(model: Model, state: ArrayLike | None) -> Array:
     Raises :class:`ValueError` unless ``state`` holds ``model.dim`` finite numbers with abar > 0.
     """
     if state is None:
-        st = static_state(model.excitation, model.fixation)
+        st = static_state(model.problem)
         return np.array([st.xbar, 0.0, st.abar] if model.compliant else [st.abar])
     start = np.asarray(state, dtype=float).ravel()
     if start.size != model.dim or not np.all(np.isfinite(start)) or not start[-1] > 0:

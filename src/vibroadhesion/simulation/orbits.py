@@ -34,6 +34,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from vibroadhesion.core.groups import PHAT_JKR
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.records import OrbitDiagnostics, SteadyState, SteadyStatus
 from vibroadhesion.simulation.integrators import (
     IntegrationError,
@@ -50,9 +51,7 @@ from vibroadhesion.simulation.model import (
     SPEED_CAP,
     TWO_PI,
     Array,
-    BaseExcitation,
     Model,
-    SpringFixation,
     absolute_start,
 )
 
@@ -215,7 +214,7 @@ def _frozen_drift(model: Model, abar: float, deltabar_mean: float, amplitude: fl
     cap = SPEED_CAP * model.rate
     x = np.full_like(tau, cap)
     valid = gap > 0
-    x[valid] = model.excitation.law.speed(np.maximum(gap[valid] ** 2 / abar, 1e-300))
+    x[valid] = model.problem.law.speed(np.maximum(gap[valid] ** 2 / abar, 1e-300))
     return float(np.mean(np.clip(x, -cap, cap)))
 
 
@@ -279,8 +278,7 @@ def frozen_start(model: Model) -> Array | None:
 
 
 def transient(
-    excitation: BaseExcitation,
-    fixation: SpringFixation | None = None,
+    problem: Problem,
     *,
     periods: int,
     initial_state: ArrayLike | None = None,
@@ -288,7 +286,7 @@ def transient(
     integrator: Integrator = "auto",
     contact_loss_abar: float = 1e-3,
 ) -> Transient:
-    """Brute-force integration from the static state (or ``initial_state``) over ``periods`` periods.
+    """Brute-force integration of ``problem`` from the static state (or ``initial_state``) over ``periods`` periods.
 
     The reference the shooting is checked against; each period is integrated from the state the
     previous one ended in (the front displacement v is re-based every period, so abar keeps
@@ -296,7 +294,7 @@ def transient(
     """
     if periods < 1:
         raise ValueError("periods must be at least 1")
-    model = Model(excitation, fixation, contact_loss_abar)
+    model = Model(problem, contact_loss_abar)
     state = absolute_start(model, initial_state)
     integrators = Integrators(integrator, rtol)
     states = [state]

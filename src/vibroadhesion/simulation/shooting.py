@@ -57,6 +57,7 @@ from typing import cast
 import numpy as np
 from numpy.typing import ArrayLike
 
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.records import SteadyState
 from vibroadhesion.simulation.integrators import (
     IntegrationError,
@@ -71,7 +72,7 @@ from vibroadhesion.simulation.integrators import (
     v_scale_estimate,
     x_scale,
 )
-from vibroadhesion.simulation.model import Array, BaseExcitation, Model, SpringFixation, absolute_start
+from vibroadhesion.simulation.model import Array, Model, absolute_start
 from vibroadhesion.simulation.orbits import MAX_ABAR, failure_record, frozen_start, summarise
 
 #: Central-difference step of the one-period map in the scaled coordinates (n > 1).
@@ -391,8 +392,7 @@ def _shoot_compliant(model: Model, start: Array, integrators: Integrators, max_i
 
 
 def steady_state(
-    excitation: BaseExcitation,
-    fixation: SpringFixation | None = None,
+    problem: Problem,
     *,
     initial_state: ArrayLike | None = None,
     speed_range: tuple[float, float] | None = None,
@@ -401,9 +401,9 @@ def steady_state(
     contact_loss_abar: float = 1e-3,
     max_iterations: int = 40,
 ) -> SteadyState:
-    """Periodic steady state of the full model by shooting on the one-period map.
+    """Periodic steady state of the full model for ``problem`` by shooting on the one-period map.
 
-    ``fixation=None`` is the rigid fixation. ``initial_state`` (layout of
+    The fixation (rigid or compliant) is ``problem.fixation``. ``initial_state`` (layout of
     ``OrbitDiagnostics.start_state``) defaults to the static state (Eq. 10); a continuation passes the
     previous orbit's ``orbit.start_state``. ``speed_range`` = (lo, hi) is the range of |adot|/v0 in which
     the rate law was characterised. ``integrator``: "auto" (see :class:`Integrators`),
@@ -411,7 +411,7 @@ def steady_state(
     method name for everything. Numerical failure and contact loss are returned as the
     ``status`` of the record, never as numbers.
     """
-    model = Model(excitation, fixation, contact_loss_abar)
+    model = Model(problem, contact_loss_abar)
     start = absolute_start(model, initial_state)
     integrators = Integrators(integrator, rtol)
     try:

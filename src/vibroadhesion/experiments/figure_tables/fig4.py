@@ -11,7 +11,7 @@ from vibroadhesion.core import levels
 from vibroadhesion.core.records import Pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
-FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "J0", "ratio", "pulloff_mN"]
+FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio", "pulloff_mN"]
 
 
 def fig4_table(
@@ -26,9 +26,9 @@ def fig4_table(
 
     In the registry's Fig. 4 order (:func:`vibroadhesion.core.levels.fig4_names`): the frequency-independent
     curves (leading order, Eqs. 71–72; the exact high-frequency limit with the paper's criterion
-    a_m = a_cr, :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`, whose J0 column
-    is sqrt(w_eff/w0)) with frequency NaN, then the frequency-dependent ones (refined, Eq. 106) at each
-    test frequency.
+    a_m = a_cr, :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`) with frequency NaN,
+    then the frequency-dependent ones (refined, Eq. 106) at each test frequency. Column ``sqrt_w_eff_ratio``
+    is sqrt(w_eff/w0) at detachment: J0(Abar_cr) for the J-integral levels, alpha* for exact averaging.
     """
     frames = []
     for model in levels.fig4_names():
@@ -44,5 +44,6 @@ def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: Pulloff, 
     """One curve of Fig. 4: the record's Abar_cr, sqrt(w_eff/w0), P_cr/P_cr^JKR and |P_cr| in mN (Eqs. 70-71)."""
     return pd.DataFrame(
         {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.Abar_cr,
-         "J0": pred.sqrt_w_eff_ratio, "ratio": pred.pulloff_ratio, "pulloff_mN": pulloff_mN(pred, w0, radius)}
+         "sqrt_w_eff_ratio": pred.sqrt_w_eff_ratio, "pulloff_ratio": pred.pulloff_ratio,
+         "pulloff_mN": pulloff_mN(pred, w0, radius)}
     )

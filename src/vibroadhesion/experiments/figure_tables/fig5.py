@@ -6,30 +6,33 @@ Refined model (Eqs. 87, 90-96), traced by continuation.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import replace
 
 import numpy as np
 import pandas as pd
 
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models.compliant import CompliantFixation, ResponseCurve, static_abar_m, trace_response_curve
+from vibroadhesion.models.compliant import ResponseCurve, static_abar_m, trace_response_curve
 
 FIG5_COLUMNS = ["chi0", "eta1", "nu0", "zeta", "kappa", "mu", "branch", "omega_bar", "Abar", "abar_m", "A_over_am"]
 FIG5_MARKER_COLUMNS = ["kind", "frequency_hz", *FIG5_COLUMNS]
 FIG5_COUNT_COLUMNS = ["zeta", "kappa", "omega_bar", "solutions"]
 
 
-def _fig5_rows(p: CompliantFixation, branch: Sequence[str], x: np.ndarray, curve: ResponseCurve) -> pd.DataFrame:
-    return pd.DataFrame({"chi0": p.chi0, "eta1": p.eta1, "nu0": p.nu0, "zeta": p.zeta, "kappa": p.kappa, "mu": p.mu,
+def _fig5_rows(branch: Sequence[str], x: np.ndarray, curve: ResponseCurve) -> pd.DataFrame:
+    """Rows of fig5.csv at points x = (ln omega_bar, ln abar_m, ln Abar) of ``curve`` (Eqs. 87, 90, 98 corrected)."""
+    p = curve.fixation
+    return pd.DataFrame({"chi0": curve.chi0, "eta1": curve.eta1, "nu0": p.nu0, "zeta": p.zeta, "kappa": p.kappa,
+                         "mu": p.mu,
                          "branch": branch, "omega_bar": np.exp(x[:, 0]), "Abar": np.exp(x[:, 2]),
                          "abar_m": np.exp(x[:, 1]), "A_over_am": curve.a_over_am(x)})[FIG5_COLUMNS]
 
 
 def fig5_tables(
-    base: CompliantFixation, kappas: Sequence[float], zetas: Sequence[float], n: float,
+    fixations: Sequence[Fixation], chi0: float, eta1: float, n: float,
     experiment_omega_bar: Mapping[float, float], omega_bar_range: tuple[float, float], count_points: int,
 ) -> tuple[pd.DataFrame, pd.DataFrame, pd.DataFrame]:
-    """Fig. 5 for every (kappa, zeta).
+    """Fig. 5 for every compliant fixation (kappa, zeta, nu0, mu) at chi0 (Eq. 64) and eta1 = h1/R (Eq. 65).
 
     The traced curves, the markers (folds, test frequencies), and the number of solutions on a log grid of
     omega_bar.
@@ -42,26 +45,24 @@ def fig5_tables(
     law = GentSchultz(n)
     curves, markers, counts = [], [], []
     grid = np.geomspace(*omega_bar_range, count_points)
-    for kappa in kappas:
-        for zeta in zetas:
-            p = replace(base, kappa=kappa, zeta=zeta)
-            curve = trace_response_curve(p, law, omega_bar_range)
-            names = ("lower", "upper") if len(curve.pieces) == 2 else ("full",)
-            for name, piece in zip(names, curve.pieces, strict=True):
-                turns = np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0])
-                segment = np.concatenate([[0], np.cumsum(turns)])
-                curves.append(_fig5_rows(p, [f"{name}-{k}" for k in segment], piece.points, curve))
-            if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
-                anti = np.array([[0.0, np.log(static_abar_m(p)), -np.inf]])
-                curves.append(_fig5_rows(p, ["anti-resonance"], anti, curve))
-            markers.append(_fig5_rows(p, ["fold"] * len(curve.folds), curve.folds, curve)
-                           .assign(kind="fold", frequency_hz=np.nan))
-            for f, omega_bar in sorted(experiment_omega_bar.items()):
-                solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)]
-                                      for am, a in curve.solutions_at(omega_bar, law)])
-                markers.append(_fig5_rows(p, ["experiment"] * len(solutions), solutions.reshape(-1, 3), curve)
-                               .assign(kind="experiment", frequency_hz=f))
-            counts.append(pd.DataFrame({"zeta": zeta, "kappa": kappa, "omega_bar": grid,
-                                        "solutions": [curve.count_at(w) for w in grid]}))
+    for p in fixations:
+        curve = trace_response_curve(p, chi0, eta1, law, omega_bar_range)
+        names = ("lower", "upper") if len(curve.pieces) == 2 else ("full",)
+        for name, piece in zip(names, curve.pieces, strict=True):
+            turns = np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0])
+            segment = np.concatenate([[0], np.cumsum(turns)])
+            curves.append(_fig5_rows([f"{name}-{k}" for k in segment], piece.points, curve))
+        if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
+            anti = np.array([[0.0, np.log(static_abar_m(p, chi0)), -np.inf]])
+            curves.append(_fig5_rows(["anti-resonance"], anti, curve))
+        markers.append(_fig5_rows(["fold"] * len(curve.folds), curve.folds, curve)
+                       .assign(kind="fold", frequency_hz=np.nan))
+        for f, omega_bar in sorted(experiment_omega_bar.items()):
+            solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)]
+                                  for am, a in curve.solutions_at(omega_bar, law)])
+            markers.append(_fig5_rows(["experiment"] * len(solutions), solutions.reshape(-1, 3), curve)
+                           .assign(kind="experiment", frequency_hz=f))
+        counts.append(pd.DataFrame({"zeta": p.zeta, "kappa": p.kappa, "omega_bar": grid,
+                                    "solutions": [curve.count_at(w) for w in grid]}))
     return (pd.concat(curves, ignore_index=True), pd.concat(markers, ignore_index=True)[FIG5_MARKER_COLUMNS],
             pd.concat(counts, ignore_index=True)[FIG5_COUNT_COLUMNS])

@@ -14,7 +14,7 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 
 FIG6_COLUMNS = ["h1_um", "omega_check", "Abar", "abar_m", "w_eff_ratio", "A_over_am"]
-FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "ratio"]
+FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "pulloff_ratio"]
 
 
 def fig6_table(
@@ -40,5 +40,5 @@ def fig7_table(
     return pd.DataFrame(
         {"h1_um": np.broadcast_to(h1, est.Abar_cr.shape).ravel(),
          "omega_check": np.broadcast_to(omega_check, est.Abar_cr.shape).ravel(),
-         "Abar_cr": est.Abar_cr.ravel(), "ratio": est.pulloff_ratio.ravel()}
+         "Abar_cr": est.Abar_cr.ravel(), "pulloff_ratio": est.pulloff_ratio.ravel()}
     )[FIG7_COLUMNS]

@@ -8,28 +8,16 @@ import numpy as np
 
 from vibroadhesion.core import groups
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
-from vibroadhesion.models.compliant import CompliantFixation
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.data import Setup, SetupValue
-from vibroadhesion.pipeline.steps.inputs import rig, setup_entry, setup_number
+from vibroadhesion.pipeline.data import Setup
+from vibroadhesion.pipeline.steps.inputs import rig, setup_fixations, setup_number
 
 
-def _floats(value: SetupValue) -> list[float]:
-    return [float(x) for x in np.atleast_1d(value)]
-
-
-def compliant_base(setup: Setup, params: dict[str, float], chi0: float) -> tuple[CompliantFixation, dict[float, float]]:
-    """Fig. 5's base parameters at the figure's amplitude.
-
-    chi0, eta1 = h1/R, nu0 = v0/(omega0 R), mu (Eqs. 64-66), with kappa = 1 and zeta = 0 to be
-    replaced, and omega_bar = omega/omega0 at each test frequency.
-    """
+def compliant_case(setup: Setup) -> tuple[float, dict[float, float]]:
+    """Fig. 5's amplitude eta1 = h1/R (Eq. 65), and omega_bar = omega/omega0 at each test frequency (Eq. 65)."""
     omega0 = setup_number(setup, "fixation.natural_frequency")
     h1_um = setup_number(setup, "test_conditions.fig5_amplitude")
-    base = CompliantFixation(chi0=chi0, eta1=float(groups.eta1(h1_um * 1e-6, setup.radius)),
-                             nu0=groups.nu0(params["v0"], omega0, setup.radius), kappa=1.0,
-                             mu=setup_number(setup, "fixation.weight_ratio_mu"), zeta=0.0)
-    return base, {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
+    return float(groups.eta1(h1_um * 1e-6, setup.radius)), {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
 
 
 def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, markers_out: str | Path,
@@ -39,11 +27,9 @@ def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, mar
     Folds, the test frequencies, and the number of solutions on ``count_points`` log-spaced omega_bar.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
-    base, experiments = compliant_base(setup, params, chi0)
-    kappas = _floats(setup_entry(setup, "fixation.stiffness_ratio_kappa"))
-    zetas = _floats(setup_entry(setup, "fixation.damping_ratio_zeta"))
-    curves, markers, counts = fig5_tables(base, kappas, zetas, params["n"], experiments,
-                                          (omega_bar_min, omega_bar_max), count_points)
+    eta1, experiments = compliant_case(setup)
+    curves, markers, counts = fig5_tables(setup_fixations(setup, params["v0"], "fig5"), chi0, eta1, params["n"],
+                                          experiments, (omega_bar_min, omega_bar_max), count_points)
     write_csv(curves, out)
     write_csv(markers, markers_out)
     write_csv(counts, counts_out)

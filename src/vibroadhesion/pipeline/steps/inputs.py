@@ -4,9 +4,16 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
+from typing import Literal
+
+import numpy as np
 
 from vibroadhesion.core import groups
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.pipeline.data import Setup, SetupValue, read_canonical_setup
+
+#: Which fixations of data/setup.yaml a step needs (:func:`setup_fixations`).
+FixationCase = Literal["rigid", "compliant", "fig5"]
 
 
 def fitted(fit_json: str | Path, model: str | None = None) -> dict[str, float]:
@@ -44,3 +51,32 @@ def setup_number(setup: Setup, key: str) -> float:
     if isinstance(value, tuple):
         raise ValueError(f"the entry {key} in data/setup.yaml must be one number, not a list")
     return value
+
+
+def setup_floats(setup: Setup, key: str) -> list[float]:
+    """The numbers of an optional entry ``"group.entry"`` (:func:`setup_entry`), one or a list, as a list."""
+    return [float(x) for x in np.atleast_1d(setup_entry(setup, key))]
+
+
+def setup_fixations(setup: Setup, v0: float, case: FixationCase) -> list[Fixation]:
+    """The fixations of data/setup.yaml's group ``fixation`` (Eqs. 65, 66, 81, 97): the one place they are built.
+
+    ``"rigid"``: the rigid fixation. ``"compliant"``: the simulated compliant case
+    (``simulated_stiffness_ratio_kappa``, ``simulated_damping_ratio_zeta``) of the validation sweep and the
+    virtual pull-off. ``"fig5"``: every (kappa, zeta) of ``stiffness_ratio_kappa`` x ``damping_ratio_zeta``,
+    kappa outermost (Fig. 5). nu0 = v0/(omega0 R) with omega0 = ``natural_frequency`` and the fitted ``v0``,
+    mu = ``weight_ratio_mu``. A ValueError names a missing entry or an unknown case.
+    """
+    if case == "rigid":
+        return [Fixation.rigid()]
+    if case not in ("compliant", "fig5"):
+        raise ValueError(f"case must be 'rigid', 'compliant' or 'fig5', got {case!r}")
+    nu0 = groups.nu0(v0, setup_number(setup, "fixation.natural_frequency"), setup.radius)
+    mu = setup_number(setup, "fixation.weight_ratio_mu")
+    if case == "compliant":
+        pairs = [(setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
+                  setup_number(setup, "fixation.simulated_damping_ratio_zeta"))]
+    else:
+        pairs = [(kappa, zeta) for kappa in setup_floats(setup, "fixation.stiffness_ratio_kappa")
+                 for zeta in setup_floats(setup, "fixation.damping_ratio_zeta")]
+    return [Fixation.compliant(kappa, zeta, nu0, mu) for kappa, zeta in pairs]

@@ -1,29 +1,104 @@
-"""Steps of the report rules.
+"""Step of the report rules: the pages of one index, rendered in one process with one kernel.
 
-One page (notebook executed by papermill, exported to HTML by nbconvert, in one process) and the index of a target's
-pages.
+Each page is a notebook executed by papermill and exported to HTML by nbconvert. Starting a Jupyter
+kernel, and importing pandas and matplotlib in it, costs about as much as executing a page, so the
+pages of one index share a kernel: before each page its namespace is reset to that of a fresh kernel
+(``InteractiveShell.reset(new_session=True)``: user variables gone, execution count back to 1), so
+a page cannot read what an earlier one defined and its executed notebook is the same as in a kernel
+of its own. Modules imported by an earlier page stay imported, as in any Python session.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 
 import nbconvert
+import nbformat
 import papermill
+from jupyter_client.manager import KernelManager
 
 from vibroadhesion.pipeline.atomic import atomic_path
+from vibroadhesion.pipeline.pages import write_index
+
+#: The tag (and, here, the cell id) of the cell in which papermill injects a page's parameters.
+INJECTED = "injected-parameters"
+
+#: The code that gives a running IPython kernel the namespace of a fresh one.
+RESET = "get_ipython().reset(new_session=True, aggressive=False)"
 
 
-def page(notebook: str | Path, executed: str | Path, html: str | Path, parameters: Mapping[str, str]) -> None:
-    """Execute ``notebook`` and write the executed notebook and its HTML page.
+@dataclass(frozen=True)
+class Page:
+    """One report page: the notebook, where its executed copy and its HTML go, and its papermill parameters."""
 
-    ``parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell; the
-    kernel is a fresh one, run from the working directory.
+    notebook: Path
+    executed: Path
+    html: Path
+    parameters: Mapping[str, str]
+
+
+@contextmanager
+def shared_kernel(timeout: float = 60.0) -> Iterator[KernelManager]:
+    """A python3 kernel started in the working directory, shut down on exit."""
+    manager = KernelManager(kernel_name="python3")
+    manager.start_kernel(cwd=".")
+    try:
+        client = manager.client()
+        client.start_channels()
+        client.wait_for_ready(timeout=timeout)
+        client.stop_channels()
+        yield manager
+    finally:
+        manager.shutdown_kernel(now=True)
+
+
+def reset_namespace(manager: KernelManager, timeout: float = 60.0) -> None:
+    """Give the kernel of ``manager`` the namespace of a fresh kernel (:data:`RESET`), or raise RuntimeError."""
+    client = manager.client()
+    client.start_channels()
+    try:
+        client.execute(RESET, silent=True, store_history=False)
+        reply = client.get_shell_msg(timeout=timeout)
+    finally:
+        client.stop_channels()
+    if reply["content"]["status"] != "ok":
+        raise RuntimeError(f"kernel reset failed: {reply['content'].get('evalue', reply['content']['status'])}")
+
+
+def render_page(page: Page, manager: KernelManager) -> None:
+    """Execute ``page.notebook`` in the kernel of ``manager`` and write the executed notebook and its HTML page.
+
+    ``page.parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell, in a cell
+    whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page.
     """
-    with atomic_path(executed) as tmp:
-        nb = papermill.execute_notebook(str(notebook), str(tmp), parameters=dict(parameters), kernel_name="python3",
-                                        cwd=".", progress_bar=False)
+    with atomic_path(page.executed) as tmp:
+        nb = papermill.execute_notebook(str(page.notebook), str(tmp), parameters=dict(page.parameters),
+                                        kernel_name="python3", cwd=".", progress_bar=False, km=manager)
+        for cell in nb.cells:
+            if INJECTED in cell.metadata.get("tags", ()):
+                cell.id = INJECTED
+        nbformat.write(nb, tmp)
     body, _ = nbconvert.HTMLExporter().from_notebook_node(nb)
-    with atomic_path(html) as tmp:
+    with atomic_path(page.html) as tmp:
         tmp.write_text(body, encoding="utf-8")
+
+
+def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str | Path], html: Sequence[str | Path],
+           index: str | Path) -> None:
+    """Render the pages of one index in one kernel, each from a fresh namespace, then write the ``index`` page.
+
+    ``parameters`` maps each page (the stem of ``notebooks/<page>.ipynb``) to its papermill parameters, in the
+    order of ``executed`` and ``html``, the paths of its executed notebook and of its HTML page.
+    """
+    if not len(parameters) == len(executed) == len(html):
+        raise ValueError(f"{len(parameters)} pages, {len(executed)} executed notebooks, {len(html)} HTML pages")
+    pages = [Page(Path(f"notebooks/{stem}.ipynb"), Path(nb), Path(page), values)
+             for (stem, values), nb, page in zip(parameters.items(), executed, html, strict=True)]
+    with shared_kernel() as manager:
+        for page in pages:
+            reset_namespace(manager)
+            render_page(page, manager)
+    write_index(index)

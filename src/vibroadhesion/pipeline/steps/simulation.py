@@ -12,13 +12,11 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.core import groups
 from vibroadhesion.experiments import validation, virtual_pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_number
-from vibroadhesion.simulation import SpringFixation
+from vibroadhesion.pipeline.steps.inputs import FixationCase, experiment_omega_check, rig, setup_fixations
 
 
 def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1_um: float,
@@ -46,7 +44,7 @@ def rigid_grid(parts: Sequence[str | Path], out: str | Path) -> None:
     write_csv(grid.sort_values(["h1_um", "omega_check"], kind="stable").reset_index(drop=True), out)
 
 
-def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, fixation: str,
+def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, fixation: FixationCase,
                          frequency_hz: float) -> None:
     """The simulated pull-off at one test frequency, with the predictions.
 
@@ -54,14 +52,9 @@ def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str 
     data/setup.yaml (kappa, zeta; mu, omega0).
     """
     setup, params, _ = rig(setup_json, fit_json)
-    spring = None
-    if fixation == "compliant":
-        nu0 = groups.nu0(params["v0"], setup_number(setup, "fixation.natural_frequency"), setup.radius)
-        spring = SpringFixation(setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
-                                setup_number(setup, "fixation.simulated_damping_ratio_zeta"), nu0,
-                                setup_number(setup, "fixation.weight_ratio_mu"))
+    (case,) = setup_fixations(setup, params["v0"], fixation)
     h1 = np.asarray(setup.amplitudes_um, dtype=float)
     table = virtual_pulloff.pulloff_table(GentSchultzParameters(**params), frequency_hz, h1, radius=setup.radius,
-                                          reduced_modulus=setup.reduced_modulus, fixation=spring,
+                                          reduced_modulus=setup.reduced_modulus, fixation=case,
                                           progress=ProgressBar(len(h1), "amplitudes"))
     write_csv(table, out)

@@ -6,7 +6,6 @@ and down with the simulation.
 
 from __future__ import annotations
 
-from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -16,8 +15,8 @@ from vibroadhesion.experiments import validation
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
-from vibroadhesion.pipeline.steps.fig5 import compliant_base
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_number
+from vibroadhesion.pipeline.steps.fig5 import compliant_case
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_fixations
 
 
 def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | Path, errors_out: str | Path,
@@ -44,12 +43,12 @@ def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Pat
     Fig. 5's ``curve_range`` (Eqs. 87, 90) within the sweep's range, as Fig. 5 draws it.
     """
     setup, params, chi0 = rig(setup_json, fit_json)
-    base, _ = compliant_base(setup, params, chi0)
-    p = replace(base, kappa=setup_number(setup, "fixation.simulated_stiffness_ratio_kappa"),
-                zeta=setup_number(setup, "fixation.simulated_damping_ratio_zeta"))
-    table = validation.compliant_sweep(p, params["n"], list(np.geomspace(omega_bar_min, omega_bar_max, points)),
+    eta1, _ = compliant_case(setup)
+    fixations = setup_fixations(setup, params["v0"], "compliant")
+    table = validation.compliant_sweep(fixations[0], chi0, eta1, params["n"],
+                                       list(np.geomspace(omega_bar_min, omega_bar_max, points)),
                                        ProgressBar(2 * points, "frequencies"))
-    curve, _, _ = fig5_tables(base, [p.kappa], [p.zeta], params["n"], {}, curve_range, 2)
+    curve, _, _ = fig5_tables(fixations, chi0, eta1, params["n"], {}, curve_range, 2)
     write_csv(table, out)
     write_csv(curve[curve["omega_bar"].between(table["omega_bar"].min(), table["omega_bar"].max())], curve_out)
     sim = table[table["model"] == "simulation"]

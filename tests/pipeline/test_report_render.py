@@ -1,0 +1,60 @@
+"""Report rendering: the pages of one index share a kernel, yet each starts from a fresh namespace.
+
+Checked on small notebooks written here, executed in a real kernel (a few seconds).
+"""
+
+from pathlib import Path
+
+import nbformat
+import pytest
+from papermill.exceptions import PapermillExecutionError
+
+from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
+
+
+def _notebook(path: Path, *sources: str) -> Path:
+    """A notebook with a ``parameters`` cell (``value = 0``) followed by code cells ``sources``."""
+    nb = nbformat.v4.new_notebook()
+    parameters = nbformat.v4.new_code_cell("value = 0")
+    parameters.metadata["tags"] = ["parameters"]
+    nb.cells = [parameters, *(nbformat.v4.new_code_cell(s) for s in sources)]
+    nb.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3", "language": "python"}
+    nbformat.write(nb, path)
+    return path
+
+
+def _page(tmp_path: Path, stem: str, *sources: str, value: str = "1") -> Page:
+    notebook = _notebook(tmp_path / f"{stem}.ipynb", *sources)
+    return Page(notebook, tmp_path / f"{stem}.executed.ipynb", tmp_path / f"{stem}.html", {"value": value})
+
+
+def test_a_page_cannot_read_what_an_earlier_page_of_the_same_kernel_defined(tmp_path: Path) -> None:
+    first = _page(tmp_path, "first", "leaked = int(value) + 1", "print(leaked)")
+    second = _page(tmp_path, "second", "print(leaked)")
+    with shared_kernel() as manager:
+        reset_namespace(manager)
+        render_page(first, manager)
+        reset_namespace(manager)
+        with pytest.raises(PapermillExecutionError, match="NameError"):
+            render_page(second, manager)
+    printed = nbformat.read(first.executed, as_version=4).cells[-1].outputs[0]["text"]
+    assert printed == "2\n"  # value = 1 injected, leaked = 2
+
+
+def test_pages_in_a_shared_kernel_equal_pages_in_kernels_of_their_own(tmp_path: Path) -> None:
+    """Same executed cells, outputs and execution counts (1, 2, ...), and the same HTML bytes."""
+    pages = [_page(tmp_path, stem, "import math", "math.sqrt(float(value))", value=v) for stem, v in (("a", "4"), ("b", "9"))]
+    with shared_kernel() as manager:
+        for page in pages:
+            reset_namespace(manager)
+            render_page(page, manager)
+    shared = [(p.html.read_bytes(), nbformat.read(p.executed, as_version=4)) for p in pages]
+    for page, (html, nb) in zip(pages, shared, strict=True):
+        with shared_kernel() as manager:
+            render_page(page, manager)
+        alone = nbformat.read(page.executed, as_version=4)
+        assert page.html.read_bytes() == html
+        assert [c.get("execution_count") for c in nb.cells] == [c.get("execution_count") for c in alone.cells]
+        assert [c.get("outputs") for c in nb.cells] == [c.get("outputs") for c in alone.cells]
+    assert [c.execution_count for c in shared[1][1].cells] == [1, 2, 3, 4]
+    assert shared[1][1].cells[-1].outputs[0]["data"]["text/plain"] == "3.0"
