@@ -3,7 +3,11 @@
 # Rules live in workflow/rules/*.smk and run workflow/scripts/<rule>.py (Snakemake's `script:`), each
 # a few lines calling one function of vibroadhesion.pipeline.steps; settings in workflow/config.yaml
 # (schema-validated; grids and switches only: every physical value is in data/setup.yaml).
+import sys
+
 from snakemake.utils import min_version, validate
+
+from vibroadhesion.core.levels import names
 
 min_version("9.0")
 
@@ -12,6 +16,12 @@ configfile: "workflow/config.yaml"
 
 
 validate(config, "workflow/schemas/config.schema.yaml")
+# The levels that may supply the figures' parameters are the registry's (vibroadhesion.core.levels).
+if config["fit"]["figures_use"] not in names("figures"):
+    sys.exit(
+        f"workflow/config.yaml: fit.figures_use = {config['fit']['figures_use']!r} is not one of "
+        f"{', '.join(names('figures'))}"
+    )
 
 
 include: "workflow/rules/common.smk"

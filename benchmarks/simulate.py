@@ -27,7 +27,7 @@ from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.simulation import steady_state, transient
 
 CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5
-FIELDS = ("abar_m", "abar", "w_eff_ratio", "pm_over_abs_pjkr")
+FIELDS = ("abar_m", "Abar", "w_eff_ratio", "pm_over_abs_pjkr")
 TRANSIENT_PERIODS = 5
 
 
@@ -62,16 +62,16 @@ def timed(function):
 
 def row(label, problem):
     result, cpu, wall = timed(lambda: steady_state(problem))
-    line = {"case": label, "omega_check": problem.omega_check, "status": result.status,
-            "periods": result.iterations, "cpu_ms": 1e3 * cpu, "wall_ms": 1e3 * wall}
-    if result.status != "converged":
+    line = {"case": label, "omega_check": problem.omega_check, "status": str(result.status),
+            "periods": result.orbit.iterations, "cpu_ms": 1e3 * cpu, "wall_ms": 1e3 * wall}
+    if not result.ok:
         return line
     tight = steady_state(problem, rtol=1e-13)
-    line["self_consistency"] = max(abs(getattr(tight, f) / getattr(result, f) - 1) for f in FIELDS)
-    slowest = float(np.max(np.abs(result.floquet_multipliers)))
+    line["self_consistency"] = max(abs(float(getattr(tight, f) / getattr(result, f)) - 1) for f in FIELDS)
+    slowest = float(np.max(np.abs(result.orbit.floquet_multipliers)))
     needed = math.inf if slowest >= 1 else max(1.0, math.log(1e-10) / math.log(max(slowest, 1e-300)))
     start = time.process_time()
-    transient(problem, periods=TRANSIENT_PERIODS, initial_state=result.start_state)
+    transient(problem, periods=TRANSIENT_PERIODS, initial_state=result.orbit.start_state)
     per_period = (time.process_time() - start) / TRANSIENT_PERIODS
     line.update(multiplier=slowest, transient_periods=needed, transient_s=needed * per_period,
                 speedup=needed * per_period / cpu)
@@ -89,8 +89,8 @@ def format_rows(rows):
             text += (f"{r['self_consistency']:>16.1e}{r['multiplier']:>11.6f}{r['transient_periods']:>18.3g}"
                      f"{r['transient_s']:>12.3g}{r['speedup']:>10.3g}")
         lines.append(text)
-    cpu = [r["cpu_ms"] for r in rows if r["status"] == "converged" and r["case"].startswith("rigid n=0.531")]
-    lines += ["", f"rigid n = 0.531, converged: median {statistics.median(cpu):.1f} ms, max {max(cpu):.1f} ms CPU "
+    cpu = [r["cpu_ms"] for r in rows if r["status"] == "ok" and r["case"].startswith("rigid n=0.531")]
+    lines += ["", f"rigid n = 0.531, ok: median {statistics.median(cpu):.1f} ms, max {max(cpu):.1f} ms CPU "
               f"per steady state ({len(cpu)} cases)"]
     return "\n".join(lines) + "\n"
 

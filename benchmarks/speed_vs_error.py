@@ -2,7 +2,7 @@
 
 Usage: python benchmarks/speed_vs_error.py SETUP_JSON FIT_JSON RIGID_ERRORS_CSV OUT_CSV OUT_TXT OUT_PNG
 
-For each level of :data:`vibroadhesion.experiments.validation.LEVELS` (leading order, refined, exact harmonic
+For each level of role ``validation_rigid`` of :mod:`vibroadhesion.core.levels` (leading order, refined, exact harmonic
 balance, exact averaging, direct simulation) it times the solve of each point (h1 of data/setup.yaml
 x the test frequencies) on this machine, median of 3 per point, and takes the error of that level
 against the simulation at the same points from the validation artefact (largest relative error over
@@ -19,13 +19,15 @@ import time
 import matplotlib.pyplot as plt
 import pandas as pd
 
-from vibroadhesion.core import groups
+from vibroadhesion.core import groups, levels
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.experiments import validation
 from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.data import read_canonical_setup
 from vibroadhesion.pipeline.figures import save_figure
+
+#: The registry's functions this script resolves (vibroadhesion.core.levels): the rigid steady states.
+LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
 
 
 def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:
@@ -39,7 +41,8 @@ def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt:
     errors = pd.read_csv(errors_csv)
     at_tests = errors[errors["omega_check"].isin(tests)]
     rows = []
-    for model, level in validation.LEVELS.items():
+    for model in levels.names("validation_rigid"):
+        level = levels.level(model).steady_state_function()
         times = []
         for eta1, w in points:
             runs = []

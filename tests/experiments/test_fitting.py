@@ -14,7 +14,7 @@ import pytest
 from conftest import AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
 from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
 TRUE = GentSchultzParameters(w0=0.30, n=0.70, v0=20e-6)
@@ -26,7 +26,7 @@ def _rows(frequencies, model: str, *, noise: float = 0.0, seed: int = 0, params=
     """Synthetic rows; noise is Gaussian, relative to each force or (relative=False) to the median force."""
     f = np.repeat(np.asarray(frequencies, dtype=float), len(AMPLITUDES_UM))
     h1 = np.tile(AMPLITUDES_UM, len(frequencies))
-    force = predict_pulloff(model, params, f, h1, **GEOMETRY).pulloff_mN
+    force = pulloff_mN(predict_pulloff(model, params, f, h1, **GEOMETRY), params.w0, RADIUS)
     if noise:
         eps = np.random.default_rng(seed).standard_normal(force.size)
         force = force * (1.0 + noise * eps) if relative else force + noise * float(np.median(force)) * eps
@@ -58,7 +58,7 @@ def test_refined_fit_recovers_true_w0_n_v0_from_noise_free_low_frequency_rows_to
     frequency term of Eq. (106) changes the force by up to 50 %, so v0 is identifiable; 1e-6 relative.
     """
     rows = _rows([0.2, 1.0, 5.0], "refined")
-    lead = predict_pulloff("leading", TRUE, rows["frequency_hz"], rows["h1_um"], **GEOMETRY).pulloff_mN
+    lead = pulloff_mN(predict_pulloff("leading", TRUE, rows["frequency_hz"], rows["h1_um"], **GEOMETRY), TRUE.w0, RADIUS)
     assert np.max(np.abs(rows["pulloff_mN"] / lead - 1)) > 0.1  # v0 matters for these rows
     summary = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
     assert summary["status"] == "fitted"

@@ -18,7 +18,7 @@ from conftest import FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W
 
 from vibroadhesion.experiments import identifiability, virtual_pulloff
 from vibroadhesion.experiments.fitting import fit_gent_schultz
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
 PUBLISHED = GentSchultzParameters(w0=W0, n=N_PUBLISHED, v0=V0)  # Fig. 4 caption
@@ -103,7 +103,8 @@ def test_exact_averaging_fit_recovers_simulation_parameters_within_its_model_err
 
     def relative_residual(w0: float, n: float) -> np.ndarray:
         p = GentSchultzParameters(w0, n, truth.v0)
-        return predict_pulloff(model, p, rows["frequency_hz"], rows["h1_um"], **GEOMETRY).pulloff_mN / rows["pulloff_mN"] - 1
+        pulloff = predict_pulloff(model, p, rows["frequency_hz"], rows["h1_um"], **GEOMETRY)
+        return pulloff_mN(pulloff, w0, RADIUS) / rows["pulloff_mN"] - 1
 
     model_error = np.max(np.abs(relative_residual(truth.w0, truth.n)))
     h = 1e-4

@@ -17,8 +17,9 @@ import pytest
 from conftest import CHI0, ETA1, N_PUBLISHED, NU0, RADIUS, REDUCED_MODULUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.core import groups, jkr
+from vibroadhesion.core import groups, jkr, levels
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.leading_pulloff import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
 from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
 from vibroadhesion.numerics.roots import NoRootError
@@ -39,8 +40,8 @@ def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: floa
     assert residual < 1e-12, f"Abar_cr = {abar!r}: relative residual {residual:.3e}"
     # Eq. (71): the reported amplification is J0(Abar_cr)^2, and pulloff_leading agrees with the scalar solver
     est = pulloff_leading(np.array([eta1]), CHI0, law)
-    assert est.abar_cr[0] == abar
-    assert abs(est.ratio[0] / float(j0**2) - 1) < 1e-12
+    assert est.Abar_cr[0] == abar
+    assert abs(est.pulloff_ratio[0] / float(j0**2) - 1) < 1e-12
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
@@ -69,9 +70,9 @@ def test_eta1_zero_gives_abar_zero_and_ratio_exactly_one() -> None:
     assert critical_abar_refined(0.0, CHI0, 1e6, law) == 0.0
     lead = pulloff_leading(0.0, CHI0, law)
     ref = pulloff_refined(0.0, CHI0, 1e6, law)
-    assert float(lead.abar_cr) == 0.0 and float(ref.abar_cr) == 0.0
-    assert (float(lead.ratio), float(ref.ratio)) == (1.0, 1.0), (
-        f"ratio - 1 = {float(lead.ratio) - 1:.3e} (leading), {float(ref.ratio) - 1:.3e} (refined)"
+    assert float(lead.Abar_cr) == 0.0 and float(ref.Abar_cr) == 0.0
+    assert (float(lead.pulloff_ratio), float(ref.pulloff_ratio)) == (1.0, 1.0), (
+        f"ratio - 1 = {float(lead.pulloff_ratio) - 1:.3e} (leading), {float(ref.pulloff_ratio) - 1:.3e} (refined)"
     )
 
 
@@ -81,9 +82,9 @@ def test_tiny_eta1_gives_ratio_within_1e6_of_one(n: float) -> None:
     law = GentSchultz(n)
     lead = pulloff_leading(1e-9, CHI0, law)
     ref = pulloff_refined(1e-9, CHI0, 1e4, law)
-    assert abs(float(lead.ratio) - 1) < 1e-6
-    assert abs(float(ref.ratio) - 1) < 1e-6
-    assert float(lead.ratio) >= 1 - 1e-14 and float(ref.ratio) >= 1 - 1e-14  # J0 >= 1 (S >= 2)
+    assert abs(float(lead.pulloff_ratio) - 1) < 1e-6
+    assert abs(float(ref.pulloff_ratio) - 1) < 1e-6
+    assert float(lead.pulloff_ratio) >= 1 - 1e-14 and float(ref.pulloff_ratio) >= 1 - 1e-14  # J0 >= 1 (S >= 2)
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
@@ -97,9 +98,9 @@ def test_very_large_eta1_gives_finite_ratio_without_warning(n: float) -> None:
         lead = pulloff_leading(0.05, CHI0, law)
         ref = pulloff_refined(0.05, CHI0, np.array([1e2, 1e6]), law)
     for est in (lead, ref):
-        assert np.all(np.isfinite(est.abar_cr)) and np.all(np.isfinite(est.ratio))
-        assert np.all(est.ratio > 1)
-    assert np.all(ref.ratio <= float(lead.ratio) * (1 + 1e-14))
+        assert np.all(np.isfinite(est.Abar_cr)) and np.all(np.isfinite(est.pulloff_ratio))
+        assert np.all(est.pulloff_ratio > 1)
+    assert np.all(ref.pulloff_ratio <= float(lead.pulloff_ratio) * (1 + 1e-14))
 
 
 @pytest.mark.parametrize(
@@ -136,11 +137,11 @@ def test_refined_ratio_not_above_leading_ratio(n: float) -> None:
     omega = np.array([1e1, 1e3, 1e5, 1e8])[None, :]
     lead = pulloff_leading(eta1[:, 0], CHI0, law)
     ref = pulloff_refined(eta1, CHI0, omega, law)
-    assert ref.ratio.shape == (3, 4)
-    assert np.all(ref.abar_cr <= lead.abar_cr[:, None] * (1 + 1e-13))
-    assert np.all(ref.ratio <= lead.ratio[:, None] * (1 + 1e-14))
+    assert ref.pulloff_ratio.shape == (3, 4)
+    assert np.all(ref.Abar_cr <= lead.Abar_cr[:, None] * (1 + 1e-13))
+    assert np.all(ref.pulloff_ratio <= lead.pulloff_ratio[:, None] * (1 + 1e-14))
     # and increases towards the leading value with omega_check (frequency term shrinks as 1/omega^2)
-    assert np.all(np.diff(ref.abar_cr, axis=1) >= 0)
+    assert np.all(np.diff(ref.Abar_cr, axis=1) >= 0)
 
 
 @pytest.mark.parametrize("n", [0.05, 4.0])
@@ -191,14 +192,15 @@ def _saturating_j_mp(abar: float) -> tuple[mp.mpf, mp.mpf]:
 
 def test_bounded_lhs_rate_law_raises_no_root_error() -> None:
     """Closed-form bound: LHS of Eq. (72) < 1.7 for the Saturating law; eta1 = 1e-2 needs 3 eta1/chi0^2 = 44.8,
-    so there is no root: NoRootError, not a number (also for Eq. 106 with omega_check = inf).
+    so there is no root: NoRootError, not a number (also for Eq. 106 with omega_check = inf); at the level's
+    boundary (pulloff_leading) the status no_solution with NaN numbers.
     """
     law = Saturating()
     assert 3 * 1e-2 / CHI0**2 > 1.7
     with pytest.raises(NoRootError):
         critical_abar_leading(1e-2, CHI0, law)
-    with pytest.raises(NoRootError):
-        pulloff_leading(np.array([1e-6, 1e-2]), CHI0, law)
+    unsolved = pulloff_leading(np.array([1e-6, 1e-2]), CHI0, law)
+    assert unsolved.status.tolist() == ["ok", "no_solution"] and np.all(np.isnan(unsolved.pulloff_ratio[1:]))
     with pytest.raises(NoRootError):
         critical_abar_refined(1e-2, CHI0, math.inf, law)
 
@@ -274,3 +276,23 @@ def test_omega_check_equals_eq105_closed_form() -> None:
     """Eq. (105): omega_check = omega R / v0 with omega = 2 pi f; 200 Hz, R = 51.5 mm, v0 = 44.5 um/s; 1e-15."""
     got = float(groups.omega_check(200.0, V0, RADIUS))
     assert abs(got / (2 * math.pi * 200 * RADIUS / V0) - 1) < 1e-15
+
+
+@pytest.mark.parametrize("model", ["exact_averaging", "exact_averaging_force_minimum"])
+def test_predict_pulloff_solves_sorted_distinct_amplitudes_as_one_direct_call(model: str) -> None:
+    """predict_pulloff solves a frequency-independent level on np.unique(eta1) and scatters back; for sorted,
+    distinct amplitudes (the rig's, Fig. 4's grid) that is the same array, so the same operations give the
+    same bits as the level's own call on eta1 (the route Fig. 4 and the virtual pull-off took before the
+    registry); with repeated amplitudes each copy is the distinct value's result.
+    """
+    params = GentSchultzParameters(W0, N_PUBLISHED, V0)
+    h1_um = np.array([0.0, 20.0, 40.0, 60.0, 80.0, 100.0])
+    chi0 = groups.chi0(W0, REDUCED_MODULUS, RADIUS)
+    direct = levels.level(model).pulloff_function()(h1_um * 1e-6 / RADIUS, chi0, GentSchultz(N_PUBLISHED))
+    routed = predict_pulloff(model, params, 200.0, h1_um, radius=RADIUS, reduced_modulus=REDUCED_MODULUS)
+    for field in ("pulloff_ratio", "Abar_cr", "sqrt_w_eff_ratio", "abar_m"):
+        assert np.array_equal(getattr(routed, field), getattr(direct, field)), field
+    repeated = predict_pulloff(model, params, 200.0, [40.0, 20.0, 40.0], radius=RADIUS, reduced_modulus=REDUCED_MODULUS)
+    distinct = levels.level(model).pulloff_function()(np.array([20.0, 40.0]) * 1e-6 / RADIUS, chi0,
+                                                      GentSchultz(N_PUBLISHED))
+    assert np.array_equal(repeated.pulloff_ratio, distinct.pulloff_ratio[[1, 0, 1]])

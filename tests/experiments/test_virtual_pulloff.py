@@ -34,7 +34,7 @@ def test_high_frequency_simulated_pulloff_equals_exact_averaging_force_minimum()
     simulated = simulated_pulloff(Problem(LAW, CHI0, eta1, 1e8))
     reference = exact_averaging.pulloff_at_force_minimum(eta1, CHI0, LAW)
     assert simulated.status == "pulloff"
-    assert abs(simulated.ratio / float(reference.ratio) - 1) < 1e-4
+    assert abs(simulated.pulloff_ratio / float(reference.pulloff_ratio) - 1) < 1e-4
     assert abs(simulated.abar_m / float(reference.abar_m) - 1) < 1e-2  # flat minimum: the radius is less sharp
 
 
@@ -44,7 +44,7 @@ def test_family_that_loses_contact_before_a_force_extremum_reports_it() -> None:
     """
     result = simulated_pulloff(Problem(LAW, CHI0, 100e-6 / RADIUS, 1e4))
     assert result.status == "contact_loss_before_extremum"
-    assert math.isnan(result.ratio) and math.isnan(result.abar_m)
+    assert math.isnan(result.pulloff_ratio) and math.isnan(result.abar_m)
 
 
 def test_paper_criterion_a_m_equals_a_cr_is_not_where_the_simulated_force_peaks() -> None:
@@ -71,10 +71,10 @@ def test_very_stiff_spring_gives_the_rigid_simulated_pulloff(omega_bar: float) -
     rigid = simulated_pulloff(Problem(LAW, CHI0, eta1, OMEGA_CHECK_200HZ))
     spring = simulated_pulloff(Problem(LAW, CHI0, eta1, OMEGA_CHECK_200HZ, fixation))
     assert rigid.status == spring.status == "pulloff"
-    simulated_effect = spring.ratio / rigid.ratio - 1
+    simulated_effect = spring.pulloff_ratio / rigid.pulloff_ratio - 1
     assert abs(simulated_effect) < 1e-4
-    leading_effect = float(pulloff_leading(eta1, CHI0, LAW, fixation, OMEGA_CHECK_200HZ).ratio
-                           / pulloff_leading(eta1, CHI0, LAW).ratio) - 1
+    leading_effect = float(pulloff_leading(eta1, CHI0, LAW, fixation, OMEGA_CHECK_200HZ).pulloff_ratio
+                           / pulloff_leading(eta1, CHI0, LAW).pulloff_ratio) - 1
     assert 0.7 < simulated_effect / leading_effect < 1.3
 
 
@@ -88,4 +88,4 @@ def test_compliant_family_that_loses_contact_before_a_force_extremum_reports_it(
     result = simulated_pulloff(Problem(LAW, CHI0, 20e-6 / RADIUS, 1e4, fixation))
     assert result.status == "contact_loss_before_extremum"
     assert result.steady_states > 10  # a family, not a loss at the start
-    assert math.isnan(result.ratio) and math.isnan(result.abar_m)
+    assert math.isnan(result.pulloff_ratio) and math.isnan(result.abar_m)

@@ -210,9 +210,9 @@ def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, z
     p = Fixation.compliant(kappa=1e12, zeta=zeta, nu0=NU0, mu=0.0)
     (abar_m, abar), = solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
     rigid = nominal_point_contact(ETA1, omega_bar / NU0, CHI0, LAW)
-    assert abs(abar / float(rigid.abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
+    assert abs(abar / float(rigid.Abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
     (_, abar_cr), = pulloff_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
-    assert abs(abar_cr / float(pulloff_refined(ETA1, CHI0, omega_bar / NU0, LAW).abar_cr) - 1) < 1e-6
+    assert abs(abar_cr / float(pulloff_refined(ETA1, CHI0, omega_bar / NU0, LAW).Abar_cr) - 1) < 1e-6
 
 
 # ----------------------------------------------------------------- kappa -> 0: free indenter, Eqs. (57)-(59)

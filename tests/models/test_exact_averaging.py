@@ -241,10 +241,10 @@ def test_frozen_cycle_is_the_limit_of_the_unaveraged_ode(n: float) -> None:
     for stiffness in (400.0, 800.0):
         sol = nominal_point_contact(etahat * C_O**2, stiffness / C_O, CHI0, law)
         mean, half = periodic_state_by_integration(etahat, n, stiffness)
-        errors.append((mean / float(sol.abar_m) - 1, half * stiffness / float(sol.abar) - 1))
+        errors.append((mean / float(sol.abar_m) - 1, half * stiffness / float(sol.Abar) - 1))
         assert abs(errors[-1][0]) < 1e-2 and abs(errors[-1][1]) < 1e-2, errors
         # A/a_m as returned is the amplitude of the integrated radius over its mean, to the same order
-        assert abs(float(sol.a_over_am) / (half / mean) - 1) < 2e-2
+        assert abs(float(sol.A_over_am) / (half / mean) - 1) < 2e-2
     for k in range(2):
         assert 3 < errors[0][k] / errors[1][k] < 5, errors
 
@@ -273,8 +273,8 @@ def test_nominal_point_contact_solves_alpha_star_equal_abar_m_cubed_half(n: floa
                 signs.append(mp.sign(i_cl - i_op))
         assert signs == [1, -1], (n, k, signs)
         assert abs(float(sol.w_eff_ratio[k]) / alpha**2 - 1) < 1e-14
-        assert abs(float(sol.mean_force_ratio[k]) / (-(8 / 9) * abar_m**3) - 1) < 1e-14
-        assert abs(float(sol.a_over_am[k]) / (float(sol.abar[k]) / (1e6 * C_O * abar_m)) - 1) < 1e-14
+        assert abs(float(sol.pm_over_abs_pjkr[k]) / (-(8 / 9) * abar_m**3) - 1) < 1e-14
+        assert abs(float(sol.A_over_am[k]) / (float(sol.Abar[k]) / (1e6 * C_O * abar_m)) - 1) < 1e-14
 
 
 @pytest.mark.parametrize("etahat", [0.1, 1.58, 7.9, 100.0])
@@ -314,7 +314,7 @@ def test_small_amplitude_agrees_with_the_j_integral_model_in_order_not_constant(
     excess_exact, excess_j = float(exact.w_eff_ratio) - 1, float(j_model.w_eff_ratio) - 1
     assert 0.5 < excess_exact / etahat**2 * (1 + n) < 2  # w_eff - 1 = etahat^2/(1+n) to leading order
     assert abs(excess_exact / excess_j / float(weff_ratio) - 1) < 10 * etahat
-    assert abs(float(exact.abar) / float(j_model.abar) / float(abar_ratio) - 1) < 10 * etahat
+    assert abs(float(exact.Abar) / float(j_model.Abar) / float(abar_ratio) - 1) < 10 * etahat
     if n == 1.0:
         assert abs(float(weff_ratio) - 1) < 1e-15 and abs(float(abar_ratio) - 1) < 1e-15
 
@@ -334,7 +334,7 @@ def test_force_minimum_equals_brent_minimisation_of_the_mean_force(n: float) -> 
         m = max(1.0, math.sqrt(eh))
         opt = minimize_scalar(lambda z: float(mean_state(math.exp(z), e, CHI0, law).mean_force),
                               bounds=(math.log(0.05 * m), math.log(20 * m)), method="bounded", options={"xatol": 1e-12})
-        assert abs(float(fast.ratio[i]) / (opt.fun / -0.75) - 1) < 1e-8
+        assert abs(float(fast.pulloff_ratio[i]) / (opt.fun / -0.75) - 1) < 1e-8
         assert abs(float(fast.abar_m[i]) / math.exp(opt.x) - 1) < 1e-4
 
 
@@ -349,15 +349,15 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
         eta1 = h1 / RADIUS
         first = pulloff_at_critical_radius(eta1, CHI0, law)
         second = pulloff_at_force_minimum(eta1, CHI0, law)
-        assert abs(float(first.abar_m) ** 1.5 / (0.75 * float(first.alpha)) - 1) < 1e-13
-        assert abs(float(first.ratio) / float(first.alpha) ** 2 - 1) < 1e-14
-        assert float(second.ratio) >= float(first.ratio)
+        assert abs(float(first.abar_m) ** 1.5 / (0.75 * float(first.sqrt_w_eff_ratio)) - 1) < 1e-13
+        assert abs(float(first.pulloff_ratio) / float(first.sqrt_w_eff_ratio) ** 2 - 1) < 1e-14
+        assert float(second.pulloff_ratio) >= float(first.pulloff_ratio)
         around = mean_state(float(second.abar_m) * np.array([1 - 1e-3, 1.0, 1 + 1e-3]), eta1, CHI0, law).mean_force
         assert around[1] < around[0] and around[1] < around[2]
-        assert abs(float(around[1]) / -0.75 / float(second.ratio) - 1) < 1e-14
+        assert abs(float(around[1]) / -0.75 / float(second.pulloff_ratio) - 1) < 1e-14
     tiny = 1e-4 * C_O**2
-    assert abs(float(pulloff_at_critical_radius(tiny, CHI0, law).ratio) - 1) < 1e-6
-    assert abs(float(pulloff_at_force_minimum(tiny, CHI0, law).ratio) - 1) < 1e-6
+    assert abs(float(pulloff_at_critical_radius(tiny, CHI0, law).pulloff_ratio) - 1) < 1e-6
+    assert abs(float(pulloff_at_force_minimum(tiny, CHI0, law).pulloff_ratio) - 1) < 1e-6
     assert abs(float(pulloff_at_critical_radius(tiny, CHI0, law).abar_m) - (9 / 16) ** (1 / 3)) < 1e-6
 
 

@@ -36,6 +36,7 @@ from vibroadhesion.models.exact_harmonic_balance import (
     compliant_residual,
     exact_harmonics,
     rigid_fixation,
+    solve_rigid_fixation,
 )
 from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
@@ -232,14 +233,14 @@ def test_rigid_solution_satisfies_both_equations_in_mpmath(case: tuple[float, fl
     """
     n, h1, omega_check, deltabar0 = case
     sol = rigid_fixation(h1 / RADIUS, omega_check, CHI0, GentSchultz(n), deltabar0)
-    epsilon = sol.abar / (omega_check * C_O)
-    ref = [float(v) for v in harmonics_mp(sol.abar_m, sol.abar, epsilon, n)]
+    epsilon = float(sol.Abar) / (omega_check * C_O)
+    ref = [float(v) for v in harmonics_mp(float(sol.abar_m), float(sol.Abar), epsilon, n)]
     etahat = h1 / RADIUS / C_O**2
     assert abs(ref[0] - deltabar0) < 1e-12 * sol.abar_m**2
     assert abs(math.hypot(ref[1], ref[2]) / etahat - 1) < 1e-11
     assert abs(sol.w_eff_ratio / ref[6] ** 2 - 1) < 1e-12
-    assert abs(sol.a_over_am / (epsilon / sol.abar_m) - 1) < 1e-14
-    assert abs(sol.mean_force_ratio / (ref[3] / 0.75) - 1) < 1e-11
+    assert abs(sol.A_over_am / (epsilon / sol.abar_m) - 1) < 1e-14
+    assert abs(sol.pm_over_abs_pjkr / (ref[3] / 0.75) - 1) < 1e-11
 
 
 def test_zero_amplitude_is_the_static_nominal_point_contact() -> None:
@@ -247,16 +248,19 @@ def test_zero_amplitude_is_the_static_nominal_point_contact() -> None:
     P_m/|P_JKR| = -8/9 (to rounding).
     """
     sol = rigid_fixation(0.0, 1e5, CHI0, GentSchultz(N_PUBLISHED))
-    assert sol.abar == 0.0 and abs(sol.abar_m - 1) < 1e-14 and sol.w_eff_ratio == 1.0 and sol.a_over_am == 0.0
-    assert abs(sol.mean_force_ratio + 8 / 9) < 1e-14
+    assert sol.Abar == 0.0 and abs(sol.abar_m - 1) < 1e-14 and sol.w_eff_ratio == 1.0 and sol.A_over_am == 0.0
+    assert abs(sol.pm_over_abs_pjkr + 8 / 9) < 1e-14
 
 
 def test_no_single_harmonic_state_is_reported_not_returned() -> None:
     """h1 = 100 um at omega_check = 1e4 (refined model: A/a_m = 1.5, geometrically impossible): the
-    mean equation loses its stable root before the base amplitude is reached: NoSteadyStateError.
+    mean equation loses its stable root before the base amplitude is reached: NoSteadyStateError inside,
+    the status ``no_solution`` (every number NaN) at the level's boundary.
     """
     with pytest.raises(NoSteadyStateError):
-        rigid_fixation(100e-6 / RADIUS, 1e4, CHI0, GentSchultz(N_PUBLISHED))
+        solve_rigid_fixation(100e-6 / RADIUS, 1e4, CHI0, GentSchultz(N_PUBLISHED))
+    sol = rigid_fixation(100e-6 / RADIUS, 1e4, CHI0, GentSchultz(N_PUBLISHED))
+    assert sol.status == "no_solution" and math.isnan(sol.Abar) and math.isnan(sol.abar_m) and sol.message
 
 
 def _amplitude_along_stable_branch(
@@ -296,8 +300,8 @@ def test_amplitude_along_the_branch_and_the_choice_of_the_smaller_root() -> None
     assert 0 < k < len(values) - 1 and values[-1] < values[k]
     etahat = 0.5 * (values[k] + values[-1])  # two roots: one on each side of the peak
     sol = rigid_fixation(etahat * C_O**2, 1e3, CHI0, law)
-    assert sol.a_over_am < peaked[k][0]
-    assert abs(np.interp(sol.a_over_am, *zip(*peaked[: k + 1])) / etahat - 1) < 1e-3
+    assert sol.A_over_am < peaked[k][0]
+    assert abs(np.interp(sol.A_over_am, *zip(*peaked[: k + 1])) / etahat - 1) < 1e-3
 
 
 @pytest.mark.parametrize("n", [N_PUBLISHED, 2.0])
@@ -318,10 +322,10 @@ def test_small_base_amplitude_limit_against_the_refined_model(n: float) -> None:
     law = GentSchultz(n)
     exact = rigid_fixation(eta1, omega_check, CHI0, law)
     refined = refined_nominal_point_contact(eta1, omega_check, CHI0, law)
-    epsilon = exact.abar / (omega_check * C_O)
+    epsilon = exact.Abar / (omega_check * C_O)
     assert abs((exact.abar_m - float(refined.abar_m)) / epsilon**2 / (-3 / 8) - 1) < tolerances[0]
     c = 19 / 32 if n > 1 else (3 / 16 + 1 / (8 * (n + 3))) / n
-    assert abs((exact.abar / float(refined.abar) - 1) / epsilon**2 / c - 1) < tolerances[1]
+    assert abs((exact.Abar / float(refined.Abar) - 1) / epsilon**2 / c - 1) < tolerances[1]
 
 
 def _j_integrals_scipy(abar: float, n: float) -> tuple[float, float, float, float]:
@@ -379,10 +383,10 @@ def test_high_frequency_limit_is_the_leading_order_plus_epsilon_squared_terms(ca
     law = GentSchultz(n)
     exact = rigid_fixation(h1 / RADIUS, omega_check, CHI0, law)
     leading = refined_nominal_point_contact(h1 / RADIUS, math.inf, CHI0, law)
-    abar_m, abar = high_frequency_expansion(h1 / RADIUS, omega_check, n, (exact.abar_m, exact.abar))
-    epsilon = exact.abar / (omega_check * C_O)
-    assert abs(exact.abar / abar - 1) < epsilon**4 and abs(exact.abar_m / abar_m - 1) < epsilon**4
-    assert abs(exact.abar / float(leading.abar) - 1) > 0.01 * epsilon**2
+    abar_m, abar = high_frequency_expansion(h1 / RADIUS, omega_check, n, (exact.abar_m, exact.Abar))
+    epsilon = exact.Abar / (omega_check * C_O)
+    assert abs(exact.Abar / abar - 1) < epsilon**4 and abs(exact.abar_m / abar_m - 1) < epsilon**4
+    assert abs(exact.Abar / float(leading.Abar) - 1) > 0.01 * epsilon**2
     assert abs(exact.abar_m / float(leading.abar_m) - 1) > 0.01 * epsilon**2
 
 

@@ -85,7 +85,7 @@ def assert_reference_root_within(residual, mean_radius, sol, rel: float = 1e-9) 
     its root is within ``rel`` of the returned Abar. The reference a_m/a_o at those two points (a
     smooth function of Abar) brackets the returned abar_m, with the same slack.
     """
-    ends = [sol.abar * (1 - rel), sol.abar * (1 + rel)]
+    ends = [sol.Abar * (1 - rel), sol.Abar * (1 + rel)]
     lo, hi = (residual(a) for a in ends)
     assert lo * hi < 0, (sol, float(lo), float(hi))
     radii = sorted(float(mean_radius(a) / A_O) for a in ends)
@@ -119,7 +119,7 @@ def test_rigid_limit_equals_eqs_55_56_to_1e9(n: float, base_offset: float) -> No
     stiff = steady_states(ETA1, fixation, CHI0, law, base_offset=base_offset, omega_check=omega_check)
     assert len(rigid) == len(stiff) == 1 and rigid[0].stable and stiff[0].stable
     assert_reference_root_within(residual, mean_radius, rigid[0])
-    assert abs(stiff[0].abar / rigid[0].abar - 1) < 1e-10 and abs(stiff[0].abar_m / rigid[0].abar_m - 1) < 1e-10
+    assert abs(stiff[0].Abar / rigid[0].Abar - 1) < 1e-10 and abs(stiff[0].abar_m / rigid[0].abar_m - 1) < 1e-10
     assert abs(rigid[0].deltabar_m - base_offset) < 1e-12  # Eq. (56) itself
 
 
@@ -147,7 +147,7 @@ def test_free_indenter_equals_eqs_57_59_to_1e9(n: float, beta: float) -> None:
 
     for sol in steady_states(ETA1, Fixation.free(beta, MU_SMALL), CHI0, GentSchultz(n), omega_check=1.0):
         assert_reference_root_within(residual, mean_radius, sol)
-        assert abs(sol.pm_over_pjkr / float(MU_SMALL / (mp.mpf(3) / 4 * A_O**3)) - 1) < 1e-10
+        assert abs(sol.pm_over_abs_pjkr / float(MU_SMALL / (mp.mpf(3) / 4 * A_O**3)) - 1) < 1e-10
 
 
 # ----------------------------------------------------------------- number of roots, counted along Abar
@@ -209,8 +209,8 @@ def test_number_of_roots_equals_independent_count_along_abar(n, setting, case, e
     sols = steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check)
     count, cells = count_roots_along_abar(case, fixation.mu, n)
     assert len(sols) == count == expected
-    for sol, cell in zip(sorted(sols, key=lambda s: s.abar), cells):
-        assert cell <= sol.abar <= cell * math.exp(0.002) * (1 + 1e-12)
+    for sol, cell in zip(sorted(sols, key=lambda s: s.Abar), cells):
+        assert cell <= sol.Abar <= cell * math.exp(0.002) * (1 + 1e-12)
     assert [s.stable for s in sols][::-1] == [i % 2 == 0 for i in range(len(sols))]
 
 
@@ -232,12 +232,13 @@ def test_compliant_roots_satisfy_printed_eq_87_and_eq_43_with_eqs_50_51(kappa, o
     fixation, omega_check = spring(kappa, omega_bar, zeta, mu)
     d = mp.mpc(fixation.d(omega_check))
     for sol in steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check):
-        j0, jc1, _ = j_integrals_mp(sol.abar, n)
-        terms = printed_eq_87_terms(sol.abar_m, j0, kappa, mu)
-        a_m = mp.mpf(sol.abar_m) * A_O
+        j0, jc1, _ = j_integrals_mp(float(sol.Abar), n)
+        abar_m = float(sol.abar_m)
+        terms = printed_eq_87_terms(abar_m, j0, kappa, mu)
+        a_m = mp.mpf(abar_m) * A_O
         condition = 1 + 2 * a_m / abs(d + 2 * a_m)
         assert abs(sum(terms)) < 1e-13 * condition * max(abs(t) for t in terms), sol
-        assert abs(printed_eq_43_ratio(sol.abar_m, jc1, kappa, omega_bar, zeta) - 1) < 1e-13 * condition, sol
+        assert abs(printed_eq_43_ratio(abar_m, jc1, kappa, omega_bar, zeta) - 1) < 1e-13 * condition, sol
 
 
 def printed_eq_87_terms(abar_m: float, j0: mp.mpf, kappa: float, mu: float) -> list[mp.mpf]:
@@ -298,7 +299,7 @@ def test_static_limit_eta1_to_zero_equals_eq_82(kappa: float, mu: float, base_of
         assert len(sols) == len(reference), (sols, reference)
         for sol, (abar_m, stable) in zip(sols, reference):
             assert abs(sol.abar_m / abar_m - 1) < 1e-12 and sol.stable == stable
-    assert sols[-1].abar > 0  # eta1 = 1e-12 did take the vibrating path
+    assert sols[-1].Abar > 0  # eta1 = 1e-12 did take the vibrating path
 
 
 @pytest.mark.parametrize(("kappa", "mu", "base_offset"), STATIC_CASES)
@@ -313,7 +314,7 @@ def test_anti_resonance_of_appendix_b_gives_abar_zero_and_the_static_state(kappa
     reference = eq82_roots(kappa, mu + kappa * base_offset * A_O**2)
     assert len(sols) == len(reference)
     for sol, (abar_m, stable) in zip(sols, reference):
-        assert (sol.abar, sol.j0, sol.w_eff_ratio, sol.a_over_am) == (0.0, 1.0, 1.0, 0.0)
+        assert (sol.Abar, sol.w_eff_ratio, sol.A_over_am) == (0.0, 1.0, 0.0)  # J0 = 1 exactly iff J0^2 = 1
         assert abs(sol.abar_m / abar_m - 1) < 1e-12 and sol.stable == stable
 
 
@@ -354,11 +355,11 @@ def test_rigid_nominal_point_contact_is_abar_m_cubed_half_equal_j0_and_matches_r
     """
     law = GentSchultz(n)
     (sol,) = steady_states(ETA1, Fixation.rigid(), CHI0, law, omega_check=1e6)
-    assert abs(sol.abar_m**1.5 / float(j_integrals_mp(sol.abar, n)[0]) - 1) < 1e-12
+    assert abs(sol.abar_m**1.5 / float(j_integrals_mp(float(sol.Abar), n)[0]) - 1) < 1e-12
     refined = nominal_point_contact(ETA1, math.inf, CHI0, law)
-    assert abs(sol.abar / float(refined.abar) - 1) < 1e-10 and abs(sol.abar_m / float(refined.abar_m) - 1) < 1e-10
-    assert abs(sol.a_over_am / float(sol.abar / (1e6 * sol.abar_m * A_O)) - 1) < 1e-13
-    assert steady_states(ETA1, Fixation.rigid(), CHI0, law)[0].a_over_am == 0.0  # omega_check = inf
+    assert abs(sol.Abar / float(refined.Abar) - 1) < 1e-10 and abs(sol.abar_m / float(refined.abar_m) - 1) < 1e-10
+    assert abs(sol.A_over_am / float(sol.Abar / (1e6 * sol.abar_m * A_O)) - 1) < 1e-13
+    assert steady_states(ETA1, Fixation.rigid(), CHI0, law)[0].A_over_am == 0.0  # omega_check = inf
 
 
 # ----------------------------------------------------------------- a_m = a_cr: Eqs. (67)-(69) and (72)
@@ -438,7 +439,7 @@ def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, om
               for a, x, y in zip(grid, j0, jc1)]
     assert int(np.sum(np.diff(np.sign(excess)) != 0)) == count
     estimate = pulloff_leading(ETA1, CHI0, GentSchultz(n), fixation, omega_check)
-    assert float(estimate.abar_cr) == roots[0] and float(estimate.ratio) == float(estimate.j0) ** 2  # Eq. (71)
+    assert float(estimate.Abar_cr) == roots[0] and float(estimate.pulloff_ratio) == float(estimate.sqrt_w_eff_ratio) ** 2  # Eq. (71)
 
 
 @pytest.mark.parametrize("n", EXPONENTS)
@@ -449,9 +450,11 @@ def test_fixation_pulloff_is_eq_72_for_rigid_and_tends_to_it_for_a_stiff_or_a_he
     """
     law = GentSchultz(n)
     rigid = pulloff_leading(ETA1, CHI0, law)
-    assert pulloff_leading(ETA1, CHI0, law, Fixation.rigid()) == rigid
+    same = pulloff_leading(ETA1, CHI0, law, Fixation.rigid())
+    assert (same.Abar_cr, same.sqrt_w_eff_ratio, same.pulloff_ratio) == (rigid.Abar_cr, rigid.sqrt_w_eff_ratio,
+                                                                         rigid.pulloff_ratio)
     for fixation, omega_check in (spring(1e9, 0.5, 0.05), spring(1e-3, 1e6, 0.01)):
-        assert abs(pulloff_leading(ETA1, CHI0, law, fixation, omega_check).abar_cr / rigid.abar_cr - 1) < 1e-8
+        assert abs(pulloff_leading(ETA1, CHI0, law, fixation, omega_check).Abar_cr / rigid.Abar_cr - 1) < 1e-8
 
 
 def test_fixation_pulloff_at_the_anti_resonance_is_the_static_jkr_pulloff() -> None:
@@ -459,7 +462,7 @@ def test_fixation_pulloff_at_the_anti_resonance_is_the_static_jkr_pulloff() -> N
     P_cr/P_JKR = J0(0)^2 = 1 exactly.
     """
     estimate = pulloff_leading(ETA1, CHI0, GentSchultz(0.531), *spring(1e-3, 1.0, 0.0))
-    assert float(estimate.abar_cr) == 0.0 and float(estimate.ratio) == 1.0
+    assert float(estimate.Abar_cr) == 0.0 and float(estimate.pulloff_ratio) == 1.0
 
 
 @pytest.mark.parametrize(("kappa", "omega_bar", "zeta", "nu0"),

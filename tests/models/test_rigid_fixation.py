@@ -17,6 +17,7 @@ import pytest
 from conftest import AMPLITUDES_UM, CHI0, N_PUBLISHED, RADIUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
+from vibroadhesion.core import levels
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
@@ -55,9 +56,9 @@ def test_eq122_root_satisfies_printed_equation_with_mpmath_j_to_1e11(h1_um: floa
     """
     eta1 = h1_um * 1e-6 / RADIUS
     sol = nominal_point_contact(eta1, omega_check, CHI0, GentSchultz(n))
-    residual = float(abs(eq122_lhs_mp(float(sol.abar), omega_check, n) / mp.mpf(eta1) ** 2 - 1))
-    assert residual < 1e-11, f"Abar = {float(sol.abar)!r}: relative residual {residual:.2e}"
-    j0 = j_integrals_mp(float(sol.abar), n)[0]
+    residual = float(abs(eq122_lhs_mp(float(sol.Abar), omega_check, n) / mp.mpf(eta1) ** 2 - 1))
+    assert residual < 1e-11, f"Abar = {float(sol.Abar)!r}: relative residual {residual:.2e}"
+    j0 = j_integrals_mp(float(sol.Abar), n)[0]
     assert abs(float(sol.abar_m) / float(mp.cbrt(j0) ** 2) - 1) < 1e-12  # Eq. (123)
     assert abs(float(sol.w_eff_ratio) / float(j0**2) - 1) < 1e-12  # Eq. (49)
 
@@ -113,18 +114,18 @@ def test_h1_to_zero_abar_vanishes_and_abar_m_tends_to_one(omega_check: float, n:
     law = GentSchultz(n)
     for eta1 in (1e-10, 1e-12, 1e-14):
         sol = nominal_point_contact(eta1, omega_check, CHI0, law)
-        abar = float(sol.abar)
+        abar = float(sol.Abar)
         reference = small_amplitude_abar_mp(eta1, omega_check, n)
         assert abs(abar / reference - 1) < 10 * abar**n + 1e-9, (eta1, abar, reference)
         assert abs(float(sol.abar_m) - 1) < 10 * abar ** (2 * n) + 1e-12
         assert abs(float(sol.w_eff_ratio) - 1) < 10 * abar ** (2 * n) + 1e-12
-    assert 0 < float(sol.a_over_am) < 1e-6
+    assert 0 < float(sol.A_over_am) < 1e-6
 
 
 def test_h1_zero_gives_the_static_nominal_point_contact_exactly() -> None:
     """h1 = 0 is the static JKR nominal point contact: Abar = 0, abar_m = 1, w_eff = w0 (Eq. 86)."""
     sol = nominal_point_contact(0.0, 1e5, CHI0, GentSchultz(N_PUBLISHED))
-    assert (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio), float(sol.a_over_am)) == (0.0, 1.0, 1.0, 0.0)
+    assert (float(sol.Abar), float(sol.abar_m), float(sol.w_eff_ratio), float(sol.A_over_am)) == (0.0, 1.0, 1.0, 0.0)
 
 
 # ----------------------------------------------------------------- A/a_m > 1: outside the model, reported
@@ -164,7 +165,7 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
     fig7 = fig7_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n], math.inf]), chi0=CHI0, radius=RADIUS, n=n)
     w0 = W0  # J/m^2, Fig. 4 caption; E* chosen so that Eq. (64) gives chi0 = CHI0
     params = GentSchultzParameters(w0=w0, n=n, v0=V0)
-    fig4 = fig4_table({"leading": params, "refined": params}, [200.0], np.array(AMPLITUDES_UM),
+    fig4 = fig4_table(dict.fromkeys(levels.fig4_names(), params), [200.0], np.array(AMPLITUDES_UM),
                               radius=RADIUS, reduced_modulus=9 * math.pi * w0 / (RADIUS * CHI0**3))
     leading = fig4[fig4["model"] == "leading"].set_index("h1_um")["pulloff_ratio"]
     for omega_check, rows in fig7.groupby("omega_check"):
@@ -204,10 +205,10 @@ def test_fig8_storage_stiffness_low_frequency_limit_matches_eq_c2_form(h1_um: fl
     law = GentSchultz(n)
     omega_check = LOW_OMEGA_CHECK[n]
     sol = nominal_point_contact(h1_um * 1e-6 / RADIUS, omega_check, CHI0, law)
-    s = dynamic_stiffness(sol.abar, sol.abar_m, CHI0, omega_check, law)
-    j0, jc1, j1 = j_integrals_mp(float(sol.abar), n)
+    s = dynamic_stiffness(sol.Abar, sol.abar_m, CHI0, omega_check, law)
+    j0, jc1, j1 = j_integrals_mp(float(sol.Abar), n)
     q = j1 / (4 * j0)  # abar_m^(3/2) = J0, Eq. (123)
-    r = -(mp.mpf(6) ** (mp.mpf(2) / 3)) * mp.mpf(float(sol.abar)) * mp.cbrt(j0) * (1 - q) / (
+    r = -(mp.mpf(6) ** (mp.mpf(2) / 3)) * mp.mpf(float(sol.Abar)) * mp.cbrt(j0) * (1 - q) / (
         mp.mpf(omega_check) * mp.mpf(CHI0) * jc1)
     assert r > 1e3
     reference = float((1 - 3 * q) / (1 - q))
@@ -221,8 +222,8 @@ def test_fig8_storage_stiffness_is_one_third_as_abar_to_zero() -> None:
     """
     law = GentSchultz(N_PUBLISHED)
     sol = nominal_point_contact(1e-9 / RADIUS, 1e-12, CHI0, law)
-    s = dynamic_stiffness(sol.abar, sol.abar_m, CHI0, 1e-12, law)
-    assert float(sol.abar) < 1e-15
+    s = dynamic_stiffness(sol.Abar, sol.abar_m, CHI0, 1e-12, law)
+    assert float(sol.Abar) < 1e-15
     assert abs(float(s.storage_rel) - 1.0 / 3.0) < 1e-9
 
 

@@ -27,6 +27,7 @@ import pandas as pd
 import pytest
 from conftest import AMPLITUDES_UM, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
+from vibroadhesion.core import levels
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline.artefacts import write_csv
@@ -171,7 +172,7 @@ def test_every_notebook_has_exactly_one_parameters_cell() -> None:
 
 
 def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> None:
-    params = {m: GentSchultzParameters(W0, N_PUBLISHED, V0) for m in ("leading", "refined")}
+    params = dict.fromkeys(levels.fig4_names(), GentSchultzParameters(W0, N_PUBLISHED, V0))
     geometry = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
     measured = pd.DataFrame({"frequency_hz": [200.0], "h1_um": [40.0], "pulloff_mN": [250.0], "source": ["simulated"]})
     digests = []
@@ -187,7 +188,9 @@ def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> Non
 
 # Run in a fresh interpreter: import the package modules named on the command line, then, until
 # nothing new loads, every module named by an IMPORT_NAME instruction in the bytecode of a function
-# (or method) of a loaded package module; print the files of the package modules Python loaded.
+# (or method) of a loaded package module, and the modules of the registry's functions a loaded module
+# resolves (its LEVEL_FUNCTIONS, imported by name at run time); print the files of the package modules
+# Python loaded.
 _REFERENCE = r"""
 import dis, importlib, sys, types
 
@@ -228,6 +231,9 @@ while len(done) < len(loaded()):
         if name in done:
             continue
         done.add(name)
+        for role, function in getattr(module, "LEVEL_FUNCTIONS", ()):  # the registry's functions it resolves
+            for level_module in importlib.import_module("vibroadhesion.core.levels").modules(role, function):
+                load(level_module)
         for code in (c for top in functions(module) for c in nested(top)):
             for target, fromlist in imports(code):
                 load(target)

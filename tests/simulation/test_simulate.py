@@ -222,20 +222,20 @@ def test_high_frequency_limit_matches_frozen_contact_reference(omega_check: floa
     ex = excitation(20, omega_check)
     r = sim.steady_state(ex)
     ref = frozen_20um
-    assert r.status == "converged" and r.stable
+    assert r.status == "ok" and r.stable
     a_m, rate = ref["abar_m"], omega_check * C_O
     assert r.abar_m == pytest.approx(a_m, rel=tol_a)
     assert r.w_eff_ratio == pytest.approx(a_m**3, rel=tol_a)
     assert r.pm_over_abs_pjkr == pytest.approx(-8 / 9 * a_m**3, rel=tol_a)
-    assert r.abar == pytest.approx(ref["abar"], rel=tol_b)
-    assert r.a_over_am == pytest.approx(ref["abar"] / (rate * a_m), rel=tol_b)
-    assert r.a_c * rate == pytest.approx(ref["a_c_rate"], rel=tol_b)
-    assert abs(r.a_s * rate - ref["a_s_rate"]) < 10 * r.a_over_am * abs(ref["a_c_rate"])  # lag O(A/a_m)
-    assert r.peak_speed == pytest.approx(ref["peak"], rel=tol_b)
-    assert r.phat_s == pytest.approx(-2 * a_m * ex.etahat, rel=10 * r.a_over_am)
-    assert abs(r.phat_c) < 10 * r.a_over_am
-    assert r.deltabar_c == 0.0 and r.deltabar_s == -ex.etahat and r.deltabar_m == 0.0
-    assert 0 < 1 - r.floquet_multipliers[0].real < 1e-2 and r.periodicity_residual < 1e-10
+    assert r.Abar == pytest.approx(ref["abar"], rel=tol_b)
+    assert r.A_over_am == pytest.approx(ref["abar"] / (rate * a_m), rel=tol_b)
+    assert r.orbit.abar_c * rate == pytest.approx(ref["a_c_rate"], rel=tol_b)
+    assert abs(r.orbit.abar_s * rate - ref["a_s_rate"]) < 10 * r.A_over_am * abs(ref["a_c_rate"])  # lag O(A/a_m)
+    assert r.orbit.peak_speed == pytest.approx(ref["peak"], rel=tol_b)
+    assert r.orbit.phat_s == pytest.approx(-2 * a_m * ex.etahat, rel=10 * r.A_over_am)
+    assert abs(r.orbit.phat_c) < 10 * r.A_over_am
+    assert r.orbit.deltabar_c == 0.0 and r.orbit.deltabar_s == -ex.etahat and r.deltabar_m == 0.0
+    assert 0 < 1 - r.orbit.floquet_multipliers[0].real < 1e-2 and r.orbit.periodicity_residual < 1e-10
 
 
 @pytest.mark.parametrize("n, h1_um, omega_check", [(0.05, 5.0, 1e8), (4.0, 20.0, 1e6)])
@@ -248,10 +248,10 @@ def test_high_frequency_limit_for_extreme_exponents(n: float, h1_um: float, omeg
     ex = excitation(h1_um, omega_check, n)
     r = sim.steady_state(ex)
     ref = frozen_limit_mp(ex.etahat, n)
-    assert r.status == "converged"
+    assert r.status == "ok"
     assert r.abar_m == pytest.approx(ref["abar_m"], rel=1e-7)
-    assert r.abar == pytest.approx(ref["abar"], rel=1e-5)
-    assert r.peak_speed == pytest.approx(ref["peak"], rel=1e-5)
+    assert r.Abar == pytest.approx(ref["abar"], rel=1e-5)
+    assert r.orbit.peak_speed == pytest.approx(ref["peak"], rel=1e-5)
 
 
 @pytest.mark.parametrize("n, omega_checks, amplitudes", [
@@ -272,8 +272,8 @@ def test_small_amplitude_limit_abar_tends_to_closed_form(n: float, omega_checks,
     for eps in amplitudes:
         for omega_check in omega_checks:
             r = sim.steady_state(excitation_eps(eps, omega_check, n))
-            assert r.status == "converged"
-            assert r.abar == pytest.approx((2 * eps) ** (1 / n) * w, rel=2 * eps)
+            assert r.status == "ok"
+            assert r.Abar == pytest.approx((2 * eps) ** (1 / n) * w, rel=2 * eps)
             assert abs(r.abar_m - 1) < eps**2
 
 
@@ -282,8 +282,8 @@ def test_zero_amplitude_is_the_static_contact() -> None:
     mean force is the JKR force at zero displacement, -2/3 = -(8/9) |P_JKR| (Eq. 4').
     """
     r = sim.steady_state(excitation(0.0, 1e5))
-    assert r.status == "converged"
-    assert r.abar_m == 1.0 and r.abar < 1e-20 and r.w_eff_ratio == pytest.approx(1.0, rel=1e-15)
+    assert r.status == "ok"
+    assert r.abar_m == 1.0 and r.Abar < 1e-20 and r.w_eff_ratio == pytest.approx(1.0, rel=1e-15)
     assert r.pm_over_abs_pjkr == pytest.approx(-8 / 9, rel=1e-15)
 
 
@@ -296,10 +296,10 @@ def test_large_stroke_at_low_frequency_reports_contact_loss(omega_check: float) 
     """
     ex = excitation(100, omega_check)
     r = sim.steady_state(ex)
-    assert r.status == "contact_loss" and math.isnan(r.abar_m) and math.isnan(r.a_over_am)
+    assert r.status == "contact_loss" and math.isnan(r.abar_m) and math.isnan(r.A_over_am)
     t = sim.transient(ex, periods=1, integrator="Radau", rtol=1e-10, contact_loss_abar=1e-4)
     assert t.status == "contact_loss"
-    assert t.tau_contact_loss == pytest.approx(r.tau_contact_loss, abs=1e-3)
+    assert t.tau_contact_loss == pytest.approx(r.orbit.tau_contact_loss, abs=1e-3)
 
 
 def test_n005_stroke_beyond_fixed_grip_pull_off_loses_contact() -> None:
@@ -309,7 +309,7 @@ def test_n005_stroke_beyond_fixed_grip_pull_off_loses_contact() -> None:
     omega_check = 1e8 where n = 0.531 holds it (test_high_frequency_limit_matches_...).
     """
     r = sim.steady_state(excitation(20, 1e8, 0.05))
-    assert r.status == "contact_loss" and 0 < r.tau_contact_loss < math.pi
+    assert r.status == "contact_loss" and 0 < r.orbit.tau_contact_loss < math.pi
 
 
 def test_contact_survives_at_high_frequency_with_a_over_am_below_one() -> None:
@@ -322,8 +322,8 @@ def test_contact_survives_at_high_frequency_with_a_over_am_below_one() -> None:
         if r.status == "contact_loss":
             assert not ratios, "contact lost at a higher frequency than a converged one"
             continue
-        assert r.status == "converged"
-        ratios.append(r.a_over_am)
+        assert r.status == "ok"
+        ratios.append(r.A_over_am)
     assert len(ratios) >= 2 and all(0 < q < 1 for q in ratios) and ratios == sorted(ratios, reverse=True)
 
 
@@ -338,7 +338,7 @@ def test_shooting_equals_brute_force_transient(omega_check: float, periods: int)
     r = sim.steady_state(ex)
     t = sim.transient(ex, periods=periods)
     assert t.status == "completed"
-    assert t.states[-1, 0] == pytest.approx(r.start_state[0], rel=1e-9)
+    assert t.states[-1, 0] == pytest.approx(r.orbit.start_state[0], rel=1e-9)
 
 
 @pytest.mark.parametrize("integrator", ["LSODA", "Radau"])
@@ -350,10 +350,11 @@ def test_second_integrator_gives_the_same_orbit(integrator: str) -> None:
     ex = excitation(40, 1e6)
     a = sim.steady_state(ex)
     b = sim.steady_state(ex, integrator=integrator, rtol=1e-10 if integrator == "Radau" else 1e-12)
-    assert a.status == b.status == "converged" and b.integrator == integrator
-    for field in ("abar_m", "abar", "w_eff_ratio", "pm_over_abs_pjkr", "peak_speed"):
+    assert a.status == b.status == "ok" and b.orbit.integrator == integrator
+    for field in ("abar_m", "Abar", "w_eff_ratio", "pm_over_abs_pjkr"):
         assert getattr(b, field) == pytest.approx(getattr(a, field), rel=1e-8), field
-    assert b.floquet_multipliers[0].real == pytest.approx(a.floquet_multipliers[0].real, rel=1e-7)
+    assert b.orbit.peak_speed == pytest.approx(a.orbit.peak_speed, rel=1e-8)
+    assert b.orbit.floquet_multipliers[0].real == pytest.approx(a.orbit.floquet_multipliers[0].real, rel=1e-7)
 
 
 def test_rigid_multiplier_equals_finite_difference_of_the_map() -> None:
@@ -362,19 +363,19 @@ def test_rigid_multiplier_equals_finite_difference_of_the_map() -> None:
     """
     ex = excitation(20, 1e6)
     r = sim.steady_state(ex)
-    h = 1e-4 * r.a_over_am * r.abar_m
-    ends = [sim.transient(ex, periods=1, initial_state=[r.start_state[0] + s * h]).states[-1, 0] for s in (1, -1)]
-    assert r.floquet_multipliers[0].real == pytest.approx((ends[0] - ends[1]) / (2 * h), rel=1e-5)
-    assert 0 < r.floquet_multipliers[0].real < 1 and r.stable
+    h = 1e-4 * r.A_over_am * r.abar_m
+    ends = [sim.transient(ex, periods=1, initial_state=[r.orbit.start_state[0] + s * h]).states[-1, 0] for s in (1, -1)]
+    assert r.orbit.floquet_multipliers[0].real == pytest.approx((ends[0] - ends[1]) / (2 * h), rel=1e-5)
+    assert 0 < r.orbit.floquet_multipliers[0].real < 1 and r.stable
 
 
 def test_speed_range_flag() -> None:
     """peak_speed_in_range is lo <= peak <= hi, None without a range."""
     ex = excitation(20, 1e6)
     r = sim.steady_state(ex)
-    assert r.peak_speed_in_range is None
-    assert sim.steady_state(ex, speed_range=(0.0, 2 * r.peak_speed)).peak_speed_in_range is True
-    assert sim.steady_state(ex, speed_range=(0.0, 0.5 * r.peak_speed)).peak_speed_in_range is False
+    assert r.orbit.peak_speed_in_range is None
+    assert sim.steady_state(ex, speed_range=(0.0, 2 * r.orbit.peak_speed)).orbit.peak_speed_in_range is True
+    assert sim.steady_state(ex, speed_range=(0.0, 0.5 * r.orbit.peak_speed)).orbit.peak_speed_in_range is False
 
 
 def test_rigid_bracket_keeps_the_fixed_point_and_bisects_steps_that_leave_it() -> None:
@@ -411,9 +412,9 @@ def test_compliant_mean_force_balance_eq15(kappa: float, zeta: float, omega_bar:
     """
     for mu in (0.0, 1e-6):
         r = sim.steady_state(excitation(20, omega_bar / NU0, fixation=spring(kappa, zeta, mu)))
-        assert r.status == "converged"
+        assert r.status == "ok"
         mean_xbar = r.deltabar_m  # deltabar0 = 0
-        assert mean_xbar == pytest.approx(mu / (kappa * C_O**2) - C_O / kappa * r.phat_m, rel=1e-9)
+        assert mean_xbar == pytest.approx(mu / (kappa * C_O**2) - C_O / kappa * r.orbit.phat_m, rel=1e-9)
 
 
 def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attracts() -> None:
@@ -422,9 +423,9 @@ def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attract
     """
     ex = excitation(20, 1.0 / NU0, fixation=spring(0.1, 0.2))
     r = sim.steady_state(ex)
-    assert r.status == "converged" and r.stable and np.all(np.abs(r.floquet_multipliers) < 1)
-    z0 = r.start_state
-    steps = np.array([1e-5 * max(abs(z0[0]), 1.0), 1e-5 * max(abs(z0[1]), 1.0), 1e-5 * r.a_over_am * r.abar_m])
+    assert r.status == "ok" and r.stable and np.all(np.abs(r.orbit.floquet_multipliers) < 1)
+    z0 = r.orbit.start_state
+    steps = np.array([1e-5 * max(abs(z0[0]), 1.0), 1e-5 * max(abs(z0[1]), 1.0), 1e-5 * r.A_over_am * r.abar_m])
     monodromy = np.empty((3, 3))
     for j in range(3):
         ends = []
@@ -434,7 +435,7 @@ def test_compliant_multipliers_match_finite_differences_and_stable_orbit_attract
             ends.append(sim.transient(ex, periods=1, initial_state=z).states[-1])
         monodromy[:, j] = (ends[0] - ends[1]) / (2 * steps[j])
     reference = np.sort_complex(np.linalg.eigvals(monodromy))
-    assert np.allclose(np.sort_complex(r.floquet_multipliers), reference, rtol=0, atol=1e-4)
+    assert np.allclose(np.sort_complex(r.orbit.floquet_multipliers), reference, rtol=0, atol=1e-4)
 
 
 def test_compliant_shooting_equals_brute_force_transient() -> None:
@@ -445,8 +446,8 @@ def test_compliant_shooting_equals_brute_force_transient() -> None:
     ex = excitation(20, 1.0 / NU0, fixation=spring(0.1, 0.2))
     r = sim.steady_state(ex)
     t = sim.transient(ex, periods=60)
-    scale = np.array([abs(r.start_state[0]), abs(r.start_state[1]), r.start_state[2]])
-    assert np.all(np.abs(t.states[-1] - r.start_state) <= 1e-9 * np.maximum(scale, 1.0))
+    scale = np.array([abs(r.orbit.start_state[0]), abs(r.orbit.start_state[1]), r.orbit.start_state[2]])
+    assert np.all(np.abs(t.states[-1] - r.orbit.start_state) <= 1e-9 * np.maximum(scale, 1.0))
 
 
 @pytest.mark.parametrize("kappa", [0.01, 0.1])
@@ -458,10 +459,10 @@ def test_undamped_spring_near_resonance_converges_or_reports(kappa: float, omega
     non-convergence status, never an exception or a silent number.
     """
     r = sim.steady_state(excitation(20, omega_bar / NU0, fixation=spring(kappa, 0.0)))
-    assert r.status in ("converged", "not_converged", "contact_loss")
-    if r.status == "converged":
-        assert r.periodicity_residual < 1e-9
-        assert r.stable == bool(np.all(np.abs(r.floquet_multipliers) < 1))
+    assert r.status in ("ok", "not_converged", "contact_loss")
+    if r.status == "ok":
+        assert r.orbit.periodicity_residual < 1e-9
+        assert r.stable == bool(np.all(np.abs(r.orbit.floquet_multipliers) < 1))
     else:
         assert math.isnan(r.abar_m)
 
@@ -473,8 +474,8 @@ def test_very_stiff_spring_reproduces_rigid_fixation() -> None:
     ex = excitation(20, 1e6)
     rigid = sim.steady_state(ex)
     stiff = sim.steady_state(replace(ex, fixation=spring(1e6, 0.05)))
-    assert stiff.status == "converged"
-    for field in ("abar_m", "abar", "w_eff_ratio", "pm_over_abs_pjkr"):
+    assert stiff.status == "ok"
+    for field in ("abar_m", "Abar", "w_eff_ratio", "pm_over_abs_pjkr"):
         assert getattr(stiff, field) == pytest.approx(getattr(rigid, field), rel=1e-6), field
 
 

@@ -2,8 +2,11 @@
 # (simulated) pull-off experiment whose true parameters are known. Part of the `validation`
 # target. One job per perturbed simulation and per fitted model level.
 
+from vibroadhesion.core.levels import names
+
 SENSITIVITY_RUNS = [f"{p}_{s}" for p in ("w0", "n", "v0") for s in ("plus", "minus")]
-FITTED_LEVELS = ["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]
+# The fitted model levels, one job each, in the registry's order (the row order of fits.csv).
+FITTED_LEVELS = names("fit")
 
 
 rule pulloff_sensitivity:

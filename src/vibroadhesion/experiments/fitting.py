@@ -33,7 +33,8 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import least_squares
 
-from vibroadhesion.experiments.pulloff import MODELS, GentSchultzParameters, Model, predict_pulloff
+from vibroadhesion.core import levels
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.roots import NoRootError
 
 UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
@@ -57,7 +58,7 @@ ParameterMap = Callable[[np.ndarray], GentSchultzParameters]
 
 
 def _residual_function(
-    rows: pd.DataFrame, model: Model, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
+    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
 ) -> tuple[ResidualFunction, ParameterMap]:
     """Relative residuals P_model/P_observed - 1 of the rows as a function of ln(free), and the parameter map."""
     freq, h1, observed = (rows[c].to_numpy(float) for c in ("frequency_hz", "h1_um", "pulloff_mN"))
@@ -66,13 +67,17 @@ def _residual_function(
         return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values, strict=True)})
 
     def residuals(log_values: np.ndarray) -> np.ndarray:
-        return predict_pulloff(model, params_of(log_values), freq, h1, **geometry).pulloff_mN / observed - 1.0
+        params = params_of(log_values)
+        pulloff = predict_pulloff(model, params, freq, h1, **geometry)
+        if not np.all(pulloff.found):
+            raise FitError(f"{model} fit of {free}: the model has no solution at a trial point ({params})")
+        return pulloff_mN(pulloff, params.w0, geometry["radius"]) / observed - 1.0
 
     return residuals, params_of
 
 
 def _least_squares(
-    rows: pd.DataFrame, model: Model, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
+    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
 ) -> dict[str, Any]:
     """Least squares in ln(free) with bounds (trust-region reflective); the fit record of ``fit_gent_schultz``."""
     residuals, params_of = _residual_function(rows, model, base, free, geometry)
@@ -100,7 +105,7 @@ def _least_squares(
 
 
 def _v0_identifiability(
-    rows: pd.DataFrame, model: Model, fit: dict[str, Any], geometry: dict[str, float], max_relative_se: float,
+    rows: pd.DataFrame, model: str, fit: dict[str, Any], geometry: dict[str, float], max_relative_se: float,
     noise_floor: float,
 ) -> tuple[bool, str]:
     """Would v0 be determined if freed at the (w0, n) fit?
@@ -125,7 +130,7 @@ def _v0_identifiability(
 
 def fit_gent_schultz(
     rows: pd.DataFrame,
-    model: Model,
+    model: str,
     published: GentSchultzParameters,
     *,
     radius: float,
@@ -134,8 +139,8 @@ def fit_gent_schultz(
     noise_floor: float = 1e-3,
 ) -> dict[str, Any]:
     """Fit one model level to the rows; return a JSON-ready summary (see module docstring)."""
-    if model not in MODELS:
-        raise ValueError(f"unknown model {model!r}; expected one of {MODELS}")
+    if model not in levels.names("fit"):
+        raise ValueError(f"unknown model {model!r}; expected one of {levels.names('fit')}")
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frequencies = sorted(set(rows["frequency_hz"].tolist()))
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
@@ -162,13 +167,13 @@ def fit_gent_schultz(
     return summary
 
 
-def _v0_note_before_fit(model: Model, frequencies: int, rows: int) -> str:
+def _v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
     """Why v0 cannot be freed whatever the fit gives (empty if it may be).
 
-    v0 enters only the refined level (Eq. 106 through omega R/v0, Eq. 105), and needs two
-    frequencies and a spare degree of freedom.
+    v0 enters only the frequency-dependent levels (the refined one: Eq. 106 through omega R/v0, Eq. 105),
+    and needs two frequencies and a spare degree of freedom.
     """
-    if model != "refined":
+    if not levels.level(model).frequency_dependent:
         return f"v0 not identifiable: the {model} model is frequency independent, v0 does not enter it"
     if frequencies < 2:
         return f"v0 not identifiable: the rows span {frequencies} frequency (at least 2 needed)"

@@ -33,7 +33,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
 
 PARAMETERS = ("w0", "n", "v0")
 
@@ -58,7 +58,7 @@ def perturbed(
     return GentSchultzParameters(**values)
 
 
-def fit_level(rows: pd.DataFrame, model: Model, truth: GentSchultzParameters, *, radius: float,
+def fit_level(rows: pd.DataFrame, model: str, truth: GentSchultzParameters, *, radius: float,
               reduced_modulus: float) -> dict[str, Any]:
     """One row of the fits table: the pipeline's fit of ``model`` started from the true parameters.
 

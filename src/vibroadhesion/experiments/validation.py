@@ -1,7 +1,8 @@
 """Every model level against the direct simulation of the full model (rigid nominal point contact).
 
 For each base amplitude h1 and frequency omega_check the steady state of the rigidly fixed
-nominal point contact (h0 = hhat, Eq. 78) is computed five ways:
+nominal point contact (h0 = hhat, Eq. 78) is computed by every level of role ``validation_rigid``
+of :mod:`vibroadhesion.core.levels`, in its order:
 
 * ``simulation``: periodic orbit of Eqs. (4), (5) with w = w0 f(adot/v0), shooting on the
   one-period map (:mod:`vibroadhesion.simulation`), the ground truth;
@@ -23,25 +24,24 @@ Mean force of the J-integral levels: Eq. (52), P_m/|P_JKR| = (4/3) [(4/3) abar_m
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from vibroadhesion import simulation
+from vibroadhesion.core import levels
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models import exact_averaging, exact_harmonic_balance
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models.compliant import trace_response_curve
-from vibroadhesion.models.leading_order import mean_force_over_pulloff
-from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.progress import ProgressBar
-from vibroadhesion.numerics.roots import NoRootError
 
-MODELS = ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
+#: The registry's functions this module resolves (vibroadhesion.core.levels): the rigid steady states.
+LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
+
 QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "pm_over_abs_pjkr")
 RIGID_GRID_COLUMNS = ["h1_um", "omega_check", "model", "status", *QUANTITIES]
 ERROR_COLUMNS = ["h1_um", "omega_check", "model", "quantity", "relative_error", "refined_A_over_am", "applicable"]
@@ -52,73 +52,27 @@ APPLICABILITY_LIMIT = 0.1
 TRUSTED_ERROR = 0.05
 
 
-#: One model level at one point: (eta1, omega_check, chi0, law) -> (status, QUANTITIES or None).
-Level = Callable[[float, float, float, GentSchultz], tuple[str, tuple[float, ...] | None]]
+def simulated_nominal_point_contact(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> SteadyState:
+    """The direct simulation's periodic steady state of the rigidly fixed nominal point contact (Eqs. 4-11, 78)."""
+    return simulation.steady_state(Problem(law, chi0, eta1, omega_check))
 
 
-def _j_model_values(sol: Any) -> tuple[float, ...]:
-    """QUANTITIES of a J-integral level's solution, P_m/|P_JKR| from Eq. (52)."""
-    abar, abar_m, w_eff = float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio)
-    pm = float(mean_force_over_pulloff(abar_m, math.sqrt(w_eff)))  # Eq. (52)
-    return abar, abar_m, w_eff, float(sol.a_over_am), pm
-
-
-def _simulation(
-    eta1: float, omega_check: float, chi0: float, law: GentSchultz
-) -> tuple[str, tuple[float, ...] | None]:
-    """The direct simulation's periodic steady state (rigid fixation) as a level."""
-    sim = simulation.steady_state(Problem(law, chi0, eta1, omega_check))
-    if sim.status != "converged":
-        return sim.status, None
-    return "ok", (sim.abar, sim.abar_m, sim.w_eff_ratio, sim.a_over_am, sim.pm_over_abs_pjkr)
-
-
-def _leading(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
-    """Leading order: the refined solution at omega_check = inf, A/a_m at the actual omega_check (corrected Eq. 98)."""
-    sol = nominal_point_contact(eta1, math.inf, chi0, law)
-    a_over_am = contact_radius_amplitude_ratio(sol.abar, sol.abar_m, chi0, omega_check)
-    return "ok", _j_model_values(sol._replace(a_over_am=a_over_am))
-
-
-def _refined(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...]]:
-    """The refined nominal point contact (Eqs. 122-123)."""
-    return "ok", _j_model_values(nominal_point_contact(eta1, omega_check, chi0, law))
-
-
-def _exact(solve: Callable[[float, float, float, GentSchultz], Any]) -> Level:
-    """An exact level (harmonic balance, averaging) as a :data:`Level`; no root gives ``no_solution``."""
-
-    def level(eta1: float, omega_check: float, chi0: float, law: GentSchultz) -> tuple[str, tuple[float, ...] | None]:
-        try:
-            sol = solve(eta1, omega_check, chi0, law)
-        except NoRootError:  # includes NoSteadyStateError
-            return "no_solution", None
-        return "ok", (float(sol.abar), float(sol.abar_m), float(sol.w_eff_ratio), float(sol.a_over_am),
-                      float(sol.mean_force_ratio))
-    return level
-
-
-#: Each model level as a solver of one point: (eta1, omega_check, chi0, law) -> (status, QUANTITIES or None).
-LEVELS = {
-    "simulation": _simulation,
-    "leading": _leading,
-    "refined": _refined,
-    "exact_hb": _exact(exact_harmonic_balance.rigid_fixation),
-    "exact_averaging": _exact(exact_averaging.nominal_point_contact),
-}
+def _row_numbers(state: SteadyState) -> dict[str, float]:
+    """QUANTITIES of a record; NaN unless its status is ``ok``."""
+    values = (state.Abar, state.abar_m, state.w_eff_ratio, state.A_over_am, state.pm_over_abs_pjkr)
+    if not state.ok:
+        return dict.fromkeys(QUANTITIES, math.nan)
+    return {quantity: float(value) for quantity, value in zip(QUANTITIES, values, strict=True)}
 
 
 def rigid_point(h1_um: float, omega_check: float, *, chi0: float, radius: float, n: float) -> list[dict[str, Any]]:
-    """The five model levels at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
+    """Every level of role ``validation_rigid`` at one (h1, omega_check): rows of :data:`RIGID_GRID_COLUMNS`."""
     law = GentSchultz(n)
     rows = []
-    for model, level in LEVELS.items():
-        status, values = level(h1_um * 1e-6 / radius, omega_check, chi0, law)
-        if values is None:
-            numbers = dict.fromkeys(QUANTITIES, math.nan)
-        else:
-            numbers = dict(zip(QUANTITIES, values, strict=True))
-        rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": status, **numbers})
+    for model in levels.names("validation_rigid"):
+        state = levels.level(model).steady_state_function()(h1_um * 1e-6 / radius, omega_check, chi0, law)
+        rows.append({"h1_um": h1_um, "omega_check": omega_check, "model": model, "status": str(state.status),
+                     **_row_numbers(state)})
     return rows
 
 
@@ -143,7 +97,9 @@ def relative_errors(grid: pd.DataFrame) -> pd.DataFrame:
     sim = grid[grid["model"] == "simulation"].set_index(["h1_um", "omega_check"])
     refined = grid[grid["model"] == "refined"].set_index(["h1_um", "omega_check"])["A_over_am"]
     frames = []
-    for model in MODELS[1:]:
+    for model in levels.names("validation_rigid"):
+        if model == "simulation":  # the reference
+            continue
         rows = grid[grid["model"] == model].set_index(["h1_um", "omega_check"])
         both = (rows["status"] == "ok") & (sim["status"] == "ok")
         for quantity in QUANTITIES:
@@ -209,25 +165,26 @@ def compliant_sweep(fixation: Fixation, chi0: float, eta1: float, n: float, omeg
             problem = Problem(law, chi0, eta1, w / fixation.nu0, fixation)
             sim = simulation.steady_state(problem, initial_state=state)
             status, solved = "ok", 1
-            if sim.status != "converged" and state is not None:
+            if not sim.ok and state is not None:
                 sim = simulation.steady_state(problem)
                 status, solved = "ok, restarted from the static state", 2
             if progress is not None:
                 progress.advance(solved, f"sweep {direction}, omega_bar = {w:.6g}: {sim.status}")
-            if sim.status == "converged":
-                state = sim.start_state
+            if sim.ok and sim.orbit is not None:
+                state = sim.orbit.start_state
                 rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "solution_index": 0,
-                             "status": status, "Abar": sim.abar, "abar_m": sim.abar_m, "A_over_am": sim.a_over_am,
-                             "stable": sim.stable,
-                             "max_floquet_multiplier": float(np.max(np.abs(sim.floquet_multipliers)))})
+                             "status": status, "Abar": float(sim.Abar), "abar_m": float(sim.abar_m),
+                             "A_over_am": float(sim.A_over_am), "stable": bool(sim.stable),
+                             "max_floquet_multiplier": float(np.max(np.abs(sim.orbit.floquet_multipliers)))})
             else:
                 rows.append({"direction": direction, "omega_bar": w, "model": "simulation", "solution_index": 0,
-                             "status": sim.status, "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
+                             "status": str(sim.status), "Abar": math.nan, "abar_m": math.nan, "A_over_am": math.nan,
                              "stable": False, "max_floquet_multiplier": math.nan})
             if direction == "up":
-                for k, (abar_m, abar) in enumerate(sorted(curve.solutions_at(w, law), key=lambda s: s[1])):
-                    rows.append({"direction": "-", "omega_bar": w, "model": "refined", "solution_index": k,
-                                 "status": "ok", "Abar": abar, "abar_m": abar_m, "A_over_am": float(
-                                     contact_radius_amplitude_ratio(abar, abar_m, chi0, problem.omega_check)),
-                                 "stable": math.nan, "max_floquet_multiplier": math.nan})
+                refined = curve.steady_states_at(w, law)
+                rows += [{"direction": "-", "omega_bar": w, "model": refined.level, "solution_index": k,
+                          "status": str(status), "Abar": float(abar), "abar_m": float(abar_m),
+                          "A_over_am": float(a_over_am), "stable": math.nan, "max_floquet_multiplier": math.nan}
+                         for k, (status, abar, abar_m, a_over_am) in enumerate(
+                             zip(refined.status, refined.Abar, refined.abar_m, refined.A_over_am, strict=True))]
     return pd.DataFrame(rows)[SWEEP_COLUMNS]

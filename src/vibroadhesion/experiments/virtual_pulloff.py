@@ -60,55 +60,46 @@ Results are in a_o units: P_m/|P_JKR| = Phat_m/(3/4), abar_cr = (9/16)^(1/3) (w_
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from dataclasses import replace
-from typing import Any, Literal, NamedTuple
+from typing import Any
 
 import numpy as np
 import pandas as pd
 from scipy.optimize import minimize_scalar
 
 from vibroadhesion import simulation
-from vibroadhesion.core import groups
+from vibroadhesion.core import groups, levels
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
-from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
-from vibroadhesion.models import exact_averaging
 from vibroadhesion.models.compliant import pulloff_by_scan
-from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
+from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_from_abar, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
-from vibroadhesion.numerics.roots import NoRootError
-
-Status = Literal["pulloff", "contact_loss_before_extremum", "no_steady_state_before_extremum"]
-
-
-class VirtualPulloff(NamedTuple):
-    """Outcome of one simulated pull-off: the extremum of the mean force along the family, or why none."""
-
-    status: Status
-    ratio: float  # P_cr / P_cr^JKR = -min P_m / |P_JKR| (positive), NaN without an extremum
-    deltabar0: float  # base offset (hhat - h0) R/a_o^2 at pull-off
-    abar_m: float  # simulated mean contact radius at pull-off, a_m/a_o
-    abar_cr: float  # the paper's criterion (Eq. 61) with the simulated w_eff there
-    w_eff_ratio: float
-    a_over_am: float
-    steady_states: int  # periodic orbits solved along the family (failed attempts included)
-
 
 #: Periods of the transient that tells how a family without an extremum ends (module docstring).
 END_TRANSIENT_PERIODS = 200
 
 
-def _ended(failure: str, solved: int) -> VirtualPulloff:
-    status: Status = "contact_loss_before_extremum" if failure == "contact_loss" else "no_steady_state_before_extremum"
-    return VirtualPulloff(status, *(math.nan,) * 6, solved)
+def _ended(failure: str, solved: int) -> Pulloff:
+    """The record of a family without a force extremum: why it ended, every number NaN."""
+    status: PulloffStatus = ("contact_loss_before_extremum" if failure == "contact_loss"
+                             else "no_steady_state_before_extremum")
+    nan = np.asarray(math.nan)
+    return Pulloff("simulation", np.asarray(status), *(nan,) * 8, steady_states=solved)
 
 
-def _end_of_family(problem: Problem, last: simulation.SteadyState, failure: str) -> str:
+def _orbit(state: SteadyState) -> OrbitDiagnostics:
+    """The orbit diagnostics of a simulated steady state (every record of the simulation has them)."""
+    if state.orbit is None:
+        raise TypeError(f"a {state.level} steady state has no orbit diagnostics")
+    return state.orbit
+
+
+def _end_of_family(problem: Problem, last: SteadyState, failure: str) -> str:
     """Why the family ends: the shooting's own ``contact_loss``, or else what the transient says.
 
     The transient runs from the last orbit at the nearest failed deltabar0 over
@@ -117,15 +108,19 @@ def _end_of_family(problem: Problem, last: simulation.SteadyState, failure: str)
     if failure == "contact_loss":
         return failure
     try:
-        run = simulation.transient(problem, periods=END_TRANSIENT_PERIODS, initial_state=last.start_state)
+        run = simulation.transient(problem, periods=END_TRANSIENT_PERIODS, initial_state=_orbit(last).start_state)
     except RuntimeError:
         return failure
     return "contact_loss" if run.status == "contact_loss" else failure
 
 
 def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 400, halvings: int = 6,
-                      iterations: int = 15) -> VirtualPulloff:
+                      iterations: int = 15) -> Pulloff:
     """Pull-off from the family of steady states in deltabar0 (module docstring), from ``problem``'s base offset.
+
+    The record of level ``simulation`` (scalar): status ``pulloff`` with P_cr/P_cr^JKR = -min P_m/|P_JKR|,
+    the base offset, mean radius, w_eff/w0 and A/a_m of the most tensile orbit and the paper's
+    criterion abar_cr (Eq. 61) at its w_eff; or why the family ended without an extremum, NaN.
 
     ``step`` is the target change of the mean contact displacement deltabar_m per orbit; the base step
     is step (1 + sigma S) (module docstring). After a failed orbit the next steps go at most half-way
@@ -140,22 +135,23 @@ def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 4
     fixation = problem.fixation
     sigma = 0.0 if fixation.is_rigid else contact_radius_ratio(problem.chi0) / fixation.kappa
     run = _Withdrawal(problem, iterations)
-    family: list[tuple[float, simulation.SteadyState]] = []
+    family: list[tuple[float, SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
     d0, state = problem.base_offset, None
     for _ in range(max_steps):
         orbit_k = run.orbit(d0, state)
-        if orbit_k.status != "converged":
+        if not orbit_k.ok:
+            status = str(orbit_k.status)
             if not family:
-                return _ended(orbit_k.status, run.solved)
+                return _ended(status, run.solved)
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], orbit_k.status), run.solved)
-            failure = (d0, orbit_k.status)
+                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], status), run.solved)
+            failure = (d0, status)
         else:
             family.append((d0, orbit_k))
             if failure is not None and d0 == failure[0]:  # the earlier failure was the shooting's, not the family's
                 failure = None
-            if len(family) >= 3 and family[-1][1].phat_m > family[-2][1].phat_m:
+            if len(family) >= 3 and _orbit(family[-1][1]).phat_m > _orbit(family[-2][1]).phat_m:
                 break
         d0, state = _next_offset(family, failure, step, sigma, halvings)
     else:
@@ -167,9 +163,13 @@ def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 4
                     options={"xatol": 1e-4 * step})
     d_best = min(run.cache, key=run.cached_force)  # every evaluation is cached: the most tensile orbit found
     at = run.cache[d_best]
-    return VirtualPulloff("pulloff", float(at.phat_m / PHAT_JKR), float(d_best), float(at.abar_m),
-                          float(pulloff_closure(math.sqrt(at.w_eff_ratio))), float(at.w_eff_ratio),
-                          float(at.a_over_am), run.solved)
+    w_eff_ratio = float(at.w_eff_ratio)
+    sqrt_w_eff_ratio = math.sqrt(w_eff_ratio)
+    return Pulloff("simulation", np.asarray("pulloff"), pulloff_ratio=np.asarray(float(_orbit(at).phat_m / PHAT_JKR)),
+                   Abar_cr=np.asarray(math.nan), sqrt_w_eff_ratio=np.asarray(sqrt_w_eff_ratio),
+                   w_eff_ratio=np.asarray(w_eff_ratio), abar_cr=np.asarray(float(pulloff_closure(sqrt_w_eff_ratio))),
+                   abar_m=np.asarray(float(at.abar_m)), A_over_am=np.asarray(float(at.A_over_am)),
+                   base_offset=np.asarray(float(d_best)), steady_states=run.solved)
 
 
 class _Withdrawal:
@@ -179,20 +179,20 @@ class _Withdrawal:
         """The withdrawal of ``problem``'s base (Eq. 11); ``iterations`` caps predicted shootings."""
         self.problem, self.iterations = problem, iterations
         self.solved = 0
-        self.cache: dict[float, simulation.SteadyState] = {}
+        self.cache: dict[float, SteadyState] = {}
 
     def problem_at(self, d0: float) -> Problem:
         """The problem at base offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
         return replace(self.problem, base_offset=d0)
 
-    def orbit(self, d0: float, state: np.ndarray | None) -> simulation.SteadyState:
+    def orbit(self, d0: float, state: np.ndarray | None) -> SteadyState:
         """The periodic steady state at ``d0``: from the static state (``state`` None) or a predicted one."""
         self.solved += 1
         if state is None:
             return simulation.steady_state(self.problem_at(d0), initial_state=None)
         return simulation.steady_state(self.problem_at(d0), initial_state=state, max_iterations=self.iterations)
 
-    def mean_force(self, d: float, bracket: list[tuple[float, simulation.SteadyState]]) -> float:
+    def mean_force(self, d: float, bracket: list[tuple[float, SteadyState]]) -> float:
         """Phat_m of the orbit at ``d`` (solved once, from the bracket's interpolation); inf where none converges."""
         if d not in self.cache:
             self.cache[d] = self.orbit(d, _interpolated_state(bracket, d))
@@ -200,10 +200,10 @@ class _Withdrawal:
 
     def cached_force(self, d: float) -> float:
         """Phat_m of the cached orbit at ``d``; inf where it did not converge (never the most tensile)."""
-        return self.cache[d].phat_m if self.cache[d].status == "converged" else math.inf
+        return _orbit(self.cache[d]).phat_m if self.cache[d].ok else math.inf
 
 
-def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tuple[float, str] | None,
+def _next_offset(family: list[tuple[float, SteadyState]], failure: tuple[float, str] | None,
                  step: float, sigma: float, halvings: int) -> tuple[float, np.ndarray]:
     """The next base offset and its predicted start state (module docstring: base step step (1 + sigma S)).
 
@@ -214,10 +214,10 @@ def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tu
     d_last, last = family[-1]
     if len(family) >= 2:
         previous = family[-2][1]
-        stiffness = (last.phat_m - previous.phat_m) / (last.deltabar_m - previous.deltabar_m)
+        stiffness = (_orbit(last).phat_m - _orbit(previous).phat_m) / float(last.deltabar_m - previous.deltabar_m)
     else:
-        stiffness = 2.0 * last.abar_m
-    stiffness = min(max(stiffness, 0.0), 2.0 * last.abar_m)
+        stiffness = 2.0 * float(last.abar_m)
+    stiffness = min(max(stiffness, 0.0), 2.0 * float(last.abar_m))
     d0 = d_last - step * (1.0 + sigma * stiffness)
     if failure is not None:
         gap = d_last - failure[0]
@@ -225,7 +225,7 @@ def _next_offset(family: list[tuple[float, simulation.SteadyState]], failure: tu
     return d0, _predicted_state(family, d0, sigma * stiffness)
 
 
-def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: float,
+def _predicted_state(family: list[tuple[float, SteadyState]], d0: float,
                      sigma_stiffness: float) -> np.ndarray:
     """Start state for the orbit at ``d0``, extrapolated from the family.
 
@@ -235,34 +235,44 @@ def _predicted_state(family: list[tuple[float, simulation.SteadyState]], d0: flo
     d_last, last = family[-1]
     if len(family) >= 2:
         d_prev, previous = family[-2]
-        return last.start_state + (last.start_state - previous.start_state) * (d0 - d_last) / (d_last - d_prev)
-    state = last.start_state.copy()
+        start, previous_start = _orbit(last).start_state, _orbit(previous).start_state
+        return start + (start - previous_start) * (d0 - d_last) / (d_last - d_prev)
+    state = _orbit(last).start_state.copy()
     if state.size == 3:
         state[0] -= sigma_stiffness / (1.0 + sigma_stiffness) * (d0 - d_last)
     return state
 
 
-def _interpolated_state(bracket: list[tuple[float, simulation.SteadyState]], d0: float) -> np.ndarray:
+def _interpolated_state(bracket: list[tuple[float, SteadyState]], d0: float) -> np.ndarray:
     """Start state inside the bracket of the extremum: piecewise-linear in deltabar0 between its orbits."""
     ds = np.array([d for d, _ in bracket])[::-1]  # ascending
-    states = np.array([o.start_state for _, o in bracket])[::-1]
+    states = np.array([_orbit(o).start_state for _, o in bracket])[::-1]
     return np.array([np.interp(d0, ds, states[:, i]) for i in range(states.shape[1])])
 
 
-def _refined_compliant_ratio(omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: GentSchultz) -> float:
-    """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn)."""
+def _refined_compliant_pulloff(omega_bar: float, fixation: Fixation, chi0: float, eta1: float,
+                               law: GentSchultz) -> Pulloff:
+    """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn).
+
+    The record of level ``refined`` (scalar); no root on the scan gives ``no_solution``.
+    """
     roots = pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN)
-    if not roots:
-        raise NoRootError(f"Eq. (90) at a_m = a_cr: no root on the scan at omega_bar = {omega_bar:.6g}")
-    return float(j_integrals_for_law(roots[0][1], law)[0]) ** 2
+    return pulloff_from_abar("refined", np.asarray(roots[0][1] if roots else math.nan), law)
 
 
-def _prediction(solve: Callable[[float], float], eta1: float) -> dict[str, Any]:
-    """{status, pulloff_ratio} of one prediction at ``eta1``: ``ok`` and the ratio, or ``no_solution`` and NaN."""
-    try:
-        return {"status": "ok", "pulloff_ratio": solve(eta1)}
-    except NoRootError:
-        return {"status": "no_solution", "pulloff_ratio": math.nan}
+def _record_rows(pulloff: Pulloff, h1_um: np.ndarray) -> list[dict[str, Any]]:
+    """Rows of :func:`pulloff_table` from one record, one per amplitude; NaN where the level gives no number."""
+    rows: list[dict[str, Any]] = [
+        {"model": pulloff.level, "h1_um": h, "status": str(status), "pulloff_ratio": ratio, "abar_m": abar_m,
+         "abar_cr": abar_cr}
+        for h, status, ratio, abar_m, abar_cr in zip(
+            h1_um, *(np.ravel(v) for v in (pulloff.status, pulloff.pulloff_ratio, pulloff.abar_m, pulloff.abar_cr)),
+            strict=True)
+    ]
+    if pulloff.steady_states is not None:
+        for row in rows:
+            row["steady_states"] = pulloff.steady_states
+    return rows
 
 
 COLUMNS = ["fixation", "kappa", "zeta", "frequency_hz", "h1_um", "model", "status", "pulloff_ratio", "pulloff_mN",
@@ -287,11 +297,10 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     rows = []
     for h1, e in zip(h1_um, eta1, strict=True):
         result = simulated_pulloff(Problem(law, chi0, float(e), omega_check, fixation))
-        rows.append({"model": "simulation", "h1_um": h1, "status": result.status, "pulloff_ratio": result.ratio,
-                     "abar_m": result.abar_m, "abar_cr": result.abar_cr, "steady_states": result.steady_states})
+        rows += _record_rows(result, np.asarray([h1]))
         if progress is not None:
-            progress.advance(result.steady_states, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
-                                                   f"P/P_JKR = {result.ratio:.6g}")
+            progress.advance(result.steady_states or 0, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "
+                                                        f"P/P_JKR = {float(result.pulloff_ratio):.6g}")
     if predictions:
         rows += _predicted_rows(params, frequency_hz, h1_um, fixation, radius=radius, reduced_modulus=reduced_modulus)
     table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **fixation.csv_constants)
@@ -303,25 +312,28 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
                     fixation: Fixation, *, radius: float,
                     reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
+    if fixation.is_rigid:
+        return [row for model in levels.names("virtual_pulloff_rigid") if model != "simulation"
+                for row in _record_rows(predict_pulloff(model, params, frequency_hz, h1_um, radius=radius,
+                                                        reduced_modulus=reduced_modulus), h1_um)]
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
-    if fixation.is_rigid:
-        rows: list[dict[str, Any]] = []
-        for model in ("leading", "refined"):
-            pred = predict_pulloff(model, params, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus)
-            rows += [{"model": model, "h1_um": h, "status": "ok", "pulloff_ratio": r}
-                     for h, r in zip(h1_um, pred.ratio, strict=True)]
-        exact = exact_averaging.pulloff_at_critical_radius(eta1, chi0, law)
-        rows += [{"model": "exact_averaging", "h1_um": h, "status": "ok", "pulloff_ratio": r, "abar_m": a}
-                 for h, r, a in zip(h1_um, exact.ratio, exact.abar_m, strict=True)]
-        minimum = exact_averaging.pulloff_at_force_minimum(eta1, chi0, law)
-        rows += [{"model": "exact_averaging_force_minimum", "h1_um": h, "status": "ok", "pulloff_ratio": r,
-                  "abar_m": a} for h, r, a in zip(h1_um, minimum.ratio, minimum.abar_m, strict=True)]
-        return rows
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
-    omega_bar = fixation.omega_bar(omega_check)
-    solvers = {"leading": lambda e: float(pulloff_leading(e, chi0, law, fixation, omega_check).ratio),
-               "refined": lambda e: _refined_compliant_ratio(omega_bar, fixation, chi0, e, law)}
-    return [{"model": model, "h1_um": h, **_prediction(solve, float(e))}
-            for model, solve in solvers.items() for h, e in zip(h1_um, eta1, strict=True)]
+    return [row for model in levels.names("virtual_pulloff_compliant") if model != "simulation"
+            for h, e in zip(h1_um, eta1, strict=True)
+            for row in _record_rows(_compliant_prediction(model, fixation, chi0, float(e), omega_check, law),
+                                    np.asarray([h]))]
+
+
+def _compliant_prediction(model: str, fixation: Fixation, chi0: float, eta1: float, omega_check: float,
+                          law: GentSchultz) -> Pulloff:
+    """The pull-off ``model`` predicts for the spring fixation (module docstring): a scalar record.
+
+    ``leading``: Eqs. (67)–(69) with (71); ``refined``: Eq. (90) at a_m = a_cr with (71).
+    """
+    if model == "leading":
+        return pulloff_leading(eta1, chi0, law, fixation, omega_check)
+    if model == "refined":
+        return _refined_compliant_pulloff(fixation.omega_bar(omega_check), fixation, chi0, eta1, law)
+    raise ValueError(f"no compliant pull-off prediction for model level {model!r}")

@@ -54,6 +54,8 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
+from vibroadhesion.core.records import SteadyState
+from vibroadhesion.models.leading_order import mean_force_over_pulloff, mean_indentation
 from vibroadhesion.models.leading_pulloff import pulloff_closure
 from vibroadhesion.models.refined import displacement_harmonics
 from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
@@ -310,6 +312,20 @@ class ResponseCurve:
         case = (self.fixation, self.chi0, self.eta1, law)
         return [newton_at_frequency(omega_bar, *case, (math.exp(g[1]), math.exp(g[2])))
                 for piece in self.pieces for g in crossings(piece, s)]
+
+    def steady_states_at(self, omega_bar: float, law: RateLaw) -> SteadyState:
+        """The solutions at ``omega_bar`` as the record of level ``refined``, one element each, by increasing Abar.
+
+        w_eff/w0 = J0^2 (Eq. 49), A/a_m at omega_check = omega_bar/nu0 (corrected Eq. 98), P_m/|P_JKR|
+        (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); the averaged model gives no stability (``stable`` None).
+        """
+        solutions = sorted(self.solutions_at(omega_bar, law), key=lambda s: s[1])
+        abar_m = np.array([am for am, _ in solutions], dtype=float)
+        abar = np.array([a for _, a in solutions], dtype=float)
+        j0 = j_integrals_for_law(abar, law)[0]
+        return SteadyState("refined", np.full(abar.shape, "ok"), abar, abar_m, j0**2,
+                           contact_radius_amplitude_ratio(abar, abar_m, self.chi0, omega_bar / self.fixation.nu0),
+                           mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
 
 
 def _start(omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw) -> Array:

@@ -38,6 +38,7 @@ from scipy.optimize import elementwise
 
 from vibroadhesion.core.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import Pulloff, SteadyState
 from vibroadhesion.models.frozen_radius import alpha_star, frozen_radius_cycle
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -106,26 +107,30 @@ def _log_alpha_excess(u: Array, etahat: Array, law: GentSchultz, c: float) -> Ar
     return np.log(alpha_star(etahat / u, law)) - np.log(c * u**3)
 
 
-class NominalPointContact(NamedTuple):
-    """High-frequency steady state of the rigidly fixed nominal point contact (deltabar0 = 0)."""
-
-    abar: Array  # omega A/v0 (exact half peak-to-peak of the contact-radius oscillation)
-    abar_m: Array  # a_m/a_o: abar_m^(3/2) = alpha*
-    w_eff_ratio: Array  # w_eff/w0 = alpha*^2
-    a_over_am: Array  # A/a_m = Abar/(omega_check c_o abar_m)
-    mean_force_ratio: Array  # P_m/|P_JKR| = Phat_m/(3/4) = -(8/9) abar_m^3 (negative: tensile)
-
-
-def nominal_point_contact(
-    eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: GentSchultz
-) -> NominalPointContact:
+def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: GentSchultz) -> SteadyState:
     """Exact high-frequency nominal point contact (Sec. 3.5.4), broadcast over eta1 and omega_check.
 
-    deltabar0 = 0 gives alpha = abar_m^(3/2), so abar_m solves alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2)
-    (unique root, see :func:`_radius_where_alpha_is`), and Phat_m = (4/3 - 2) abar_m^3. omega_check
-    enters A/a_m only.
+    The record of level ``exact_averaging``: deltabar0 = 0 gives alpha = abar_m^(3/2), so abar_m solves
+    alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2) (unique root, see :func:`_radius_where_alpha_is`);
+    Abar is the exact half peak-to-peak of the contact-radius oscillation, w_eff/w0 = alpha*^2,
+    A/a_m = Abar/(omega_check c_o abar_m), P_m/|P_JKR| = Phat_m/(3/4) with Phat_m = (4/3 - 2) abar_m^3
+    (negative: tensile) and deltabar_m = deltabar0 = 0. omega_check enters A/a_m only. Where the root
+    search fails the status is ``no_solution`` (every number NaN).
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
+    try:
+        abar_m, abar, alpha = _nominal_point_contact_state(eta1, chi0, law)
+    except NoRootError as error:  # includes NoSteadyStateError
+        return SteadyState.unsolved("exact_averaging", "no_solution", str(error), shape=eta1.shape)
+    return SteadyState(
+        "exact_averaging", np.full(eta1.shape, "ok"), abar, abar_m, alpha**2,
+        contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check),
+        ((4.0 / 3.0 - 2.0) * abar_m**3) / -PHAT_JKR, np.zeros(eta1.shape),
+    )
+
+
+def _nominal_point_contact_state(eta1: Array, chi0: float, law: GentSchultz) -> tuple[Array, Array, Array]:
+    """(abar_m, Abar, alpha*) of the nominal point contact, alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2)."""
     etahat = amplitude_in_contact_units(eta1, chi0).ravel()
     flat_abar_m = np.ones_like(etahat)
     moving = etahat > 0
@@ -133,29 +138,17 @@ def nominal_point_contact(
         flat_abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 1.0)
     cycle = frozen_radius_cycle(etahat / np.sqrt(flat_abar_m), law)
     abar_m, abar, alpha = (v.reshape(eta1.shape) for v in (flat_abar_m, cycle.abar, cycle.alpha))
-    return NominalPointContact(
-        abar,
-        abar_m,
-        alpha**2,
-        contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check),
-        ((4.0 / 3.0 - 2.0) * abar_m**3) / -PHAT_JKR,
-    )
+    return abar_m, abar, alpha
 
 
 # --- Quasi-static pull-off in the high-frequency limit -------------------------------------
 
 
-class PulloffState(NamedTuple):
-    """Detachment estimate: the mean state at which contact is lost, and P/P_JKR^0 = Phat_m/(-3/4)."""
-
-    abar_m: Array
-    alpha: Array  # w_eff/w0 = alpha^2 at detachment
-    abar: Array
-    ratio: Array  # P_cr/P_JKR^0 (positive for a tensile pull-off force)
-
-
-def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -> PulloffState:
+def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -> Pulloff:
     """Paper's criterion a_m = a_cr(w_eff) (Eqs. 60–61) with the exact w_eff, solved self-consistently.
+
+    The record of level ``exact_averaging``: the mean state at detachment (abar_m, Abar_cr, alpha* =
+    sqrt(w_eff/w0)) and P_cr/P_JKR^0 (positive for a tensile pull-off force).
 
     abar_cr = (9/16)^(1/3) (w_eff/w0)^(1/3) reads abar_m^(3/2) = (3/4) alpha*(etahat/sqrt(abar_m)) (unique
     root, :func:`_radius_where_alpha_is` with c = 4/3); there Phat_m = (4/3)(9/16) alpha^2 - (3/2) alpha^2
@@ -169,8 +162,10 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
         abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 4.0 / 3.0)
     cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
     shape = eta1.shape
-    return PulloffState(abar_m.reshape(shape), cycle.alpha.reshape(shape), cycle.abar.reshape(shape),
-                        (cycle.alpha**2).reshape(shape))
+    ratio = (cycle.alpha**2).reshape(shape)
+    return Pulloff.from_ratio("exact_averaging", "ok", ratio, Abar_cr=cycle.abar.reshape(shape),
+                              sqrt_w_eff_ratio=cycle.alpha.reshape(shape), w_eff_ratio=ratio,
+                              abar_m=abar_m.reshape(shape))
 
 
 #: Points of the coarse scan in ln abar_m that brackets the minimum of the mean force, and of each
@@ -195,8 +190,11 @@ def _smallest_mean_force(z: Array, eta1: Array, chi0: float, law: GentSchultz) -
     return force, k
 
 
-def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> PulloffState:
+def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> Pulloff:
     """Force-controlled detachment: the minimum over abar_m of Phat_m(abar_m) at fixed etahat, vectorised over eta1.
+
+    The record of level ``exact_averaging_force_minimum``: the mean state at the minimum and
+    P_cr/P_JKR^0 = Phat_m/(-3/4) there.
 
     Under a slowly decreasing mean load the mean state is lost where d Phat_m/d abar_m = 0. The
     minimum is located on a scan of z = ln abar_m over [ln(0.05 m), ln(20 m)], m = max(1, sqrt(etahat))
@@ -222,5 +220,7 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
     lower, middle, upper = force[rows, k - 1], force[rows, k], force[rows, k + 1]
     vertex = z[rows, k] - 0.5 * (z[:, 1] - z[:, 0]) * (upper - lower) / (upper - 2.0 * middle + lower)
     state = mean_state(np.exp(vertex), column[:, 0], chi0, law)
-    return PulloffState(*(np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
-                                                                  state.mean_force / PHAT_JKR)))
+    abar_m, alpha, abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
+                                                                     state.mean_force / PHAT_JKR))
+    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=abar, sqrt_w_eff_ratio=alpha,
+                              w_eff_ratio=alpha**2, abar_m=abar_m)

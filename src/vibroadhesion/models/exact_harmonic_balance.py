@@ -117,6 +117,7 @@ from vibroadhesion.core.groups import (
 )
 from vibroadhesion.core.integrals import folded_rule
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models.compliant import amplitude_log_residual
 from vibroadhesion.models.frozen_radius import NoSteadyStateError
 from vibroadhesion.models.refined import nominal_point_contact as refined_nominal_point_contact
@@ -209,16 +210,6 @@ def exact_harmonics(abar_m: ArrayLike, abar: ArrayLike, epsilon: ArrayLike, law:
 
 
 # --- Rigid fixation -----------------------------------------------------------------------
-
-
-class RigidSteadyState(NamedTuple):
-    """Exact-harmonic-balance steady state of a rigidly fixed indenter."""
-
-    abar: float  # internal variable omega A/v0, Eq. (45)
-    abar_m: float  # a_m/a_o
-    w_eff_ratio: float  # w_eff/w0 = J0(Abar)^2, Eq. (18) exact for the ansatz
-    a_over_am: float  # A/a_m = epsilon/abar_m (Eq. 98 corrected, errata E1)
-    mean_force_ratio: float  # P_m/|P_JKR| = mean Phat/(3/4) (negative: tensile)
 
 
 class _AtAmplitude:
@@ -331,10 +322,23 @@ def _bracket_lowest_root(branch: _RigidBranch, z: float, what: str) -> tuple[flo
 
 def rigid_fixation(
     eta1: float, omega_check: float, chi0: float, law: RateLaw, deltabar0: float = 0.0
-) -> RigidSteadyState:
+) -> SteadyState:
     """Exact harmonic balance of a rigidly fixed indenter (Eqs. 56, 100/103 with exact coefficients).
 
-    Mean deltabar = deltabar0 and deltabar_c^2 + deltabar_s^2 = etahat^2.
+    Mean deltabar = deltabar0 and deltabar_c^2 + deltabar_s^2 = etahat^2: the record of level
+    ``exact_hb`` (scalar). Where :func:`solve_rigid_fixation` finds no steady state its status is
+    ``no_solution`` (every number NaN) and its message says why.
+    """
+    try:
+        return solve_rigid_fixation(eta1, omega_check, chi0, law, deltabar0)
+    except NoRootError as error:  # includes NoSteadyStateError
+        return SteadyState.unsolved("exact_hb", "no_solution", str(error))
+
+
+def solve_rigid_fixation(
+    eta1: float, omega_check: float, chi0: float, law: RateLaw, deltabar0: float = 0.0
+) -> SteadyState:
+    """The steady state of :func:`rigid_fixation`, raising where there is none.
 
     Nested bracketed solution: for each z = ln Abar the mean radius is the stable root of the mean
     equation (:meth:`_AtAmplitude.stable_mean_radius`), and ln(|deltabar_(c,s)|/etahat) along that
@@ -343,7 +347,9 @@ def rigid_fixation(
     (:func:`_bracket_lowest_root`: the smallest root, continuing the refined solution), then solved
     by Brent's method. A state needs A < a_m; when the amplitude cannot be reached inside that
     domain :class:`NoSteadyStateError` is raised. The result is checked against both equations
-    (relative residuals below ``RESIDUAL_TOLERANCE``), otherwise :class:`NoRootError`.
+    (relative residuals below ``RESIDUAL_TOLERANCE``), otherwise :class:`NoRootError`. w_eff/w0 is
+    J0(Abar)^2 of the exact ansatz (Eq. 18), A/a_m = epsilon/abar_m (Eq. 98 corrected, errata E1),
+    P_m/|P_JKR| = mean Phat/(3/4) (tensile negative) and deltabar_m = deltabar0.
     """
     if not (omega_check > 0 and math.isfinite(omega_check)):
         raise ValueError(f"omega_check must be positive and finite, got {omega_check}")
@@ -355,10 +361,10 @@ def rigid_fixation(
         abar_m = static.stable_mean_radius(deltabar0)
         if abar_m is None:
             raise NoSteadyStateError(f"{what}: no static contact holds deltabar0")
-        return RigidSteadyState(0.0, abar_m, 1.0, 0.0, static.at(abar_m).mean_force / -PHAT_JKR)
+        return _rigid_record(0.0, abar_m, 1.0, 0.0, static.at(abar_m).mean_force / -PHAT_JKR, deltabar0)
 
     branch = _RigidBranch(etahat, omega_check, c_o, deltabar0, law)
-    start = float(refined_nominal_point_contact(eta1, omega_check, chi0, law).abar)
+    start = float(refined_nominal_point_contact(eta1, omega_check, chi0, law).Abar)
     lo, hi = _bracket_lowest_root(branch, math.log(start) - 2.0, what)
     z = brentq(lambda y: branch.log_excess(y), lo, hi, xtol=1e-14, rtol=1e-15)
     abar = math.exp(z)
@@ -370,13 +376,16 @@ def rigid_fixation(
                  math.hypot(h.indentation_cos, h.indentation_sin) / etahat - 1.0)
     if max(abs(r) for r in residuals) > RESIDUAL_TOLERANCE:
         raise NoRootError(f"{what}: not converged, relative residuals {residuals} at Abar = {abar:.6g}")
-    return RigidSteadyState(
-        abar,
-        abar_m,
-        h.mean_sqrt_w**2,
-        float(contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check)),
-        h.mean_force / -PHAT_JKR,
-    )
+    return _rigid_record(abar, abar_m, h.mean_sqrt_w**2,
+                         float(contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check)),
+                         h.mean_force / -PHAT_JKR, deltabar0)
+
+
+def _rigid_record(abar: float, abar_m: float, w_eff_ratio: float, a_over_am: float, pm_over_abs_pjkr: float,
+                  deltabar0: float) -> SteadyState:
+    """The ``exact_hb`` record of one solved state (Eqs. 18, 98 corrected, 125–126; deltabar_m = deltabar0)."""
+    return SteadyState("exact_hb", np.asarray("ok"), np.asarray(abar), np.asarray(abar_m), np.asarray(w_eff_ratio),
+                       np.asarray(a_over_am), np.asarray(pm_over_abs_pjkr), np.asarray(deltabar0))
 
 
 # --- Compliant fixation (Sec. 3.5.3): residuals for continuation ----------------------------

@@ -61,6 +61,7 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 from vibroadhesion.numerics.scan import (
     Node,
@@ -142,19 +143,6 @@ def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: fl
 def load_group(mu: float, base_offset: float, kappa: float, chi0: float) -> float:
     """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 deltabar_base: right-hand side of (III) times c_o^2."""
     return mu + kappa * contact_radius_ratio(chi0) ** 2 * base_offset
-
-
-class SteadyState(NamedTuple):
-    """One leading-order steady state (Sec. 3.1)."""
-
-    abar_m: float  # a_m / a_o, Eq. (86)
-    abar: float  # internal variable Abar = omega A / v0, Eq. (45)
-    j0: float  # J0(Abar), Eq. (28)
-    w_eff_ratio: float  # w_eff / w0 = J0^2, Eq. (49)
-    a_over_am: float  # A / a_m (docs/errata.md E1); 0 for omega_check = inf
-    pm_over_pjkr: float  # P_m / |P_JKR|, tensile negative (Eqs. 52, 71)
-    deltabar_m: float  # R delta_m / a_o^2 (Eqs. 53, 86)
-    stable: bool  # mean balance residual increases through the root (see steady_states)
 
 
 #: Step of the scan in ln abar_m, and the bound on the refinement towards a contact resonance.
@@ -334,19 +322,21 @@ def scan_segments(
 
 
 def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_check: float) -> SteadyState:
-    """The steady state at a root abar_m of the mean balance (Sec. 3.1).
+    """The steady state at a root abar_m of the mean balance (Sec. 3.1): a scalar record of level ``leading``.
 
-    Abar (Eq. 43), J0 (Eq. 28), w_eff/w0 = J0^2 (Eq. 49), A/a_m (Eq. 45, docs/errata.md E1),
-    P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86).
+    Abar (Eq. 43), w_eff/w0 = J0^2 (Eqs. 28, 49), A/a_m (Eq. 45, docs/errata.md E1; 0 for
+    omega_check = inf), P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); ``stable`` as in
+    :func:`steady_states`.
     """
     _, abar, j0 = balance_state(math.log(abar_m), balance)
     return SteadyState(
-        abar_m=abar_m,
-        abar=abar,
-        j0=j0,
-        w_eff_ratio=j0**2,
-        a_over_am=float(contact_radius_amplitude_ratio(abar, abar_m, balance.chi0, omega_check)),
-        pm_over_pjkr=float(mean_force_over_pulloff(abar_m, j0)),
-        deltabar_m=float(mean_indentation(abar_m, j0)),
-        stable=stable,
+        level="leading",
+        status=np.asarray("ok"),
+        Abar=np.asarray(abar),
+        abar_m=np.asarray(abar_m),
+        w_eff_ratio=np.asarray(j0**2),
+        A_over_am=np.asarray(float(contact_radius_amplitude_ratio(abar, abar_m, balance.chi0, omega_check))),
+        pm_over_abs_pjkr=np.asarray(float(mean_force_over_pulloff(abar_m, j0))),
+        deltabar_m=np.asarray(float(mean_indentation(abar_m, j0))),
+        stable=np.asarray(stable),
     )

@@ -57,7 +57,6 @@ from __future__ import annotations
 
 import math
 from functools import partial
-from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -66,22 +65,21 @@ from scipy.optimize import brentq
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
+from vibroadhesion.core.records import Pulloff
 from vibroadhesion.models.leading_order import indentation_amplitude
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 
 
-class PulloffEstimate(NamedTuple):
-    """Critical internal variable, J0 there, and the amplification P_cr / P_cr^JKR = J0^2 (Eq. 71)."""
+def pulloff_from_abar(level: str, abar_cr: NDArray[np.float64], law: RateLaw) -> Pulloff:
+    """The pull-off record at Abar_cr: J0 there (Eq. 28) and the ratio J0^2 (Eq. 71).
 
-    abar_cr: NDArray[np.float64]
-    j0: NDArray[np.float64]
-    ratio: NDArray[np.float64]
-
-    @classmethod
-    def from_abar(cls, abar_cr: NDArray[np.float64], law: RateLaw) -> PulloffEstimate:
-        """The estimate at Abar_cr: J0 there (Eq. 28) and the ratio J0^2 (Eq. 71)."""
-        j0 = j_integrals_for_law(abar_cr, law)[0]
-        return cls(abar_cr, j0, j0**2)
+    A NaN Abar_cr (no root) gives the status ``no_solution`` and NaN numbers.
+    """
+    found = ~np.isnan(abar_cr)
+    j0 = np.where(found, j_integrals_for_law(np.where(found, abar_cr, 0.0), law)[0], np.nan)
+    ratio = j0**2
+    return Pulloff.from_ratio(level, np.where(found, "ok", "no_solution"), ratio, Abar_cr=abar_cr,
+                              sqrt_w_eff_ratio=j0, w_eff_ratio=ratio)
 
 
 def pulloff_lhs_leading(abar: ArrayLike, law: RateLaw) -> NDArray[np.float64]:
@@ -117,15 +115,24 @@ def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixa
 
 
 def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
-                    omega_check: float = math.inf) -> PulloffEstimate:
-    """Leading-order pull-off estimate, vectorised over eta1 (Eqs. 67–72).
+                    omega_check: float = math.inf) -> Pulloff:
+    """Leading-order pull-off, vectorised over eta1 (Eqs. 67–72): the record of level ``leading``.
 
     Eqs. (71)–(72) for rigid fixation (the default), Eqs. (67)–(69) and (71) for any other, with its d
-    at ``omega_check`` (:func:`critical_abar_leading`).
+    at ``omega_check`` (:func:`critical_abar_leading`). An amplitude without a root has the status
+    ``no_solution``.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    abar = np.vectorize(lambda e: critical_abar_leading(e, chi0, law, fixation, omega_check), otypes=[float])(eta1)
-    return PulloffEstimate.from_abar(abar, law)
+    abar = np.vectorize(lambda e: critical_abar_or_nan(e, chi0, law, fixation, omega_check), otypes=[float])(eta1)
+    return pulloff_from_abar("leading", abar, law)
+
+
+def critical_abar_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation, omega_check: float) -> float:
+    """:func:`critical_abar_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
+    try:
+        return critical_abar_leading(eta1, chi0, law, fixation, omega_check)
+    except NoRootError:
+        return math.nan
 
 
 #: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_abars`).

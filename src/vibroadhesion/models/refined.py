@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import NamedTuple
+from dataclasses import replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -39,7 +39,9 @@ from numpy.typing import ArrayLike, NDArray
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
-from vibroadhesion.models.leading_pulloff import PulloffEstimate, pulloff_closure
+from vibroadhesion.core.records import Pulloff, SteadyState
+from vibroadhesion.models.leading_order import mean_force_over_pulloff
+from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_abar
 from vibroadhesion.numerics.roots import solve_log_increasing
 
 Array = NDArray[np.float64]
@@ -101,32 +103,25 @@ def critical_abar_refined(eta1: float, chi0: float, omega_check: float, law: Rat
     return solve_rigid_abar(eta1, chi0, omega_check, law, pulloff_closure, "Eq. (106)")
 
 
-def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> PulloffEstimate:
-    """Refined pull-off estimate (Eqs. 71, 106), vectorised and broadcast over eta1 and omega_check."""
+def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> Pulloff:
+    """Refined pull-off (Eqs. 71, 106), vectorised and broadcast over eta1 and omega_check: level ``refined``."""
     abar = np.vectorize(lambda e, w: critical_abar_refined(e, chi0, w, law), otypes=[float])(
         np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float)
     )
-    return PulloffEstimate.from_abar(abar, law)
+    return pulloff_from_abar("refined", abar, law)
 
 
 # --- Nominal point contact of a rigidly fixed indenter, Eqs. (122)–(123) -------------------
 
 
-class NominalPointContact(NamedTuple):
-    """Steady state of the rigidly fixed nominal point contact (Secs. 3.5.4, 3.7)."""
+def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: RateLaw) -> SteadyState:
+    """Solve Eqs. (122)–(123) for Abar, broadcast over eta1 and omega_check: the record of level ``refined``.
 
-    abar: Array  # internal variable Abar = omega A / v0, Eq. (45)
-    abar_m: Array  # a_m / a_o = J0^(2/3), Eq. (123)
-    w_eff_ratio: Array  # w_eff / w0 = J0^2, Eq. (49)
-    a_over_am: Array  # A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check), Eq. (98) corrected
-
-
-def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: RateLaw) -> NominalPointContact:
-    """Solve Eqs. (122)–(123) for Abar, broadcast over eta1 and omega_check.
-
-    Points with A/a_m > 1 are geometrically impossible and A/a_m > 0.1 lies outside the
-    asymptotic model's applicability (Sec. 3.5.3); they are returned, not hidden, so the caller
-    can report them.
+    abar_m = J0^(2/3) (Eq. 123), w_eff/w0 = J0^2 (Eq. 49), A/a_m (Eq. 98 corrected), P_m/|P_JKR| from
+    Eq. (52) with sqrt(w_eff/w0) for J0, and deltabar_m = abar_m^2 - J0 abar_m^(1/2) = 0 (Eq. 53 with
+    Eq. 123). Points with A/a_m > 1 are geometrically impossible and A/a_m > 0.1 lies outside the
+    asymptotic model's applicability (Sec. 3.5.3); they are returned, not hidden, so the caller can
+    report them.
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
     abar = np.vectorize(
@@ -134,4 +129,21 @@ def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, 
     )(eta1, omega_check)
     j0 = j_integrals_for_law(abar, law)[0]
     abar_m = nominal_point_contact_closure(j0)
-    return NominalPointContact(abar, abar_m, j0**2, contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check))
+    w_eff_ratio = j0**2
+    return SteadyState(
+        "refined", np.full(abar.shape, "ok"), abar, abar_m, w_eff_ratio,
+        contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check),
+        mean_force_over_pulloff(abar_m, np.sqrt(w_eff_ratio)), np.zeros(abar.shape),
+    )
+
+
+def leading_nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: RateLaw) -> SteadyState:
+    """Leading order of the rigidly fixed nominal point contact (Eqs. 55, 99, 123): the record of level ``leading``.
+
+    The refined solution at omega_check = infinity (frequency independent), with A/a_m (Eq. 98
+    corrected) at the actual ``omega_check``.
+    """
+    eta1 = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))[0]
+    limit = nominal_point_contact(eta1, math.inf, chi0, law)
+    a_over_am = contact_radius_amplitude_ratio(limit.Abar, limit.abar_m, chi0, omega_check)
+    return replace(limit, level="leading", A_over_am=a_over_am)

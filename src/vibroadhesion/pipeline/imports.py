@@ -7,7 +7,13 @@ under ``if TYPE_CHECKING:`` excluded (they never run). Importing ``a.b.c`` runs 
 ``a`` and ``a.b`` first, so their ``__init__.py`` count too. Editing one of these files (its
 content: Snakemake compares small files by content) reruns exactly the rules that import it.
 
-Standard library only: the Snakefile imports this module while it builds the DAG.
+The registry of model levels (:mod:`vibroadhesion.core.levels`) imports the functions of the levels
+by name, which no import statement shows: a source that resolves them declares which
+(``LEVEL_FUNCTIONS``, pairs of role and function), and the modules of those functions count as
+imported by it.
+
+Standard library only (and the registry, itself standard library only): the Snakefile imports this
+module while it builds the DAG.
 """
 
 from __future__ import annotations
@@ -17,6 +23,8 @@ import json
 from collections.abc import Iterable, Iterator
 from functools import cache
 from pathlib import Path
+
+from vibroadhesion.core import levels
 
 PACKAGE = "vibroadhesion"
 
@@ -47,14 +55,31 @@ def _runtime_statements(body: list[ast.stmt]) -> Iterator[ast.AST]:
             stack.extend(getattr(node, block, ()))
 
 
+def level_modules(body: list[ast.stmt]) -> set[str]:
+    """Modules of the registry's functions that a source declares it resolves: its ``LEVEL_FUNCTIONS``.
+
+    A module-level ``LEVEL_FUNCTIONS = (("fit", "pulloff"), ...)`` names the modules of
+    :func:`vibroadhesion.core.levels.modules` for each pair.
+    """
+    found: set[str] = set()
+    for node in body:
+        if isinstance(node, ast.Assign) and any(isinstance(t, ast.Name) and t.id == "LEVEL_FUNCTIONS"
+                                                for t in node.targets):
+            for role, function in ast.literal_eval(node.value):
+                found.update(levels.modules(role, function))
+    return found
+
+
 def imported_names(source: str, where: str) -> set[str]:
     """Dotted names of the package that the Python ``source`` imports.
 
-    ``from a import b`` gives ``a`` and ``a.b`` (``b`` may be a module or a name in ``a``). ``where`` names the
-    source in the error of a relative import.
+    ``from a import b`` gives ``a`` and ``a.b`` (``b`` may be a module or a name in ``a``); the modules of the
+    registry's functions it declares (:func:`level_modules`) count too. ``where`` names the source in the
+    error of a relative import.
     """
-    names: set[str] = set()
-    for node in _runtime_statements(ast.parse(source).body):
+    body = ast.parse(source).body
+    names: set[str] = level_modules(body)
+    for node in _runtime_statements(body):
         if isinstance(node, ast.Import):
             names.update(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom):

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.core import groups
+from vibroadhesion.core import groups, levels
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.pipeline import data
 
@@ -69,14 +69,11 @@ def rows_at_each(table: pd.DataFrame, column: str, values: Sequence[float], by: 
     return pd.concat([rows_at(rows, column, values) for _, rows in table.groupby(by, sort=True)])
 
 
-#: The columns of the virtual pull-off tables, in the order of the model levels.
-VIRTUAL_PULLOFF_MODELS = ["simulation", "leading", "refined", "exact_averaging", "exact_averaging_force_minimum"]
-
-
 def virtual_pulloff_tables(virtual_csv: str | Path) -> list[tuple[str, pd.DataFrame, str]]:
     """(heading, table, remark) per fixation of a virtual pull-off CSV.
 
-    The table has P_cr/P_JKR of the SIMULATED pull-off and of each prediction present, the
+    The table has P_cr/P_JKR of the SIMULATED pull-off and of each prediction present (columns in the
+    order of the registry, :mod:`vibroadhesion.core.levels`), the
     relative error ``prediction / simulation - 1`` of each, the simulation's status and its
     number of steady states, indexed by (frequency, h1). The remark gives the simulated mean
     contact radius at pull-off as a share of the JKR critical radius (criterion a_m = a_cr, Eq. 60).
@@ -88,7 +85,7 @@ def virtual_pulloff_tables(virtual_csv: str | Path) -> list[tuple[str, pd.DataFr
                 f" (kappa = {rows['kappa'].iloc[0]:g}, zeta = {rows['zeta'].iloc[0]:g}; "
                 "leading: Eqs. (67)-(69), refined: Eq. (90) at a_m = a_cr)")
         ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
-        ratio = ratio[[m for m in VIRTUAL_PULLOFF_MODELS if m in ratio.columns]]
+        ratio = ratio[[m for m in levels.names("virtual_pulloff_rigid") if m in ratio.columns]]
         for model in ratio.columns.drop("simulation"):
             ratio[f"{model} error"] = ratio[model] / ratio["simulation"] - 1
         ratio = ratio.rename(columns={"simulation": "SIMULATED"})

@@ -8,8 +8,9 @@ Modules, each importing only from those before it:
   :class:`vibroadhesion.core.problem.Problem`, the contact kernel and the static state;
 * :mod:`~vibroadhesion.simulation.integrators`: one period in scaled variables (right-hand sides,
   Jacobians) and the choice between the Fortran DOP853 and :func:`scipy.integrate.solve_ivp`;
-* :mod:`~vibroadhesion.simulation.orbits`: the :class:`SteadyState` record of a period (means,
-  harmonics, extremes), the frozen-contact start of the shooting, and :func:`transient`;
+* :mod:`~vibroadhesion.simulation.orbits`: a period as a :class:`~vibroadhesion.core.records.SteadyState`
+  with its :class:`~vibroadhesion.core.records.OrbitDiagnostics` (means, harmonics, extremes), the
+  frozen-contact start of the shooting, and :func:`transient`;
 * :mod:`~vibroadhesion.simulation.shooting`: :func:`steady_state`, the periodic orbit as a fixed
   point of the one-period map (rigid and compliant fixation).
 
@@ -21,13 +22,12 @@ from vibroadhesion.simulation.model import (
     StaticState,
     static_state,
 )
-from vibroadhesion.simulation.orbits import SteadyState, Transient, transient
+from vibroadhesion.simulation.orbits import Transient, transient
 from vibroadhesion.simulation.shooting import steady_state
 
 __all__ = [
     "NoStaticContactError",
     "StaticState",
-    "SteadyState",
     "Transient",
     "static_state",
     "steady_state",

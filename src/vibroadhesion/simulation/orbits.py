@@ -1,9 +1,11 @@
 """What a periodic orbit of the full model is reported as, where the shooting starts it, and the transient.
 
-:class:`SteadyState` is the record of a converged period (:func:`summarise`) or of a failure
-(:func:`failure_record`); :func:`frozen_start` is the limit omega_check -> infinity of the orbit
-(abar frozen over a period) that starts the shooting; :func:`transient` integrates period after
-period from the static state, the brute-force reference of the shooting.
+:class:`~vibroadhesion.core.records.SteadyState` (level ``simulation``, with the orbit's
+:class:`~vibroadhesion.core.records.OrbitDiagnostics`) is the record of a converged period
+(:func:`summarise`) or of a failure (:func:`failure_record`); :func:`frozen_start` is the limit
+omega_check -> infinity of the orbit (abar frozen over a period) that starts the shooting;
+:func:`transient` integrates period after period from the static state, the brute-force reference
+of the shooting.
 
 Outputs
 -------
@@ -33,6 +35,7 @@ from scipy.optimize import brentq
 
 from vibroadhesion.core.groups import PHAT_JKR
 from vibroadhesion.core.problem import Problem
+from vibroadhesion.core.records import OrbitDiagnostics, SteadyState, SteadyStatus
 from vibroadhesion.simulation.integrators import (
     IntegrationError,
     Integrator,
@@ -52,7 +55,6 @@ from vibroadhesion.simulation.model import (
     absolute_start,
 )
 
-Status = Literal["converged", "contact_loss", "not_converged", "integration_failure", "speed_unresolved"]
 #: Floquet multipliers: complex, except that :func:`numpy.linalg.eigvals` returns them as real
 #: numbers when all of them are real (compliant fixation).
 Multipliers = NDArray[np.inexact[Any]]
@@ -67,47 +69,11 @@ MAX_ABAR = 1e4
 # --- Records ---------------------------------------------------------------------------------------
 
 
-class SteadyState(NamedTuple):
-    """Periodic steady state found by shooting (module docstring for the definitions).
-
-    Harmonic coefficients refer to tau = omega t with h - h0 = h1 sin tau. The numbers are NaN
-    for ``contact_loss``, ``not_converged`` and ``integration_failure`` (``start_state`` is then
-    the last state tried); ``speed_unresolved`` keeps them but flags that the orbit came within
-    1e-3 of the numerical speed cap. ``tau_contact_loss`` is finite only for ``contact_loss``.
-    """
-
-    status: Status
-    message: str
-    start_state: Array  # state at tau = 0 mod 2pi: (abar,) rigid, (xbar, dxbar/dtau, abar) compliant
-    abar_m: float  # a_m / a_o, mean over the period
-    abar: float  # internal variable Abar = omega A / v0 (Eq. 45)
-    a_over_am: float  # A / a_m, A = half the peak-to-peak range of a
-    a1_over_am: float  # first-harmonic amplitude of a over a_m
-    a_c: float  # first-harmonic cosine coefficient of a / a_o
-    a_s: float  # first-harmonic sine coefficient of a / a_o
-    w_eff_ratio: float  # w_eff / w0 = (mean sqrt(w/w0))^2, Eq. (18)
-    pm_over_abs_pjkr: float  # mean(P) / |P_JKR| = mean(Phat)/(3/4); tensile mean force negative
-    phat_m: float
-    phat_c: float
-    phat_s: float
-    deltabar_m: float
-    deltabar_c: float
-    deltabar_s: float
-    peak_speed: float  # max |adot| / v0 over the period
-    peak_speed_in_range: bool | None  # inside ``speed_range`` (None when no range is given)
-    floquet_multipliers: Multipliers
-    stable: bool  # all |multipliers| < 1
-    periodicity_residual: float  # max_i |y_i(2pi) - y_i(0)| / scale_i (abar: relative to abar(0))
-    iterations: int  # one-period integrations of the shooting (finite-difference ones not counted)
-    integrator: str
-    tau_contact_loss: float
-
-
 class Transient(NamedTuple):
     """Brute-force integration period after period (the states at tau = 2 pi k)."""
 
     status: Literal["completed", "contact_loss"]
-    states: Array  # (periods completed + 1, state dimension), same layout as SteadyState.start_state
+    states: Array  # (periods completed + 1, state dimension), same layout as OrbitDiagnostics.start_state
     tau_contact_loss: float
 
 
@@ -196,23 +162,27 @@ def summarise(
         d_c += quad[8] * period.x_scale / math.pi
         d_s += quad[9] * period.x_scale / math.pi
     in_range = None if speed_range is None else bool(speed_range[0] <= peak_speed <= speed_range[1])
-    status: Status = "converged"
+    status: SteadyStatus = "ok"
     message = "periodic steady state"
     if peak_speed > _RESOLVED_SPEED_FRACTION * SPEED_CAP * rate:
         status = "speed_unresolved"
         message = f"peak |d abar/d tau| = {peak_speed / rate:.3g} is within 1e-3 of the numerical speed cap"
+    orbit = OrbitDiagnostics(
+        start_state=period.start.copy(), A1_over_am=math.hypot(a_c, a_s) / abar_m, abar_c=a_c, abar_s=a_s,
+        phat_m=phat_m, phat_c=phat_c, phat_s=phat_s, deltabar_c=d_c, deltabar_s=d_s, peak_speed=peak_speed,
+        peak_speed_in_range=in_range, floquet_multipliers=multipliers, periodicity_residual=residual,
+        iterations=iterations, integrator=integrators.description(), tau_contact_loss=math.nan,
+    )
     return SteadyState(
-        status=status, message=message, start_state=period.start.copy(), abar_m=abar_m,
-        abar=half_range, a_over_am=half_range / (rate * abar_m), a1_over_am=math.hypot(a_c, a_s) / abar_m,
-        a_c=a_c, a_s=a_s, w_eff_ratio=(quad[3] / TWO_PI) ** 2, pm_over_abs_pjkr=phat_m / -PHAT_JKR,
-        phat_m=phat_m, phat_c=phat_c, phat_s=phat_s, deltabar_m=d_m, deltabar_c=d_c, deltabar_s=d_s,
-        peak_speed=peak_speed, peak_speed_in_range=in_range, floquet_multipliers=multipliers,
-        stable=bool(np.all(np.abs(multipliers) < 1.0)), periodicity_residual=residual, iterations=iterations,
-        integrator=integrators.description(), tau_contact_loss=math.nan,
+        level="simulation", status=np.asarray(status), Abar=np.asarray(half_range), abar_m=np.asarray(abar_m),
+        w_eff_ratio=np.asarray((quad[3] / TWO_PI) ** 2), A_over_am=np.asarray(half_range / (rate * abar_m)),
+        pm_over_abs_pjkr=np.asarray(phat_m / -PHAT_JKR), deltabar_m=np.asarray(d_m),
+        stable=np.asarray(np.all(np.abs(multipliers) < 1.0)),
+        orbit=orbit, message=message,
     )
 
 
-def failure_record(status: Status, message: str, model: Model, start: Array, iterations: int,
+def failure_record(status: SteadyStatus, message: str, model: Model, start: Array, iterations: int,
                    integrators: Integrators, tau_loss: float = math.nan) -> SteadyState:
     """The record of a failure: ``status`` and ``message``, the last state tried, every number NaN.
 
@@ -220,11 +190,11 @@ def failure_record(status: Status, message: str, model: Model, start: Array, ite
     and ``stable`` is False.
     """
     nan = math.nan
-    return SteadyState(
-        status, message, np.asarray(start, dtype=float).copy(), nan, nan, nan, nan, nan, nan, nan, nan, nan,
-        nan, nan, nan, nan, nan, nan, None, np.full(model.dim, nan, dtype=complex), False, nan, iterations,
-        integrators.description(), tau_loss,
+    orbit = OrbitDiagnostics(
+        np.asarray(start, dtype=float).copy(), nan, nan, nan, nan, nan, nan, nan, nan, nan, None,
+        np.full(model.dim, nan, dtype=complex), nan, iterations, integrators.description(), tau_loss,
     )
+    return SteadyState.unsolved("simulation", status, message, orbit)
 
 
 

@@ -58,6 +58,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from vibroadhesion.core.problem import Problem
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.simulation.integrators import (
     IntegrationError,
     Integrator,
@@ -72,7 +73,7 @@ from vibroadhesion.simulation.integrators import (
     x_scale,
 )
 from vibroadhesion.simulation.model import Array, Model, absolute_start
-from vibroadhesion.simulation.orbits import MAX_ABAR, SteadyState, failure_record, frozen_start, summarise
+from vibroadhesion.simulation.orbits import MAX_ABAR, failure_record, frozen_start, summarise
 
 #: Central-difference step of the one-period map in the scaled coordinates (n > 1).
 _FD_STEP = 1e-5
@@ -403,8 +404,8 @@ def steady_state(
     """Periodic steady state of the full model for ``problem`` by shooting on the one-period map.
 
     The fixation (rigid or compliant) is ``problem.fixation``. ``initial_state`` (layout of
-    ``SteadyState.start_state``) defaults to the static state (Eq. 10); a continuation passes the
-    previous orbit's ``start_state``. ``speed_range`` = (lo, hi) is the range of |adot|/v0 in which
+    ``OrbitDiagnostics.start_state``) defaults to the static state (Eq. 10); a continuation passes the
+    previous orbit's ``orbit.start_state``. ``speed_range`` = (lo, hi) is the range of |adot|/v0 in which
     the rate law was characterised. ``integrator``: "auto" (see :class:`Integrators`),
     "fortran-dop853" (:class:`scipy.integrate.ode`), or a :func:`scipy.integrate.solve_ivp`
     method name for everything. Numerical failure and contact loss are returned as the

@@ -7,47 +7,43 @@ from collections.abc import Mapping, Sequence
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.core import groups
-from vibroadhesion.core.jkr import pulloff_force
-from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model, PulloffPrediction, predict_pulloff
-from vibroadhesion.models import exact_averaging
+from vibroadhesion.core import levels
+from vibroadhesion.core.records import Pulloff
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
 FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio", "pulloff_mN"]
 
 
 def fig4_table(
-    params: Mapping[Model, GentSchultzParameters],
+    params: Mapping[str, GentSchultzParameters],
     frequencies_hz: Sequence[float],
     h1_um: np.ndarray,
     *,
     radius: float,
     reduced_modulus: float,
 ) -> pd.DataFrame:
-    """Fig. 4's table: pull-off against amplitude for every model level.
+    """Fig. 4's table: pull-off against amplitude for every level of role ``fig4``, each with its ``params``.
 
-    Leading-order curve (Eqs. 71–72, no frequency), refined curves (Eq. 106) per frequency, and the
-    exact-averaging curve (the exact high-frequency limit with the paper's criterion a_m = a_cr,
-    :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`). Column ``sqrt_w_eff_ratio`` is
-    sqrt(w_eff/w0) at detachment: J0(Abar_cr) for the J-integral levels, alpha* for exact averaging.
+    In the registry's Fig. 4 order (:func:`vibroadhesion.core.levels.fig4_names`): the frequency-independent
+    curves (leading order, Eqs. 71–72; the exact high-frequency limit with the paper's criterion
+    a_m = a_cr, :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`) with frequency NaN,
+    then the frequency-dependent ones (refined, Eq. 106) at each test frequency. Column ``sqrt_w_eff_ratio``
+    is sqrt(w_eff/w0) at detachment: J0(Abar_cr) for the J-integral levels, alpha* for exact averaging.
     """
-    geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frames = []
-    lead = predict_pulloff("leading", params["leading"], np.nan, h1_um, **geometry)
-    frames.append(_fig4_frame("leading", np.nan, h1_um, lead))
-    p = params["leading"]
-    exact = exact_averaging.pulloff_at_critical_radius(np.asarray(h1_um) * 1e-6 / radius,
-                                                       groups.chi0(p.w0, reduced_modulus, radius), GentSchultz(p.n))
-    frames.append(_fig4_frame("exact_averaging", np.nan, h1_um, PulloffPrediction(
-        exact.abar, exact.alpha, exact.ratio, -pulloff_force(p.w0, radius) * exact.ratio * 1e3)))
-    for f in frequencies_hz:
-        refined = predict_pulloff("refined", params["refined"], f, h1_um, **geometry)
-        frames.append(_fig4_frame("refined", f, h1_um, refined))
+    for model in levels.fig4_names():
+        frequencies = frequencies_hz if levels.level(model).frequency_dependent else [np.nan]
+        for f in frequencies:
+            pred = predict_pulloff(model, params[model], f, h1_um, radius=radius, reduced_modulus=reduced_modulus)
+            frames.append(_fig4_frame(model, f, h1_um, pred, params[model].w0, radius))
     return pd.concat(frames, ignore_index=True)[FIG4_COLUMNS]
 
 
-def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: PulloffPrediction) -> pd.DataFrame:
+def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: Pulloff, w0: float,
+                radius: float) -> pd.DataFrame:
+    """One curve of Fig. 4: the record's Abar_cr, sqrt(w_eff/w0), P_cr/P_cr^JKR and |P_cr| in mN (Eqs. 70-71)."""
     return pd.DataFrame(
-        {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.abar_cr,
-         "sqrt_w_eff_ratio": pred.j0, "pulloff_ratio": pred.ratio, "pulloff_mN": pred.pulloff_mN}
+        {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.Abar_cr,
+         "sqrt_w_eff_ratio": pred.sqrt_w_eff_ratio, "pulloff_ratio": pred.pulloff_ratio,
+         "pulloff_mN": pulloff_mN(pred, w0, radius)}
     )

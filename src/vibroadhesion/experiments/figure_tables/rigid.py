@@ -24,10 +24,10 @@ def fig6_table(
     h1 = np.asarray(h1_um, dtype=float)[:, None]
     sol = nominal_point_contact(h1 * 1e-6 / radius, omega_check[None, :], chi0, GentSchultz(n))
     return pd.DataFrame(
-        {"h1_um": np.broadcast_to(h1, sol.abar.shape).ravel(),
-         "omega_check": np.broadcast_to(omega_check, sol.abar.shape).ravel(),
-         "Abar": sol.abar.ravel(), "abar_m": sol.abar_m.ravel(), "w_eff_ratio": sol.w_eff_ratio.ravel(),
-         "A_over_am": sol.a_over_am.ravel()}
+        {"h1_um": np.broadcast_to(h1, sol.Abar.shape).ravel(),
+         "omega_check": np.broadcast_to(omega_check, sol.Abar.shape).ravel(),
+         "Abar": sol.Abar.ravel(), "abar_m": sol.abar_m.ravel(), "w_eff_ratio": sol.w_eff_ratio.ravel(),
+         "A_over_am": sol.A_over_am.ravel()}
     )[FIG6_COLUMNS]
 
 
@@ -38,7 +38,7 @@ def fig7_table(
     h1 = np.asarray(h1_um, dtype=float)[:, None]
     est = pulloff_refined(h1 * 1e-6 / radius, chi0, omega_check[None, :], GentSchultz(n))
     return pd.DataFrame(
-        {"h1_um": np.broadcast_to(h1, est.abar_cr.shape).ravel(),
-         "omega_check": np.broadcast_to(omega_check, est.abar_cr.shape).ravel(),
-         "Abar_cr": est.abar_cr.ravel(), "pulloff_ratio": est.ratio.ravel()}
+        {"h1_um": np.broadcast_to(h1, est.Abar_cr.shape).ravel(),
+         "omega_check": np.broadcast_to(omega_check, est.Abar_cr.shape).ravel(),
+         "Abar_cr": est.Abar_cr.ravel(), "pulloff_ratio": est.pulloff_ratio.ravel()}
     )[FIG7_COLUMNS]

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from vibroadhesion.core.levels import names
 from vibroadhesion.experiments.fitting import fit_gent_schultz
-from vibroadhesion.experiments.pulloff import MODELS, GentSchultzParameters
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.artefacts import write_json
 
@@ -20,7 +21,7 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
     rows = data.read_canonical_pulloff(pulloff_csv)
     published = GentSchultzParameters(setup.w0, setup.n, setup.v0)
     geometry = {"radius": setup.radius, "reduced_modulus": setup.reduced_modulus}
-    fits = {model: fit_gent_schultz(rows, model, published, **geometry) for model in MODELS}
+    fits = {model: fit_gent_schultz(rows, model, published, **geometry) for model in names("fit")}
     summary = {
         "data_rows": len(rows),
         "status": "published parameters passed through (no measured rows)" if rows.empty else "fitted",

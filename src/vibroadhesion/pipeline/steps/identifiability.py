@@ -14,7 +14,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.experiments import identifiability, virtual_pulloff
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, Model
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import rig
@@ -43,7 +43,7 @@ def _simulated_rigid_rows(virtual_csv: str | Path) -> pd.DataFrame:
 
 
 def fit_level(
-    setup_json: str | Path, fit_json: str | Path, virtual_csv: str | Path, model: Model, out: str | Path
+    setup_json: str | Path, fit_json: str | Path, virtual_csv: str | Path, model: str, out: str | Path
 ) -> None:
     """The pipeline's Gent-Schultz fit of one model level on the noise-free simulated pull-off rows."""
     setup, params, _ = rig(setup_json, fit_json)
