@@ -15,8 +15,8 @@ rule fig3_data:
         "results/benchmarks/rules/fig3_data.tsv"
     params:
         panel_n=config["fig3"]["panel_n"],
-        lo=config["fig3"]["log10_abar_min"],
-        hi=config["fig3"]["log10_abar_max"],
+        lo=config["fig3"]["log10_Abar_min"],
+        hi=config["fig3"]["log10_Abar_max"],
         points=config["fig3"]["points"],
     script:
         "../scripts/fig3_data.py"

@@ -60,16 +60,16 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
     """(a) J0, -Jc1, J1 for the fitted n with their large-Abar asymptotes; (b) J0, -Jc1 for several n."""
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     rows = table[np.isclose(table["n"], n_fitted)]
-    abar = rows["Abar"].to_numpy()
-    asym = j_integrals_large_abar(abar, n_fitted)
+    Abar = rows["Abar"].to_numpy()
+    asym = j_integrals_large_abar(Abar, n_fitted)
     for (label, column, sign), a, color in zip(
         [(r"$\mathcal{J}_0$", "J0", 1), (r"$-\mathcal{J}_{c1}$", "Jc1", -1), (r"$\mathcal{J}_1$", "J1", 1)],
         asym,
         ["C0", "C1", "C2"],
         strict=True,
     ):
-        ax_a.loglog(abar, sign * rows[column], color=color, label=label)
-        ax_a.loglog(abar, sign * a, "--", color=color, lw=0.9, label=f"{label}, large-$\\bar A$ asymptote")
+        ax_a.loglog(Abar, sign * rows[column], color=color, label=label)
+        ax_a.loglog(Abar, sign * a, "--", color=color, lw=0.9, label=f"{label}, large-$\\bar A$ asymptote")
     ax_a.set_ylim(1e-4, None)
     ax_a.set(xlabel=r"$\bar A$", title=f"(a) fitted n = {n_fitted:.4g}")
     ax_a.legend(ncol=2)

@@ -12,8 +12,8 @@ from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import fitted
 
 
-def fig3_data(fit_json: str | Path, out: str | Path, panel_n: Sequence[float], log10_abar_min: float,
-              log10_abar_max: float, points: int) -> None:
+def fig3_data(fit_json: str | Path, out: str | Path, panel_n: Sequence[float], log10_Abar_min: float,
+              log10_Abar_max: float, points: int) -> None:
     """results/fig3/fig3.csv on ``points`` log-spaced Abar in [10^min, 10^max] (Eq. 77)."""
-    abar = np.logspace(log10_abar_min, log10_abar_max, points)
-    write_csv(fig3_table([fitted(fit_json)["n"], *panel_n], abar), out)
+    Abar = np.logspace(log10_Abar_min, log10_Abar_max, points)
+    write_csv(fig3_table([fitted(fit_json)["n"], *panel_n], Abar), out)
