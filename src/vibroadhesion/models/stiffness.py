@@ -33,25 +33,25 @@ Array = NDArray[np.float64]
 class DynamicStiffness(NamedTuple):
     """Dynamic contact stiffness S* = S' + i S'' relative to 2 E* a_m, and its phase (Eqs. 117–121)."""
 
-    storage_rel: Array  # S' / (2 E* a_m)
-    loss_rel: Array  # S'' / (2 E* a_m)
+    S_storage_rel: Array  # S' / (2 E* a_m)
+    S_loss_rel: Array  # S'' / (2 E* a_m)
     phase_rad: Array  # arg S* = atan2(S'', S')
 
 
 def dynamic_stiffness(
-    abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw
+    Abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw
 ) -> DynamicStiffness:
     """Storage and loss stiffness relative to 2 E* a_m and the phase, Eqs. (117)–(121).
 
-    ``abar`` must be positive: at zero amplitude the ratio of Eq. (120) is 0/0 and its limit
+    ``Abar`` must be positive: at zero amplitude the ratio of Eq. (120) is 0/0 and its limit
     depends on how the amplitude vanishes.
     """
-    abar = np.asarray(abar, dtype=float)
+    Abar = np.asarray(Abar, dtype=float)
     abar_m = np.asarray(abar_m, dtype=float)
-    if np.any(abar <= 0):
+    if np.any(Abar <= 0):
         raise ValueError("the dynamic stiffness needs Abar > 0 (Eq. 120 is 0/0 at zero amplitude)")
-    _, jc1, j1 = j_integrals_for_law(abar, law)
-    common = -(6.0 ** (2 / 3)) * abar * np.sqrt(abar_m) / (np.asarray(omega_check, dtype=float) * chi0 * jc1)
+    _, jc1, j1 = j_integrals_for_law(Abar, law)
+    common = -(6.0 ** (2 / 3)) * Abar * np.sqrt(abar_m) / (np.asarray(omega_check, dtype=float) * chi0 * jc1)
     q = j1 / (4.0 * abar_m**1.5)
     r_delta, r_p = common * (1.0 - q), common * (1.0 - 3.0 * q)
     denominator = 1.0 + r_delta**2
