@@ -7,12 +7,12 @@ Independent references:
 * the paper's refined coefficients, Eqs. (93)–(96) as printed, with 30-digit J-integrals
   (tests/mpmath_reference.py) and the second-order terms derived in the module docstring, with Jc3
   and int S cos^4 by mpmath quadrature;
-* the closed-form small-amplitude limits abar_m(exact) - abar_m(refined) -> -(3/8) epsilon^2 and
-  Abar(exact)/Abar(refined) - 1 -> c epsilon^2 (c = 19/32 for n > 1, (3/16 + 1/(8(n+3)))/n for n < 1);
-* the high-frequency expansion to O(epsilon^2), solved with J-integrals from scipy's adaptive
+* the closed-form small-amplitude limits abar_m(exact) - abar_m(refined) -> -(3/8) A_over_ao^2 and
+  Abar(exact)/Abar(refined) - 1 -> c A_over_ao^2 (c = 19/32 for n > 1, (3/16 + 1/(8(n+3)))/n for n < 1);
+* the high-frequency expansion to O(A_over_ao^2), solved with J-integrals from scipy's adaptive
   quadrature (a second integrator) and scipy's fsolve;
 * the refined-model residual of vibroadhesion.models.compliant (Eqs. 87, 90–96), which the exact residual
-  must approach as O(epsilon^2).
+  must approach as O(A_over_ao^2).
 """
 
 from __future__ import annotations
@@ -44,13 +44,13 @@ from vibroadhesion.models.refined import nominal_point_contact as refined_nomina
 # ----------------------------------------------------------------- mpmath reference of the coefficients
 
 
-def harmonics_mp(abar_m: float, abar: float, epsilon: float, n: float) -> list[mp.mpf]:
+def harmonics_mp(abar_m: float, Abar: float, A_over_ao: float, n: float) -> list[mp.mpf]:
     """[mean, cos, sin of deltabar; mean, cos, sin of Phat; mean sqrt(w/w0)] at 25 digits, from
-    deltabar = r^2 - s sqrt(r), Phat = (4/3) r^3 - 2 s r^(3/2), r = abar_m + epsilon sin x,
+    deltabar = r^2 - s sqrt(r), Phat = (4/3) r^3 - 2 s r^(3/2), r = abar_m + A_over_ao sin x,
     s = sqrt(f(Abar cos x)) with the Gent–Schultz law f = 1 + |v|^n (v < 0), 1/(1 + v^n) (v > 0).
     """
     with mp.workdps(25):
-        a, big_a, e, nn = mp.mpf(abar_m), mp.mpf(abar), mp.mpf(epsilon), mp.mpf(n)
+        a, big_a, e, nn = mp.mpf(abar_m), mp.mpf(Abar), mp.mpf(A_over_ao), mp.mpf(n)
 
         def s(x):
             v = big_a * mp.cos(x)
@@ -77,7 +77,7 @@ def harmonics_mp(abar_m: float, abar: float, epsilon: float, n: float) -> list[m
         return out + [mp.quad(s, points) / (2 * mp.pi)]
 
 
-COEFFICIENT_CASES = [  # (n, abar_m, Abar, epsilon): small and large Abar, epsilon/abar_m up to 0.99
+COEFFICIENT_CASES = [  # (n, abar_m, Abar, A_over_ao): small and large Abar, A_over_ao/abar_m up to 0.99
     (0.05, 1.2, 3.0, 0.1),
     (0.05, 1.1, 1e8, 0.99 * 1.1),
     (N_PUBLISHED, 0.9, 50.0, 0.45),
@@ -94,37 +94,37 @@ def test_exact_coefficients_match_mpmath_over_the_period(case: tuple[float, floa
     relative (the J-integrals' rule is accurate to 1e-12); the mean indentation, a difference of two
     O(abar_m^2) terms that nearly cancel at the nominal point, to 1e-13 abar_m^2 absolute.
     """
-    n, abar_m, abar, epsilon = case
-    got = exact_harmonics(abar_m, abar, epsilon, GentSchultz(n))
-    ref = harmonics_mp(abar_m, abar, epsilon, n)
+    n, abar_m, Abar, A_over_ao = case
+    got = exact_harmonics(abar_m, Abar, A_over_ao, GentSchultz(n))
+    ref = harmonics_mp(abar_m, Abar, A_over_ao, n)
     assert abs(float(got[0]) - float(ref[0])) < 1e-13 * abar_m**2, (float(got[0]), ref[0])
     for k in range(1, 7):
         assert abs(float(got[k]) / float(ref[k]) - 1) < 1e-12, (k, float(got[k]), ref[k])
 
 
 def test_invalid_amplitude_is_rejected_and_static_state_is_exact() -> None:
-    """epsilon >= abar_m (A >= a_m) has no meaning for the ansatz: ValueError. Abar = epsilon = 0 is the
+    """A_over_ao >= abar_m (A >= a_m) has no meaning for the ansatz: ValueError. Abar = A_over_ao = 0 is the
     static JKR state: mean deltabar = abar_m^2 - sqrt(abar_m), harmonics 0, J0 = 1 (to rounding).
     """
     law = GentSchultz(N_PUBLISHED)
     with pytest.raises(ValueError):
         exact_harmonics(1.0, 3.0, 1.0, law)
     h = exact_harmonics(1.3, 0.0, 0.0, law)
-    assert abs(float(h.mean_indentation) - (1.3**2 - math.sqrt(1.3))) < 4e-15
-    assert abs(float(h.mean_force) - (4 / 3 * 1.3**3 - 2 * 1.3**1.5)) < 1e-14
-    assert max(abs(float(v)) for v in (h.indentation_cos, h.indentation_sin, h.force_cos, h.force_sin)) < 1e-15
-    assert abs(float(h.mean_sqrt_w) - 1) < 1e-15
+    assert abs(float(h.deltabar_m) - (1.3**2 - math.sqrt(1.3))) < 4e-15
+    assert abs(float(h.phat_m) - (4 / 3 * 1.3**3 - 2 * 1.3**1.5)) < 1e-14
+    assert max(abs(float(v)) for v in (h.deltabar_c, h.deltabar_s, h.phat_c, h.phat_s)) < 1e-15
+    assert abs(float(h.sqrt_w_eff_ratio) - 1) < 1e-15
 
 
 # ----------------------------------------------------------------- linearisation: Eqs. (93)-(96)
 
 
-def extra_integrals_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf]:
+def extra_integrals_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf]:
     """Jc3 = (2/pi) int_0^pi sqrt(f(Abar cos x)) cos 3x dx (Eq. 29, n = 3) and
     Js4 = (1/pi) int_0^pi sqrt(f(Abar cos x)) sin^4 x dx, 25 digits.
     """
     with mp.workdps(25):
-        big_a, nn = mp.mpf(abar), mp.mpf(n)
+        big_a, nn = mp.mpf(Abar), mp.mpf(n)
 
         def s(x):
             v = big_a * mp.cos(x)
@@ -138,52 +138,52 @@ def extra_integrals_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf]:
 @pytest.mark.parametrize("n", [N_PUBLISHED, 4.0])
 def test_linearisation_gives_the_printed_refined_coefficients_with_the_derived_corrections(n: float) -> None:
     """Eqs. (93)–(96) as printed (with chi0, nu0/omega_bar and kappa), plus the corrections of the module
-    docstring (epsilon^2 for the means and cosine terms, epsilon^3 for the sine terms), must equal the
+    docstring (A_over_ao^2 for the means and cosine terms, A_over_ao^3 for the sine terms), must equal the
     exact coefficients rescaled by c_o^2 (deltabar -> delta/R) and c_o^3/kappa (Phat -> P/(kR)), up to
-    the next order: epsilon^4 relative. Checked at epsilon = 1e-2 and 2e-2 (omega_bar fixed, nu0
-    chosen), tolerance 2 epsilon^4; the corrections alone are larger than 1e-3 epsilon^2 (not vacuous).
+    the next order: A_over_ao^4 relative. Checked at A_over_ao = 1e-2 and 2e-2 (omega_bar fixed, nu0
+    chosen), tolerance 2 A_over_ao^4; the corrections alone are larger than 1e-3 A_over_ao^2 (not vacuous).
     """
-    abar_m, abar, kappa, omega_bar = 1.2, 3.0, 1e-3, 20.0
-    j0, jc1, j1 = (mp.mpf(v) for v in j_integrals_mp(abar, n))
-    jc3, js4 = extra_integrals_mp(abar, n)
+    abar_m, Abar, kappa, omega_bar = 1.2, 3.0, 1e-3, 20.0
+    j0, jc1, j1 = (mp.mpf(v) for v in j_integrals_mp(Abar, n))
+    jc3, js4 = extra_integrals_mp(Abar, n)
     a, c2, c3 = mp.mpf(abar_m), mp.mpf(2) ** (mp.mpf(2) / 3), mp.mpf(3) ** (mp.mpf(1) / 3)
     chi0 = mp.mpf(CHI0)
     c_o = c2 ** mp.mpf(0.5) / c3**2 * chi0  # 2^(1/3) 3^(-2/3) chi0
     law = GentSchultz(n)
-    for epsilon in (1e-2, 2e-2):
-        nu0 = mp.mpf(epsilon) * omega_bar * c_o / abar  # epsilon = nu0 Abar/(omega_bar c_o)
+    for A_over_ao in (1e-2, 2e-2):
+        nu0 = mp.mpf(A_over_ao) * omega_bar * c_o / Abar  # A_over_ao = nu0 Abar/(omega_bar c_o)
         printed = [
             -(c2 / c3**4) * chi0**2 * mp.sqrt(a) * jc1,  # (93)
-            (c2**2 / c3**2) * chi0 * (nu0 / omega_bar) * abar * a * (1 - j1 / (4 * a**1.5)),  # (94)
+            (c2**2 / c3**2) * chi0 * (nu0 / omega_bar) * Abar * a * (1 - j1 / (4 * a**1.5)),  # (94)
             -(4 * chi0**3 / (9 * kappa)) * a**1.5 * jc1,  # (95)
-            (c2**4 / c3**4) * chi0**2 * (nu0 / (kappa * omega_bar)) * abar * a**2 * (1 - 3 * j1 / (4 * a**1.5)),  # (96)
+            (c2**4 / c3**4) * chi0**2 * (nu0 / (kappa * omega_bar)) * Abar * a**2 * (1 - 3 * j1 / (4 * a**1.5)),  # (96)
         ]
-        e = mp.mpf(epsilon)
+        e = mp.mpf(A_over_ao)
         corrections = [
             c_o**2 * e**2 * (jc1 - jc3) / (32 * a**1.5),
             -c_o**2 * e**3 * js4 / (8 * a**2.5),
             -(c_o**3 / kappa) * 3 * e**2 * (jc1 - jc3) / (16 * mp.sqrt(a)),
             (c_o**3 / kappa) * e**3 * (1 + js4 / (4 * a**1.5)),
         ]
-        h = exact_harmonics(abar_m, abar, epsilon, law)
+        h = exact_harmonics(abar_m, Abar, A_over_ao, law)
         scale_d, scale_p = float(c_o**2), float(c_o**3 / kappa)
-        exact = [scale_d * float(h.indentation_cos), scale_d * float(h.indentation_sin),
-                 scale_p * float(h.force_cos), scale_p * float(h.force_sin)]
+        exact = [scale_d * float(h.deltabar_c), scale_d * float(h.deltabar_s),
+                 scale_p * float(h.phat_c), scale_p * float(h.phat_s)]
         for k in range(4):
             expected = printed[k] + corrections[k]
-            assert abs(exact[k] / float(expected) - 1) < 2 * epsilon**4, (k, epsilon, exact[k], expected)
-            assert abs(float(corrections[k] / printed[k])) > 1e-3 * epsilon**2
-        # means: Eqs. (53), (52) (the leading order of Eq. 87) plus the epsilon^2 terms
+            assert abs(exact[k] / float(expected) - 1) < 2 * A_over_ao**4, (k, A_over_ao, exact[k], expected)
+            assert abs(float(corrections[k] / printed[k])) > 1e-3 * A_over_ao**2
+        # means: Eqs. (53), (52) (the leading order of Eq. 87) plus the A_over_ao^2 terms
         mean_indentation = a**2 - j0 * mp.sqrt(a) + e**2 * (mp.mpf(1) / 2 + j1 / (16 * a**1.5))
         mean_force = mp.mpf(4) / 3 * a**3 - 2 * j0 * a**1.5 + e**2 * (2 * a - 3 * j1 / (8 * mp.sqrt(a)))
-        assert abs(float(h.mean_indentation) - float(mean_indentation)) < 2 * epsilon**4
-        assert abs(float(h.mean_force) / float(mean_force) - 1) < 2 * epsilon**4
+        assert abs(float(h.deltabar_m) - float(mean_indentation)) < 2 * A_over_ao**4
+        assert abs(float(h.phat_m) / float(mean_force) - 1) < 2 * A_over_ao**4
 
 
 def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() -> None:
     """Reference: vibroadhesion.models.compliant.residual (Eqs. 87, 90–96), the linearised system. At fixed
-    (omega_bar, abar_m, Abar), epsilon = nu0 Abar/(omega_bar c_o) -> 0 with nu0: the difference of both
-    columns divided by epsilon^2 must converge (change below 1e-3 relative from nu0 = 1e-5 to 1e-6) and
+    (omega_bar, abar_m, Abar), A_over_ao = nu0 Abar/(omega_bar c_o) -> 0 with nu0: the difference of both
+    columns divided by A_over_ao^2 must converge (change below 1e-3 relative from nu0 = 1e-5 to 1e-6) and
     the difference be below 1e-6 at nu0 = 1e-6.
     """
     law = GentSchultz(N_PUBLISHED)
@@ -191,32 +191,32 @@ def test_exact_compliant_residual_tends_to_the_refined_one_as_epsilon_squared() 
     scaled = []
     for nu0 in (1e-5, 1e-6):
         p = Fixation.compliant(kappa=1e-3, zeta=0.05, nu0=nu0, mu=1e-7)
-        epsilon = nu0 * np.exp(x[:, 2]) / (np.exp(x[:, 0]) * C_O)
+        A_over_ao = nu0 * np.exp(x[:, 2]) / (np.exp(x[:, 0]) * C_O)
         difference = compliant_residual(x, p, CHI0, ETA1, law) - residual(x, p, CHI0, ETA1, law)
-        scaled.append(difference / epsilon[:, None] ** 2)
+        scaled.append(difference / A_over_ao[:, None] ** 2)
     assert np.max(np.abs(scaled[1] / scaled[0] - 1)) < 1e-3
     assert np.max(np.abs(difference)) < 1e-6
 
 
 def test_compliant_mean_balance_reduces_to_the_rigid_and_static_cases() -> None:
-    """kappa -> infinity: column 0 becomes the rigid mean equation (mean deltabar - deltabar0)/K0[sqrt]
+    """kappa -> infinity: column 0 becomes the rigid mean equation (mean deltabar - base_offset)/K0[sqrt]
     (Eq. 56 generalised), up to O(c_o/kappa); checked with kappa = 1e12 against exact_harmonics, to 1e-10.
     """
     law = GentSchultz(N_PUBLISHED)
     p = Fixation.compliant(kappa=1e12, zeta=0.0, nu0=1e-5, mu=0.0)
     x = np.log(np.array([[3.0, 1.2, 20.0]]))
-    epsilon = 1e-5 * 20.0 / (3.0 * C_O)
-    h = exact_harmonics(1.2, 20.0, epsilon, law)
-    k0_sqrt = 1.2**2 + 0.5 * epsilon**2 - float(h.mean_indentation)
-    for deltabar0 in (0.0, 0.3):
-        col = float(compliant_residual(x, p, CHI0, ETA1, law, deltabar0)[0, 0])
-        assert abs(col - (float(h.mean_indentation) - deltabar0) / k0_sqrt) < 1e-10
+    A_over_ao = 1e-5 * 20.0 / (3.0 * C_O)
+    h = exact_harmonics(1.2, 20.0, A_over_ao, law)
+    k0_sqrt = 1.2**2 + 0.5 * A_over_ao**2 - float(h.deltabar_m)
+    for base_offset in (0.0, 0.3):
+        col = float(compliant_residual(x, p, CHI0, ETA1, law, base_offset)[0, 0])
+        assert abs(col - (float(h.deltabar_m) - base_offset) / k0_sqrt) < 1e-10
 
 
 # ----------------------------------------------------------------- rigid fixation
 
 
-RIGID_CASES = [  # (n, h1 in m, omega_check, deltabar0)
+RIGID_CASES = [  # (n, h1 in m, omega_check, base_offset)
     (N_PUBLISHED, 20e-6, 1e4, 0.0),
     (N_PUBLISHED, 100e-6, 1e6, 0.0),
     (4.0, 60e-6, 3e3, 0.3),
@@ -228,18 +228,18 @@ RIGID_CASES = [  # (n, h1 in m, omega_check, deltabar0)
 @pytest.mark.parametrize("case", RIGID_CASES)
 def test_rigid_solution_satisfies_both_equations_in_mpmath(case: tuple[float, float, float, float]) -> None:
     """Reference: the mpmath coefficients (25 digits) at the returned (abar_m, Abar): mean deltabar =
-    deltabar0 to 1e-12 abar_m^2 and sqrt(deltabar_c^2 + deltabar_s^2) = etahat to 1e-11 relative; the
-    returned w_eff/w0 = J0^2, A/a_m = epsilon/abar_m and P_m/|P_JKR| = mean Phat/(3/4) match them.
+    base_offset to 1e-12 abar_m^2 and sqrt(deltabar_c^2 + deltabar_s^2) = etahat to 1e-11 relative; the
+    returned w_eff/w0 = J0^2, A/a_m = A_over_ao/abar_m and P_m/|P_JKR| = mean Phat/(3/4) match them.
     """
-    n, h1, omega_check, deltabar0 = case
-    sol = rigid_fixation(h1 / RADIUS, omega_check, CHI0, GentSchultz(n), deltabar0)
-    epsilon = float(sol.Abar) / (omega_check * C_O)
-    ref = [float(v) for v in harmonics_mp(float(sol.abar_m), float(sol.Abar), epsilon, n)]
+    n, h1, omega_check, base_offset = case
+    sol = rigid_fixation(h1 / RADIUS, omega_check, CHI0, GentSchultz(n), base_offset)
+    A_over_ao = float(sol.Abar) / (omega_check * C_O)
+    ref = [float(v) for v in harmonics_mp(float(sol.abar_m), float(sol.Abar), A_over_ao, n)]
     etahat = h1 / RADIUS / C_O**2
-    assert abs(ref[0] - deltabar0) < 1e-12 * sol.abar_m**2
+    assert abs(ref[0] - base_offset) < 1e-12 * sol.abar_m**2
     assert abs(math.hypot(ref[1], ref[2]) / etahat - 1) < 1e-11
     assert abs(sol.w_eff_ratio / ref[6] ** 2 - 1) < 1e-12
-    assert abs(sol.A_over_am / (epsilon / sol.abar_m) - 1) < 1e-14
+    assert abs(sol.A_over_am / (A_over_ao / sol.abar_m) - 1) < 1e-14
     assert abs(sol.pm_over_abs_pjkr / (ref[3] / 0.75) - 1) < 1e-11
 
 
@@ -264,24 +264,24 @@ def test_no_single_harmonic_state_is_reported_not_returned() -> None:
 
 
 def _amplitude_along_stable_branch(
-    omega_check: float, abar_grid: np.ndarray, law: GentSchultz
+    omega_check: float, Abar_grid: np.ndarray, law: GentSchultz
 ) -> list[tuple[float, float]]:
     """(A/a_m, sqrt(deltabar_c^2 + deltabar_s^2)) along the larger root of mean deltabar = 0, located on a
     grid of 400 radii by linear interpolation (independent of the solver's Brent iteration); stops
-    where the mean equation has no root above epsilon.
+    where the mean equation has no root above A_over_ao.
     """
     out = []
-    for abar in abar_grid:
-        epsilon = abar / (omega_check * C_O)
-        radii = np.geomspace(max(1.01 * epsilon, 0.05), 5.0, 400)
-        mean = exact_harmonics(radii, abar, epsilon, law).mean_indentation
+    for Abar in Abar_grid:
+        A_over_ao = Abar / (omega_check * C_O)
+        radii = np.geomspace(max(1.01 * A_over_ao, 0.05), 5.0, 400)
+        mean = exact_harmonics(radii, Abar, A_over_ao, law).deltabar_m
         crossing = np.flatnonzero((mean[:-1] < 0) & (mean[1:] >= 0))
         if crossing.size == 0:
             break
         k = crossing[-1]  # the larger root: the stable branch
         abar_m = radii[k] - mean[k] * (radii[k + 1] - radii[k]) / (mean[k + 1] - mean[k])
-        h = exact_harmonics(abar_m, abar, epsilon, law)
-        out.append((epsilon / abar_m, math.hypot(float(h.indentation_cos), float(h.indentation_sin))))
+        h = exact_harmonics(abar_m, Abar, A_over_ao, law)
+        out.append((A_over_ao / abar_m, math.hypot(float(h.deltabar_c), float(h.deltabar_s))))
     return out
 
 
@@ -306,40 +306,40 @@ def test_amplitude_along_the_branch_and_the_choice_of_the_smaller_root() -> None
 
 @pytest.mark.parametrize("n", [N_PUBLISHED, 2.0])
 def test_small_base_amplitude_limit_against_the_refined_model(n: float) -> None:
-    """eta1 -> 0 at fixed omega_check: the exact and refined (Eqs. 122–123) solutions differ at O(epsilon^2),
+    """eta1 -> 0 at fixed omega_check: the exact and refined (Eqs. 122–123) solutions differ at O(A_over_ao^2),
     with closed-form limits (J -> (1, 0, 1)):
 
-    * abar_m(exact) - abar_m(refined) -> -(3/8) epsilon^2 (mean equation's epsilon^2 (1/2 + 1/16) over 3/2);
-    * Abar(exact)/Abar(refined) - 1 -> c epsilon^2 with c = 19/32 for n > 1 (the amplitude is deltabar_s:
+    * abar_m(exact) - abar_m(refined) -> -(3/8) A_over_ao^2 (mean equation's A_over_ao^2 (1/2 + 1/16) over 3/2);
+    * Abar(exact)/Abar(refined) - 1 -> c A_over_ao^2 with c = 19/32 for n > 1 (the amplitude is deltabar_s:
       (9/4)(3/8) + 3/64 over 3/2) and c = (3/16 + 1/(8(n+3)))/n for n < 1 (the amplitude is deltabar_c:
       half the radius change plus the Jc3 term, Jc3/Jc1 -> (n-1)/(n+3), divided by d ln|Jc1|/d ln Abar -> n).
 
-    Tolerances (the limits are approached at rates set by the share of the other harmonic; epsilon^2 must
-    stay above the rounding of abar_m): n = 0.531, omega_check = 30, eta1 = 3e-7 (epsilon = 2e-5): 1e-5 on the
-    first, 3e-3 on the second; n = 2, omega_check = 3, eta1 = 1e-7 (epsilon = 3e-4): 1e-5 on both.
+    Tolerances (the limits are approached at rates set by the share of the other harmonic; A_over_ao^2 must
+    stay above the rounding of abar_m): n = 0.531, omega_check = 30, eta1 = 3e-7 (A_over_ao = 2e-5): 1e-5 on the
+    first, 3e-3 on the second; n = 2, omega_check = 3, eta1 = 1e-7 (A_over_ao = 3e-4): 1e-5 on both.
     """
     omega_check, eta1, tolerances = (30.0, 3e-7, (1e-5, 3e-3)) if n < 1 else (3.0, 1e-7, (1e-5, 1e-5))
     law = GentSchultz(n)
     exact = rigid_fixation(eta1, omega_check, CHI0, law)
     refined = refined_nominal_point_contact(eta1, omega_check, CHI0, law)
-    epsilon = exact.Abar / (omega_check * C_O)
-    assert abs((exact.abar_m - float(refined.abar_m)) / epsilon**2 / (-3 / 8) - 1) < tolerances[0]
+    A_over_ao = exact.Abar / (omega_check * C_O)
+    assert abs((exact.abar_m - float(refined.abar_m)) / A_over_ao**2 / (-3 / 8) - 1) < tolerances[0]
     c = 19 / 32 if n > 1 else (3 / 16 + 1 / (8 * (n + 3))) / n
-    assert abs((exact.Abar / float(refined.Abar) - 1) / epsilon**2 / c - 1) < tolerances[1]
+    assert abs((exact.Abar / float(refined.Abar) - 1) / A_over_ao**2 / c - 1) < tolerances[1]
 
 
-def _j_integrals_scipy(abar: float, n: float) -> tuple[float, float, float, float]:
+def _j_integrals_scipy(Abar: float, n: float) -> tuple[float, float, float, float]:
     """J0, Jc1, J1 (Eqs. 28, 29, 36) and Jc3 (Eq. 29) by QUADPACK, split at pi/2: relative 1e-12, or
     absolute 1e-13 sqrt(1 + Abar^n) (the size of the integrand) where that is larger (Jc3 may be small).
     """
 
     def sqrt_f(x: float) -> float:
-        v = abar * math.cos(x)
+        v = Abar * math.cos(x)
         return math.sqrt(1 + (-v) ** n) if v < 0 else 1 / math.sqrt(1 + v**n)
 
     def integral(weight) -> float:
         return quad(lambda x: sqrt_f(x) * weight(x), 0, math.pi, points=[math.pi / 2],
-                    epsabs=1e-13 * math.sqrt(1 + abar**n), epsrel=1e-12, limit=400)[0]
+                    epsabs=1e-13 * math.sqrt(1 + Abar**n), epsrel=1e-12, limit=400)[0]
 
     return (integral(lambda x: 1.0) / math.pi, 2 * integral(math.cos) / math.pi,
             2 * integral(lambda x: math.sin(x) ** 2) / math.pi, 2 * integral(lambda x: math.cos(3 * x)) / math.pi)
@@ -348,11 +348,11 @@ def _j_integrals_scipy(abar: float, n: float) -> tuple[float, float, float, floa
 def high_frequency_expansion(
     eta1: float, omega_check: float, n: float, guess: tuple[float, float]
 ) -> tuple[float, float]:
-    """(abar_m, Abar) of the rigid nominal point contact expanded to O(epsilon^2) (module docstring):
+    """(abar_m, Abar) of the rigid nominal point contact expanded to O(A_over_ao^2) (module docstring):
 
-        abar_m^2 - J0 sqrt(abar_m) + epsilon^2 (1/2 + J1/(16 abar_m^(3/2))) = 0,
-        (sqrt(abar_m) Jc1 - epsilon^2 (Jc1 - Jc3)/(32 abar_m^(3/2)))^2
-            + (2 abar_m epsilon (1 - J1/(4 abar_m^(3/2))))^2 = etahat^2,
+        abar_m^2 - J0 sqrt(abar_m) + A_over_ao^2 (1/2 + J1/(16 abar_m^(3/2))) = 0,
+        (sqrt(abar_m) Jc1 - A_over_ao^2 (Jc1 - Jc3)/(32 abar_m^(3/2)))^2
+            + (2 abar_m A_over_ao (1 - J1/(4 abar_m^(3/2))))^2 = etahat^2,
 
     solved by fsolve in logarithms with the QUADPACK J-integrals.
     """
@@ -375,19 +375,19 @@ def high_frequency_expansion(
 @pytest.mark.parametrize("case", [(N_PUBLISHED, 20e-6, 1e5), (N_PUBLISHED, 20e-6, 1e6), (2.0, 100e-6, 1e5)])
 def test_high_frequency_limit_is_the_leading_order_plus_epsilon_squared_terms(case: tuple[float, float, float]) -> None:
     """omega_check -> infinity: the exact balance tends to the leading order (Eqs. 55, 123: refined model at
-    omega_check = infinity) with an O(epsilon^2) difference, and to the O(epsilon^2)-expanded system
-    (solved independently) with an O(epsilon^4) difference. Tolerances: |exact/expanded - 1| < epsilon^4
-    (measured coefficients 0.09 and 0.005) for Abar and abar_m; |exact/leading - 1| > 0.01 epsilon^2.
+    omega_check = infinity) with an O(A_over_ao^2) difference, and to the O(A_over_ao^2)-expanded system
+    (solved independently) with an O(A_over_ao^4) difference. Tolerances: |exact/expanded - 1| < A_over_ao^4
+    (measured coefficients 0.09 and 0.005) for Abar and abar_m; |exact/leading - 1| > 0.01 A_over_ao^2.
     """
     n, h1, omega_check = case
     law = GentSchultz(n)
     exact = rigid_fixation(h1 / RADIUS, omega_check, CHI0, law)
     leading = refined_nominal_point_contact(h1 / RADIUS, math.inf, CHI0, law)
-    abar_m, abar = high_frequency_expansion(h1 / RADIUS, omega_check, n, (exact.abar_m, exact.Abar))
-    epsilon = exact.Abar / (omega_check * C_O)
-    assert abs(exact.Abar / abar - 1) < epsilon**4 and abs(exact.abar_m / abar_m - 1) < epsilon**4
-    assert abs(exact.Abar / float(leading.Abar) - 1) > 0.01 * epsilon**2
-    assert abs(exact.abar_m / float(leading.abar_m) - 1) > 0.01 * epsilon**2
+    abar_m, Abar = high_frequency_expansion(h1 / RADIUS, omega_check, n, (exact.abar_m, exact.Abar))
+    A_over_ao = exact.Abar / (omega_check * C_O)
+    assert abs(exact.Abar / Abar - 1) < A_over_ao**4 and abs(exact.abar_m / abar_m - 1) < A_over_ao**4
+    assert abs(exact.Abar / float(leading.Abar) - 1) > 0.01 * A_over_ao**2
+    assert abs(exact.abar_m / float(leading.abar_m) - 1) > 0.01 * A_over_ao**2
 
 
 def test_k_integrals_of_constants_are_the_closed_form_quarter_period_integrals() -> None:
