@@ -81,7 +81,7 @@ def test_very_stiff_spring_gives_the_rigid_simulated_pulloff(omega_bar: float) -
 def test_compliant_family_that_loses_contact_before_a_force_extremum_reports_it() -> None:
     """kappa = 0.001, zeta = 0.01, omega_bar = 17.85 (the validation sweep's spring at the 200 Hz
     omega_bar) but omega_check = 1e4, h1 = 20 um: the family of steady states runs from the nominal point
-    contact to deltabar0 = -26.15 with the mean force still growing more tensile (measured -2.185 |P_JKR|),
+    contact to base_offset = -26.15 with the mean force still growing more tensile (measured -2.185 |P_JKR|),
     and the transient just beyond its last orbit loses contact (after 60 periods): a status, no number.
     """
     fixation = Fixation.compliant(kappa=1e-3, zeta=0.01, nu0=OMEGA_BAR_200HZ / 1e4)

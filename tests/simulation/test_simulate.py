@@ -6,10 +6,10 @@ References, each named in the test that uses it:
   kernel, and the forward Gent–Schultz law f (Eq. 75) for its inverse;
 * Eq. (82) solved with mpmath for the static state;
 * the limit omega_check -> infinity (contact radius frozen over a period): the mean front speed
-  int_0^2pi f^{-1}(Phi(a_m, -eps sin tau)) dtau vanishes, which fixes a_m, and the front
+  int_0^2pi f^{-1}(Phi(a_m, -etahat sin tau)) dtau vanishes, which fixes a_m, and the front
   displacement U(tau) = int x gives Abar = half its range; evaluated here from the definition
   with mpmath quadrature (split at the turning points Phi = 1) and findroot, 30 digits;
-* the closed form of the small-amplitude limit Abar -> (2 eps)^(1/n) W(1/n),
+* the closed form of the small-amplitude limit Abar -> (2 etahat)^(1/n) W(1/n),
   W(p) = int_0^(pi/2) sin^p;
 * brute-force transients, a second integrator (LSODA, Radau), and finite differences of the
   one-period map for the Floquet multipliers.
@@ -41,9 +41,9 @@ def excitation(h1_um: float, omega_check: float, n: float = N_PUBLISHED, **kw) -
     return Problem(GentSchultz(n), CHI0, h1_um * 1e-6 / RADIUS, omega_check, **kw)
 
 
-def excitation_eps(eps: float, omega_check: float, n: float) -> Problem:
-    """Excitation with the displacement amplitude eps = eta1/c_o^2 given directly."""
-    return Problem(GentSchultz(n), CHI0, eps * C_O**2, omega_check)
+def excitation_etahat(etahat: float, omega_check: float, n: float) -> Problem:
+    """Excitation with the displacement amplitude etahat = eta1/c_o^2 given directly."""
+    return Problem(GentSchultz(n), CHI0, etahat * C_O**2, omega_check)
 
 
 # --------------------------------------------------------------------------- the frozen-contact limit
@@ -56,17 +56,17 @@ def _speed_mp(phi: mp.mpf, n: float) -> mp.mpf:
     return (1 / phi - 1) ** (1 / mp.mpf(n))
 
 
-def frozen_limit_mp(eps: float, n: float) -> dict[str, float]:
-    """Limit omega_check -> infinity of the rigid nominal point contact (deltabar0 = 0), from the definitions.
+def frozen_limit_mp(etahat: float, n: float) -> dict[str, float]:
+    """Limit omega_check -> infinity of the rigid nominal point contact (base_offset = 0), from the definitions.
 
-    With abar = a fixed, deltabar = -eps sin tau, Phi = (a^2 + eps sin tau)^2 / a; Phi = 1 where
-    sin tau = s* = (sqrt(a) - a^2)/eps: opening (x < 0) on (t1, pi - t1), t1 = asin(s*), closing
+    With abar = a fixed, deltabar = -etahat sin tau, Phi = (a^2 + etahat sin tau)^2 / a; Phi = 1 where
+    sin tau = s* = (sqrt(a) - a^2)/etahat: opening (x < 0) on (t1, pi - t1), t1 = asin(s*), closing
     elsewhere. a_m solves int x dtau = 0; Abar = (1/2) int_open |x|; the first harmonics of
     omega_check c_o (a - a(0)) are -(1/pi) int x sin and (1/pi) int x cos (integration by parts of
     the periodic U); the peak speed is at sin tau = +-1.
     """
     with mp.workdps(30):
-        e = mp.mpf(eps)
+        e = mp.mpf(etahat)
 
         def x_of(tau, a):
             return _speed_mp((a**2 + e * mp.sin(tau)) ** 2 / a, n)
@@ -85,7 +85,7 @@ def frozen_limit_mp(eps: float, n: float) -> dict[str, float]:
         def drift(a):
             return mp.quad(lambda t: x_of(t, a), pieces(a))
 
-        # drift > 0 just above sqrt(eps) (closing speed unbounded where a^2 = eps) and < 0 for large a
+        # drift > 0 just above sqrt(etahat) (closing speed unbounded where a^2 = etahat) and < 0 for large a
         lo, hi = mp.sqrt(e) * (1 + mp.mpf(10) ** -6) if e > mp.mpf(0.25) else mp.mpf(0.5), mp.mpf(3) + 2 * mp.sqrt(e)
         def compressed_drift(a):  # same root; the drift spans ~100 decades over the bracket for n = 0.05
             d = drift(a)
@@ -99,7 +99,7 @@ def frozen_limit_mp(eps: float, n: float) -> dict[str, float]:
         a_c = -mp.quad(lambda t: x_of(t, a_m) * mp.sin(t), p) / mp.pi
         a_s = mp.quad(lambda t: x_of(t, a_m) * mp.cos(t), p) / mp.pi
         peak = max(abs(x_of(mp.pi / 2, a_m)), abs(x_of(-mp.pi / 2, a_m)))
-        return {"abar_m": float(a_m), "abar": float(-opening / 2), "a_c_rate": float(a_c),
+        return {"abar_m": float(a_m), "Abar": float(-opening / 2), "a_c_rate": float(a_c),
                 "a_s_rate": float(a_s), "peak": float(peak)}
 
 
@@ -188,19 +188,19 @@ def test_static_state_solves_eq_82(kappa: float, mu: float) -> None:
         def eq82(r):
             return r**2 * (mp.mpf(4) / 3 * r + k) - mp.sqrt(2) * c ** mp.mpf(1.5) / 3 * mp.sqrt(r) * (2 * r + k) - m
 
-        root = mp.findroot(eq82, mp.mpf(C_O) * mp.mpf(st.abar))
-    assert st.abar == pytest.approx(float(root) / C_O, rel=1e-12)
+        root = mp.findroot(eq82, mp.mpf(C_O) * mp.mpf(st.abar_0))
+    assert st.abar_0 == pytest.approx(float(root) / C_O, rel=1e-12)
     assert st.xbar == pytest.approx(mu / (kappa * C_O**2) - C_O / kappa * st.phat, rel=1e-12)
-    assert st.abar > 1.0  # a spring holds less tension than a rigid grip
+    assert st.abar_0 > 1.0  # a spring holds less tension than a rigid grip
 
 
 def test_static_state_rigid_and_no_contact() -> None:
-    """Closed forms: abar = 1 for the nominal point contact (Sec. 3.5.4); a^2 - sqrt(a) = deltabar0
+    """Closed forms: abar = 1 for the nominal point contact (Sec. 3.5.4); a^2 - sqrt(a) = base_offset
     for a preset; no static contact below the JKR fixed-grip pull-off s(4^(-2/3)) = -0.4725.
     """
-    assert sim.static_state(excitation(20, 1e5)).abar == pytest.approx(1.0, abs=1e-15)
+    assert sim.static_state(excitation(20, 1e5)).abar_0 == pytest.approx(1.0, abs=1e-15)
     st = sim.static_state(excitation(20, 1e5, base_offset=0.3))
-    assert st.abar**2 - math.sqrt(st.abar) == pytest.approx(0.3, rel=1e-13)
+    assert st.abar_0**2 - math.sqrt(st.abar_0) == pytest.approx(0.3, rel=1e-13)
     with pytest.raises(sim.NoStaticContactError):
         sim.static_state(excitation(20, 1e5, base_offset=-0.48))
 
@@ -216,21 +216,21 @@ def test_high_frequency_limit_matches_frozen_contact_reference(omega_check: floa
     Abar, the cosine harmonic of omega_check c_o a and the peak speed to 1e-6 (1e-8);
     A = Abar/(omega_check c_o) vanishes like 1/omega_check; the sine harmonic of omega_check c_o a
     (0 in the limit, by symmetry) and the cosine one of Phat are O(A/a_m) (phase lag), the sine
-    harmonic of Phat is -2 a_m eps (1 + O(A/a_m)).
+    harmonic of Phat is -2 a_m etahat (1 + O(A/a_m)).
     """
     tol_a, tol_b = (1e-8, 1e-6) if omega_check == 1e8 else (1e-10, 1e-8)
     ex = excitation(20, omega_check)
     r = sim.steady_state(ex)
     ref = frozen_20um
     assert r.status == "ok" and r.stable
-    a_m, rate = ref["abar_m"], omega_check * C_O
+    a_m, speed_scale = ref["abar_m"], omega_check * C_O
     assert r.abar_m == pytest.approx(a_m, rel=tol_a)
     assert r.w_eff_ratio == pytest.approx(a_m**3, rel=tol_a)
     assert r.pm_over_abs_pjkr == pytest.approx(-8 / 9 * a_m**3, rel=tol_a)
-    assert r.Abar == pytest.approx(ref["abar"], rel=tol_b)
-    assert r.A_over_am == pytest.approx(ref["abar"] / (rate * a_m), rel=tol_b)
-    assert r.orbit.abar_c * rate == pytest.approx(ref["a_c_rate"], rel=tol_b)
-    assert abs(r.orbit.abar_s * rate - ref["a_s_rate"]) < 10 * r.A_over_am * abs(ref["a_c_rate"])  # lag O(A/a_m)
+    assert r.Abar == pytest.approx(ref["Abar"], rel=tol_b)
+    assert r.A_over_am == pytest.approx(ref["Abar"] / (speed_scale * a_m), rel=tol_b)
+    assert r.orbit.abar_c * speed_scale == pytest.approx(ref["a_c_rate"], rel=tol_b)
+    assert abs(r.orbit.abar_s * speed_scale - ref["a_s_rate"]) < 10 * r.A_over_am * abs(ref["a_c_rate"])  # lag O(A/a_m)
     assert r.orbit.peak_speed == pytest.approx(ref["peak"], rel=tol_b)
     assert r.orbit.phat_s == pytest.approx(-2 * a_m * ex.etahat, rel=10 * r.A_over_am)
     assert abs(r.orbit.phat_c) < 10 * r.A_over_am
@@ -250,7 +250,7 @@ def test_high_frequency_limit_for_extreme_exponents(n: float, h1_um: float, omeg
     ref = frozen_limit_mp(ex.etahat, n)
     assert r.status == "ok"
     assert r.abar_m == pytest.approx(ref["abar_m"], rel=1e-7)
-    assert r.Abar == pytest.approx(ref["abar"], rel=1e-5)
+    assert r.Abar == pytest.approx(ref["Abar"], rel=1e-5)
     assert r.orbit.peak_speed == pytest.approx(ref["peak"], rel=1e-5)
 
 
@@ -259,22 +259,22 @@ def test_high_frequency_limit_for_extreme_exponents(n: float, h1_um: float, omeg
     (4.0, (1e7,), (1e-3, 1e-2)),
 ])
 def test_small_amplitude_limit_abar_tends_to_closed_form(n: float, omega_checks, amplitudes) -> None:
-    """Reference: closed form of h1 -> 0 with the contact frozen at abar = 1 (Phi - 1 = 2 eps sin tau
-    + O(eps^2), x = -sign(sin tau)|2 eps sin tau|^(1/n)): Abar -> (2 eps)^(1/n) W(1/n), W(p) =
+    """Reference: closed form of h1 -> 0 with the contact frozen at abar = 1 (Phi - 1 = 2 etahat sin tau
+    + O(etahat^2), x = -sign(sin tau)|2 etahat sin tau|^(1/n)): Abar -> (2 etahat)^(1/n) W(1/n), W(p) =
     int_0^(pi/2) sin^p (mpmath), so A is proportional to h1^(1/n) / omega_check, not to h1. For
-    n < 1 the contact is frozen at any omega_check as eps -> 0; for n = 4 only once
-    omega_check c_o >> eps^(1/n - 1) (else it follows the JKR curve quasi-statically, where
+    n < 1 the contact is frozen at any omega_check as etahat -> 0; for n = 4 only once
+    omega_check c_o >> etahat^(1/n - 1) (else it follows the JKR curve quasi-statically, where
     Phi - 1 ~ x^4 sits at rounding level and the integrators fail: reported, not tested here).
-    Relative deviation O(eps): tolerance 2 eps (measured 1.6 eps for n = 0.531, 0.17 eps for n = 4);
-    a_m - 1 = O(eps^2): below eps^2 (measured 0.22 and 0.07 eps^2).
+    Relative deviation O(etahat): tolerance 2 etahat (measured 1.6 etahat for n = 0.531, 0.17 etahat for n = 4);
+    a_m - 1 = O(etahat^2): below etahat^2 (measured 0.22 and 0.07 etahat^2).
     """
     w = float(mp.quad(lambda t: mp.sin(t) ** (1 / mp.mpf(n)), [0, mp.pi / 2]))
-    for eps in amplitudes:
+    for etahat in amplitudes:
         for omega_check in omega_checks:
-            r = sim.steady_state(excitation_eps(eps, omega_check, n))
+            r = sim.steady_state(excitation_etahat(etahat, omega_check, n))
             assert r.status == "ok"
-            assert r.Abar == pytest.approx((2 * eps) ** (1 / n) * w, rel=2 * eps)
-            assert abs(r.abar_m - 1) < eps**2
+            assert r.Abar == pytest.approx((2 * etahat) ** (1 / n) * w, rel=2 * etahat)
+            assert abs(r.abar_m - 1) < etahat**2
 
 
 def test_zero_amplitude_is_the_static_contact() -> None:
@@ -304,7 +304,7 @@ def test_large_stroke_at_low_frequency_reports_contact_loss(omega_check: float) 
 
 def test_n005_stroke_beyond_fixed_grip_pull_off_loses_contact() -> None:
     """n = 0.05 makes the adhesion almost rate independent (f = 1 + |x|^0.05 is below 3 up to
-    |x| = 1e9): a stroke eps = 1.58 (h1 = 20 um) pulls the contact beyond the JKR fixed-grip
+    |x| = 1e9): a stroke etahat = 1.58 (h1 = 20 um) pulls the contact beyond the JKR fixed-grip
     pull-off (deltabar = -0.47) and it is lost in the first tensile half period, even at
     omega_check = 1e8 where n = 0.531 holds it (test_high_frequency_limit_matches_...).
     """
@@ -413,7 +413,7 @@ def test_compliant_mean_force_balance_eq15(kappa: float, zeta: float, omega_bar:
     for mu in (0.0, 1e-6):
         r = sim.steady_state(excitation(20, omega_bar / NU0, fixation=spring(kappa, zeta, mu)))
         assert r.status == "ok"
-        mean_xbar = r.deltabar_m  # deltabar0 = 0
+        mean_xbar = r.deltabar_m  # base_offset = 0
         assert mean_xbar == pytest.approx(mu / (kappa * C_O**2) - C_O / kappa * r.orbit.phat_m, rel=1e-9)
 
 

@@ -2,7 +2,7 @@
 
 No measured pull-off forces behind the paper's Fig. 4 are published; this module generates the
 simulated counterpart. The base is withdrawn quasi-statically: a family of periodic steady states
-of the full model (:mod:`vibroadhesion.simulation`) with decreasing deltabar0 = (hhat - h0) R/a_o^2
+of the full model (:mod:`vibroadhesion.simulation`) with decreasing base_offset = (hhat - h0) R/a_o^2
 (Eq. 11 with h0 growing), each orbit started from a prediction extrapolated from the previous two.
 Along the family the mean contact force P_m first grows more tensile, passes an extremum and then
 relaxes; the pull-off force is the most tensile mean force of the family, located by a bounded
@@ -10,19 +10,19 @@ Brent minimisation between the family's neighbours of the extremum.
 
 Why the extremum, with a spring in series. With the fixation of Eq. (3') the mean of Eq. (3') over
 a period gives xbar_m = mu/(kappa c_o^2) - sigma Phat_m, sigma = c_o/kappa, and the mean contact
-displacement is deltabar_m = xbar_m + deltabar0. Along the family, with the mean contact stiffness
+displacement is deltabar_m = xbar_m + base_offset. Along the family, with the mean contact stiffness
 S = dPhat_m/ddeltabar_m,
 
-    d deltabar0 = (1 + sigma S) d deltabar_m,      dPhat_m/d deltabar0 = S / (1 + sigma S).
+    d base_offset = (1 + sigma S) d deltabar_m,      dPhat_m/d base_offset = S / (1 + sigma S).
 
-The mean force is extremal where S = 0, while the family continues in deltabar0 as long as
+The mean force is extremal where S = 0, while the family continues in base_offset as long as
 1 + sigma S > 0: it folds where S = -kappa/c_o, i.e. dP/ddelta = -k, the jump of a displacement-
 controlled test through a spring. S decreases through 0 before it reaches -kappa/c_o, so the fold
 comes after the force extremum, and the two coincide under force control (kappa -> 0); for the
 rigid fixation (sigma = 0) there is no fold before the JKR fixed-grip limit. Under force control
 the steady state is lost at the extremum, for either fixation: that is the pull-off reported.
 Between the extremum and the fold the window is narrow for a soft spring (for kappa = 0.001 at
-200 Hz, h1 = 20 um: 0.01 in deltabar0 after a withdrawal of 41): a step that lands beyond the fold
+200 Hz, h1 = 20 um: 0.01 in base_offset after a withdrawal of 41): a step that lands beyond the fold
 finds no steady state, and the step is then halved towards the last orbit (bisection between the
 last orbit and the nearest failure) until an orbit past the extremum is found.
 
@@ -37,10 +37,10 @@ has a similar number of orbits whatever kappa is.
 If the family ends (the simulation loses contact, or no steady state is found within the smallest
 step) while P_m is still growing more tensile, there is no extremum to report: the status says so
 and no number is returned. Where the shooting just fails to converge beyond the last orbit, the
-transient from that orbit at the failed deltabar0 tells why: ``contact_loss_before_extremum`` if it
+transient from that orbit at the failed base_offset tells why: ``contact_loss_before_extremum`` if it
 loses contact within END_TRANSIENT_PERIODS periods, ``no_steady_state_before_extremum`` otherwise.
 (Example: the compliant family kappa = 0.001, omega_bar = 17.85, h1 = 20 um at omega_check = 1e4 ends at
-deltabar0 = -26.146 with P_m still decreasing; its last orbit's Floquet multipliers, |lambda| <= 0.97,
+base_offset = -26.146 with P_m still decreasing; its last orbit's Floquet multipliers, |lambda| <= 0.97,
 show no fold, and the transient from it at -26.15 loses contact after 60 periods.) The paper's
 detachment criterion a_m = a_cr (Eq. 60, with the simulated w_eff) is reported next to the
 simulated mean radius at pull-off so that it can be checked.
@@ -102,7 +102,7 @@ def _orbit(state: SteadyState) -> OrbitDiagnostics:
 def _end_of_family(problem: Problem, last: SteadyState, failure: str) -> str:
     """Why the family ends: the shooting's own ``contact_loss``, or else what the transient says.
 
-    The transient runs from the last orbit at the nearest failed deltabar0 over
+    The transient runs from the last orbit at the nearest failed base_offset over
     END_TRANSIENT_PERIODS periods (``contact_loss`` if it loses contact).
     """
     if failure == "contact_loss":
@@ -116,7 +116,7 @@ def _end_of_family(problem: Problem, last: SteadyState, failure: str) -> str:
 
 def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 400, halvings: int = 6,
                       iterations: int = 15) -> Pulloff:
-    """Pull-off from the family of steady states in deltabar0 (module docstring), from ``problem``'s base offset.
+    """Pull-off from the family of steady states in base_offset (module docstring), from ``problem``'s base offset.
 
     The record of level ``simulation`` (scalar): status ``pulloff`` with P_cr/P_cr^JKR = -min P_m/|P_JKR|,
     the base offset, mean radius, w_eff/w0 and A/a_m of the most tensile orbit and the paper's
@@ -124,19 +124,19 @@ def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 4
 
     ``step`` is the target change of the mean contact displacement deltabar_m per orbit; the base step
     is step (1 + sigma S) (module docstring). After a failed orbit the next steps go at most half-way
-    to it; once the last orbit lies within step 2^-``halvings`` of the failure, the failed deltabar0 is tried
+    to it; once the last orbit lies within step 2^-``halvings`` of the failure, the failed base_offset is tried
     again from the now close prediction (a shooting that failed from a poor start converges then), and the
     family is declared ended if it fails again.
     An orbit started from a predicted state gets ``iterations`` shooting periods (3–6 suffice along the
     families computed here; beyond the fold the shooting cannot converge, and the cap keeps those
     attempts cheap); the first, from the static state, the default of :func:`simulation.steady_state`.
-    The extremum is located to 1e-4 step in deltabar0, so the force to ~1e-8 relative (it is flat there).
+    The extremum is located to 1e-4 step in base_offset, so the force to ~1e-8 relative (it is flat there).
     """
     fixation = problem.fixation
     sigma = 0.0 if fixation.is_rigid else contact_radius_ratio(problem.chi0) / fixation.kappa
     run = _Withdrawal(problem, iterations)
     family: list[tuple[float, SteadyState]] = []
-    failure: tuple[float, str] | None = None  # nearest deltabar0 known to have no steady state, and why
+    failure: tuple[float, str] | None = None  # nearest base_offset known to have no steady state, and why
     d0, state = problem.base_offset, None
     for _ in range(max_steps):
         orbit_k = run.orbit(d0, state)
@@ -173,7 +173,7 @@ def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 4
 
 
 class _Withdrawal:
-    """One quasi-static withdrawal: the orbits solved at base offsets deltabar0, counted and cached."""
+    """One quasi-static withdrawal: the orbits solved at base offsets (base_offset), counted and cached."""
 
     def __init__(self, problem: Problem, iterations: int) -> None:
         """The withdrawal of ``problem``'s base (Eq. 11); ``iterations`` caps predicted shootings."""
@@ -182,7 +182,7 @@ class _Withdrawal:
         self.cache: dict[float, SteadyState] = {}
 
     def problem_at(self, d0: float) -> Problem:
-        """The problem at base offset deltabar0 = ``d0`` (Eq. 7 divided by a_o^2/R)."""
+        """The problem at base_offset = ``d0`` (Eq. 7 divided by a_o^2/R)."""
         return replace(self.problem, base_offset=d0)
 
     def orbit(self, d0: float, state: np.ndarray | None) -> SteadyState:
@@ -230,7 +230,7 @@ def _predicted_state(family: list[tuple[float, SteadyState]], d0: float,
     """Start state for the orbit at ``d0``, extrapolated from the family.
 
     Linear extrapolation from the last two orbits of the family; from one orbit, its state with the
-    spring's mean shifted by d xbar_m = -sigma S/(1 + sigma S) d deltabar0.
+    spring's mean shifted by d xbar_m = -sigma S/(1 + sigma S) d base_offset.
     """
     d_last, last = family[-1]
     if len(family) >= 2:
@@ -244,7 +244,7 @@ def _predicted_state(family: list[tuple[float, SteadyState]], d0: float,
 
 
 def _interpolated_state(bracket: list[tuple[float, SteadyState]], d0: float) -> np.ndarray:
-    """Start state inside the bracket of the extremum: piecewise-linear in deltabar0 between its orbits."""
+    """Start state inside the bracket of the extremum: piecewise-linear in base_offset between its orbits."""
     ds = np.array([d for d, _ in bracket])[::-1]  # ascending
     states = np.array([_orbit(o).start_state for _, o in bracket])[::-1]
     return np.array([np.interp(d0, ds, states[:, i]) for i in range(states.shape[1])])

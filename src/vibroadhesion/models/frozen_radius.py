@@ -19,9 +19,9 @@ s^2 = f(x) with x = (da/dt)/v0 = (a_o omega/v0) d abar/d tau = omega_check c_o d
 (omega_check = omega R/v0, Eq. 105). A rigidly fixed indenter has x_s = 0 in Eq. (7), so with
 Eq. (11) delta = hhat - h = (hhat - h0) - h1 sin tau:
 
-    deltabar(tau) = deltabar0 - etahat sin tau,   deltabar0 = (hhat - h0) R/a_o^2,   etahat = h1 R/a_o^2 = eta1/c_o^2.
+    deltabar(tau) = base_offset - etahat sin tau,  base_offset = (hhat - h0) R/a_o^2,  etahat = h1 R/a_o^2 = eta1/c_o^2.
 
-The nominal point contact (Sec. 3.5.4, h0 = hhat) has deltabar0 = 0.
+The nominal point contact (Sec. 3.5.4, h0 = hhat) has base_offset = 0.
 
 The frozen radius. The rate law is strictly decreasing, so it has an inverse X(s) = f^{-1}(s^2)
 (the signed speed at which w/w0 = s^2), and Eq. (5) is the ordinary differential equation
@@ -33,7 +33,7 @@ over a period, abar = abar_m + O(1/omega_check), and (first-order averaging) the
 at the rate mean_tau X(s(abar_m, tau))/(omega_check c_o). Frozen at abar_m, Eq. (5) makes s *exactly*
 affine in sin tau -- no linearisation and no ansatz for a(t):
 
-    s(tau) = alpha + beta sin tau,   alpha = (abar_m^2 - deltabar0)/sqrt(abar_m),   beta = etahat/sqrt(abar_m).
+    s(tau) = alpha + beta sin tau,   alpha = (abar_m^2 - base_offset)/sqrt(abar_m),   beta = etahat/sqrt(abar_m).
 
 A steady state is a radius that does not drift:
 

@@ -12,7 +12,7 @@ of the period,
 
 which is O(Abar) and carries full relative precision whatever omega_check is (scaled internally
 by its observed half range, floored at a change of abar of 1e-14 abar, and xbar by
-max(eps, |xbar|, |xbar'|), so that one absolute tolerance fits all components). Along with this
+max(etahat, |xbar|, |xbar'|), so that one absolute tolerance fits all components). Along with this
 core the full problem carries Psi = M - I of the one-period map (its variational equations,
 :mod:`vibroadhesion.simulation.shooting`) and the quadratures of the orbit's means and harmonics
 (:mod:`vibroadhesion.simulation.orbits`).
@@ -23,7 +23,7 @@ for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode` 
 gives up on repeated with Radau (analytic Jacobian). The extremes of a and of Phi are located
 between accepted steps by Brent's method on re-integrated states.
 
-Known limitation: for n > 1 in the quasi-static regime (omega_check c_o << eps^(1/n - 1)) the
+Known limitation: for n > 1 in the quasi-static regime (omega_check c_o << etahat^(1/n - 1)) the
 contact tracks Phi - 1 ~ x^n ~ 1e-9..1e-16, where the speed (Phi - 1)^(1/n) has a relative
 rounding noise of 1e-16/|Phi - 1| and an unbounded derivative: no integrator meets the tolerance
 and the result is ``integration_failure`` (after ~10^4 steps), not a number.
@@ -72,7 +72,7 @@ class Period:
     """The one-period problem from a start state, in scaled variables.
 
     Scaled core: u = v/V (rigid) or (xi, eta, u) = (xbar/S, xbar'/S, v/V) (compliant), with
-    v = rate (abar - abar(0)); the map coordinate of abar is beta = rate abar / V. The
+    v = speed_scale (abar - abar(0)); the map coordinate of abar is beta = speed_scale abar / V. The
     right-hand sides are closures over the constants (speed: they run ~1e4 times per period).
     """
 
@@ -80,7 +80,7 @@ class Period:
         """The period of ``model`` from the absolute ``start`` with the scales V = ``v_scale``, S = ``x_scale``."""
         self.m = model
         self.start = np.asarray(start, dtype=float)
-        self.b0 = model.rate * float(self.start[-1])
+        self.b0 = model.speed_scale * float(self.start[-1])
         self.v_scale = v_scale
         self.x_scale = x_scale
         self.dim = model.dim
@@ -90,8 +90,8 @@ class Period:
     # -- conversions
 
     def abar(self, u: float) -> float:
-        """The contact radius at the scaled front displacement u, from V u = v = rate (abar - a0) (Eq. 6')."""
-        return (self.b0 + self.v_scale * u) / self.m.rate
+        """The contact radius at the scaled front displacement u, from V u = v = speed_scale (abar - a0) (Eq. 6')."""
+        return (self.b0 + self.v_scale * u) / self.m.speed_scale
 
     def core_start(self) -> list[float]:
         """Scaled core at tau = 0: (xbar/S, xbar'/S, 0) or (0,) (v starts at 0)."""
@@ -114,14 +114,14 @@ class Period:
         """(abar, deltabar, contact_kernel(...)) at a point of the period."""
         m = self.m
         abar = self.abar(core[-1])
-        d = m.deltabar0 - m.eps * math.sin(tau)
+        d = m.base_offset - m.etahat * math.sin(tau)
         if m.compliant:
             d += core[0] * self.x_scale
         return abar, d, contact_kernel(abar, d, m.inv_n, m.log_cap)
 
     def deltabar_rate(self, tau: float, core: Sequence[float]) -> float:
         """d deltabar / d tau."""
-        rate = -self.m.eps * math.cos(tau)
+        rate = -self.m.etahat * math.cos(tau)
         return rate + core[1] * self.x_scale if self.m.compliant else rate
 
     # -- Jacobians (for the implicit integrators)
@@ -138,18 +138,18 @@ class Period:
         """Non-trivial entries (j10, j11, j12, j20, j22) of J in the scaled coordinates (xi, eta, beta).
 
         Unscaled, in (xbar, xbar', b): row xbar'' = [-(1 + (c_o/kappa) dPhat/ddeltabar), -2 zeta omega_bar,
-        -(c_o/kappa) dPhat/dabar / rate] / omega_bar^2 and row v' = [dx/ddeltabar, 0, dx/dabar / rate]; the
-        scaling multiplies entry (i, j) by scale_j / scale_i (scales S, S, V).
+        -(c_o/kappa) dPhat/dabar / speed_scale] / omega_bar^2 and row v' = [dx/ddeltabar, 0,
+        dx/dabar / speed_scale]; the scaling multiplies entry (i, j) by scale_j / scale_i (scales S, S, V).
         """
         m = self.m
-        j22 = x_a / m.rate
+        j22 = x_a / m.speed_scale
         if not m.compliant:
             return 0.0, 0.0, 0.0, 0.0, j22
         inv_w2 = 1.0 / m.omega_bar**2
         return (
             (-1.0 - 2.0 * m.compliance * abar) * inv_w2,
             -2.0 * m.zeta / m.omega_bar,
-            -m.compliance * (2.0 * d - 2.0 * abar * abar) * inv_w2 * self.v_scale / (m.rate * self.x_scale),
+            -m.compliance * (2.0 * d - 2.0 * abar * abar) * inv_w2 * self.v_scale / (m.speed_scale * self.x_scale),
             x_d * self.x_scale / self.v_scale,
             j22,
         )
@@ -174,27 +174,29 @@ class Period:
 
     def _rigid_rhs(self) -> tuple[RightHandSide, RightHandSide]:
         b0, v_scale, m = self.b0, self.v_scale, self.m
-        inv_rate, inv_v, d0, eps, inv_n, log_cap = 1.0 / m.rate, 1.0 / v_scale, m.deltabar0, m.eps, m.inv_n, m.log_cap
+        inv_speed_scale, inv_v, d0, etahat = 1.0 / m.speed_scale, 1.0 / v_scale, m.base_offset, m.etahat
+        inv_n, log_cap = m.inv_n, m.log_cap
         sin, cos, contact = math.sin, math.cos, contact_kernel
 
         def core(tau: float, y: Array) -> list[float]:
-            abar = (b0 + v_scale * y.item(0)) * inv_rate
-            return [contact(abar, d0 - eps * sin(tau), inv_n, log_cap)[0] * inv_v]
+            abar = (b0 + v_scale * y.item(0)) * inv_speed_scale
+            return [contact(abar, d0 - etahat * sin(tau), inv_n, log_cap)[0] * inv_v]
 
         variational = m.variational
 
         def full(tau: float, y: Array) -> list[float]:
             u = y.item(0)
-            abar = (b0 + v_scale * u) * inv_rate
+            abar = (b0 + v_scale * u) * inv_speed_scale
             s, c = sin(tau), cos(tau)
-            x, x_a, _, p, w = contact(abar, d0 - eps * s, inv_n, log_cap)
-            return [x * inv_v, x_a * inv_rate if variational else 0.0, u, u * c, u * s, w, p, p * c, p * s]
+            x, x_a, _, p, w = contact(abar, d0 - etahat * s, inv_n, log_cap)
+            return [x * inv_v, x_a * inv_speed_scale if variational else 0.0, u, u * c, u * s, w, p, p * c, p * s]
 
         return core, full
 
     def _compliant_rhs(self) -> tuple[RightHandSide, RightHandSide]:
         b0, v_scale, x_scale, m = self.b0, self.v_scale, self.x_scale, self.m
-        inv_rate, inv_v, d0, eps, inv_n, log_cap = 1.0 / m.rate, 1.0 / v_scale, m.deltabar0, m.eps, m.inv_n, m.log_cap
+        inv_speed_scale, inv_v, d0, etahat = 1.0 / m.speed_scale, 1.0 / v_scale, m.base_offset, m.etahat
+        inv_n, log_cap = m.inv_n, m.log_cap
         # eta' = (offset - compliance Phat - S xi - 2 zeta omega_bar S eta) / (omega_bar^2 S), Eq. (3')
         offset, compliance = m.force_offset / x_scale, m.compliance / x_scale
         inv_w2, damp = 1.0 / m.omega_bar**2, 2.0 * m.zeta * m.omega_bar
@@ -204,15 +206,15 @@ class Period:
 
         def core(tau: float, y: Array) -> list[float]:
             xi, eta, u = y.item(0), y.item(1), y.item(2)
-            abar = (b0 + v_scale * u) * inv_rate
-            x, _, _, p, _ = contact(abar, x_scale * xi + d0 - eps * sin(tau), inv_n, log_cap)
+            abar = (b0 + v_scale * u) * inv_speed_scale
+            x, _, _, p, _ = contact(abar, x_scale * xi + d0 - etahat * sin(tau), inv_n, log_cap)
             return [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
 
         def full(tau: float, y: Array) -> list[float]:
             xi, eta, u = y.item(0), y.item(1), y.item(2)
-            abar = (b0 + v_scale * u) * inv_rate
+            abar = (b0 + v_scale * u) * inv_speed_scale
             s, c = sin(tau), cos(tau)
-            d = x_scale * xi + d0 - eps * s
+            d = x_scale * xi + d0 - etahat * s
             x, x_a, x_d, p, w = contact(abar, d, inv_n, log_cap)
             quadratures = [u, u * c, u * s, w, p, p * c, p * s, xi, xi * c, xi * s]
             core_rates = [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
@@ -394,30 +396,30 @@ def run_period(period: Period, integrators: Integrators, full: bool, transient: 
 
 
 def v_scale_estimate(model: Model, abar: float) -> float:
-    """A guess of the half range of v = rate (abar - abar(0)) over a period.
+    """A guess of the half range of v = speed_scale (abar - abar(0)) over a period.
 
     The smaller of the frozen-contact value (abar fixed, v' = x(Phi(abar, deltabar(tau))), the
-    limit omega_check -> infinity) and the quasi-static one (v follows the JKR compliance, rate
-    eps); only used to scale the first integration, later ones use the observed range.
+    limit omega_check -> infinity) and the quasi-static one (v follows the JKR compliance,
+    speed_scale etahat); only used to scale the first integration, later ones use the observed range.
     """
     tau = np.linspace(0.0, TWO_PI, 257)
-    d = model.deltabar0 - model.eps * np.sin(tau)
+    d = model.base_offset - model.etahat * np.sin(tau)
     gap = np.maximum(abar * abar - d, 1e-150)
     law = model.problem.law
-    x = np.clip(law.speed(gap * gap / abar), -SPEED_CAP * model.rate, SPEED_CAP * model.rate)
+    x = np.clip(law.speed(gap * gap / abar), -SPEED_CAP * model.speed_scale, SPEED_CAP * model.speed_scale)
     u = np.concatenate([[0.0], np.cumsum(0.5 * (x[1:] + x[:-1]) * np.diff(tau))])
     frozen = 0.5 * float(u.max() - u.min())
-    return max(min(frozen, model.rate * model.eps), _v_scale_floor(model, abar))
+    return max(min(frozen, model.speed_scale * model.etahat), _v_scale_floor(model, abar))
 
 
 def _v_scale_floor(model: Model, abar: float) -> float:
     """Smallest scale of v: a change of abar below the resolution of abar itself."""
-    return 1e-14 * model.rate * abar
+    return 1e-14 * model.speed_scale * abar
 
 
 def x_scale(model: Model, start: Array) -> float:
-    """S = max(eps, |xbar|, |xbar'|) of the compliant start (floored at 1e-280), 1 for the rigid fixation."""
-    return max(model.eps, abs(float(start[0])), abs(float(start[1])), 1e-280) if model.compliant else 1.0
+    """S = max(etahat, |xbar|, |xbar'|) of the compliant start (floored at 1e-280), 1 for the rigid fixation."""
+    return max(model.etahat, abs(float(start[0])), abs(float(start[1])), 1e-280) if model.compliant else 1.0
 
 
 def observed_v_scale(run: Run) -> float:
@@ -437,7 +439,7 @@ def periodic_to_rounding(run: Run, integrators: Integrators) -> bool:
     period = run.period
     residual = np.abs(run.y_end[: period.dim] - np.array(period.core_start()))
     tolerance = _PERIODIC_RESIDUAL_FACTOR * integrators.rtol * scaled_core_range(run)
-    abar_drift = residual[-1] * period.v_scale / period.m.rate
+    abar_drift = residual[-1] * period.v_scale / period.m.speed_scale
     abar_ok = residual[-1] <= tolerance or abar_drift <= 4.0 * np.finfo(float).eps * float(period.start[-1])
     return bool(abar_ok and np.all(residual[:-1] <= tolerance))
 

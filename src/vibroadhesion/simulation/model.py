@@ -37,9 +37,9 @@ The state therefore needs no algebraic constraint: Eqs. (4)–(6) become one exp
 
 Rigid fixation (x_s = 0). Eq. (7) with h = h0 + h1 sin tau (Eq. 11) gives delta = hhat - h0 - h1 sin tau:
 
-    deltabar(tau) = deltabar0 - eps sin tau,   deltabar0 = (hhat - h0) R/a_o^2,   eps = eta1/c_o^2,
+    deltabar(tau) = base_offset - etahat sin tau,   base_offset = (hhat - h0) R/a_o^2,   etahat = eta1/c_o^2,
 
-(h1 R/a_o^2 = eta1 R^2/a_o^2), deltabar0 = 0 for the nominal point contact h0 = hhat (Eq. 78), and
+(h1 R/a_o^2 = eta1 R^2/a_o^2), base_offset = 0 for the nominal point contact h0 = hhat (Eq. 78), and
 (6') is a scalar non-autonomous ODE for abar.
 
 Compliant fixation. Eq. (3) with (2), m xs'' + c xs' + k xs = m g - P, divided by k a_o^2/R, with
@@ -47,20 +47,20 @@ m omega^2/k = omega_bar^2, c omega/k = 2 zeta omega_bar (Eq. 65), m g R/(k a_o^2
 and P R/(k a_o^2) = (c_o/kappa) Phat (Eqs. 66, 81):
 
     omega_bar^2 xbar'' + 2 zeta omega_bar xbar' + xbar = mu/(kappa c_o^2) - (c_o/kappa) Phat,       (3')
-    deltabar = xbar + deltabar0 - eps sin tau      (Eq. 7 divided by a_o^2/R),
+    deltabar = xbar + base_offset - etahat sin tau      (Eq. 7 divided by a_o^2/R),
 
 with omega_check = omega_bar/nu0 (Eqs. 97, 105). The state is (xbar, xbar', abar).
 
 Static state (Eqs. 10, A.4–A.7). With w = w0 the static contact obeys deltabar_0s = s(abar),
 s(a) = a^2 - sqrt(a), Phat_0 = p(a), p(a) = (4/3) a^3 - 2 a^(3/2), and xbar_0 = deltabar_0s -
-deltabar0 = mu/(kappa c_o^2) - (c_o/kappa) p(abar). Multiplied by kappa c_o^2:
+base_offset = mu/(kappa c_o^2) - (c_o/kappa) p(abar). Multiplied by kappa c_o^2:
 
-    g(a) = kappa c_o^2 (s(a) - deltabar0) + c_o^3 p(a) - mu = 0,
+    g(a) = kappa c_o^2 (s(a) - base_offset) + c_o^3 p(a) - mu = 0,
 
 which is Eq. (80) (Eq. 82 with a_0/R = c_o abar, since c_o^(3/2) = sqrt(2) chi0^(3/2)/3) for
-deltabar0 = 0. g(0) = -kappa c_o^2 deltabar0 - mu and g -> infinity; the contact that a
+base_offset = 0. g(0) = -kappa c_o^2 base_offset - mu and g -> infinity; the contact that a
 displacement-controlled spring holds stably is the largest root (g' > 0 there). For the rigid
-fixation (kappa -> infinity) it is s(a) = deltabar0 on the stable branch a > 4^(-2/3); abar = 1 for
+fixation (kappa -> infinity) it is s(a) = base_offset on the stable branch a > 4^(-2/3); abar = 1 for
 the nominal point contact (Sec. 3.5.4). These reductions agree with the paper's Eqs. (3), (7),
 (8), (80), (82) and (A.7); no discrepancy was found.
 
@@ -110,7 +110,7 @@ class NoStaticContactError(ValueError):
 class StaticState(NamedTuple):
     """Static equilibrium (Eqs. 10, A.4–A.7, 80, 82) in the units of this module."""
 
-    abar: float  # a_0 / a_o
+    abar_0: float  # a_0 / a_o
     xbar: float  # x_s R / a_o^2 (0 for rigid fixation)
     phat: float  # P_0 R / (E* a_o^3)
 
@@ -183,10 +183,10 @@ class Model:
             raise ValueError("fixation: the simulation implements the rigid and the compliant kinds, not free")
         self.problem = problem
         self.inv_n = 1.0 / problem.law.n
-        self.rate = problem.speed_scale
-        self.eps = problem.etahat
-        self.deltabar0 = problem.base_offset
-        self.log_cap = math.log(SPEED_CAP * self.rate)
+        self.speed_scale = problem.speed_scale
+        self.etahat = problem.etahat
+        self.base_offset = problem.base_offset
+        self.log_cap = math.log(SPEED_CAP * self.speed_scale)
         self.contact_loss_abar = contact_loss_abar
         self.compliant = not fixation.is_rigid
         self.dim = 3 if self.compliant else 1
@@ -215,12 +215,12 @@ def _jkr_force(abar: float) -> float:
 
 
 def _rigid_static_excess(abar: float, d0: float) -> float:
-    """g(a) of the rigid fixation: s(a) - deltabar0 (Eq. A.7 with kappa -> infinity)."""
+    """g(a) of the rigid fixation: s(a) - base_offset (Eq. A.7 with kappa -> infinity)."""
     return _jkr_displacement(abar) - d0
 
 
 def _spring_static_excess(abar: float, d0: float, stiffness: float, cube: float, mu: float) -> float:
-    """g(a) = kappa c_o^2 (s(a) - deltabar0) + c_o^3 p(a) - mu (Eqs. 80, 82, A.7).
+    """g(a) = kappa c_o^2 (s(a) - base_offset) + c_o^3 p(a) - mu (Eqs. 80, 82, A.7).
 
     ``stiffness`` = kappa c_o^2, ``cube`` = c_o^3 (model docstring, "Static state").
     """
@@ -248,12 +248,12 @@ def static_state(problem: Problem) -> StaticState:
     while excess(lo, *args) > 0:
         lo *= 0.9
         if lo < 1e-9:
-            raise NoStaticContactError(f"no static contact for deltabar0 = {d0} (Eqs. A.4–A.7)")
+            raise NoStaticContactError(f"no static contact for base_offset = {d0} (Eqs. A.4–A.7)")
     abar = brentq(excess, lo, lo / 0.9, args=args, xtol=1e-15, rtol=4 * np.finfo(float).eps)
     if fixation.is_rigid:
         # The stable branch of displacement control is a > 4^(-2/3) where s is increasing.
         if abar < 4.0 ** (-2.0 / 3.0):
-            raise NoStaticContactError(f"deltabar0 = {d0} is beyond the JKR fixed-grip pull-off (-0.4725)")
+            raise NoStaticContactError(f"base_offset = {d0} is beyond the JKR fixed-grip pull-off (-0.4725)")
         return StaticState(abar, 0.0, _jkr_force(abar))
     return StaticState(abar, _jkr_displacement(abar) - d0, _jkr_force(abar))
 
@@ -265,7 +265,7 @@ def absolute_start(model: Model, state: ArrayLike | None) -> Array:
     """
     if state is None:
         st = static_state(model.problem)
-        return np.array([st.xbar, 0.0, st.abar] if model.compliant else [st.abar])
+        return np.array([st.xbar, 0.0, st.abar_0] if model.compliant else [st.abar_0])
     start = np.asarray(state, dtype=float).ravel()
     if start.size != model.dim or not np.all(np.isfinite(start)) or not start[-1] > 0:
         raise ValueError(f"initial state must be {model.dim} finite numbers with abar > 0, got {state}")

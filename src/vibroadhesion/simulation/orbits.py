@@ -134,7 +134,7 @@ def _dphi_dtau(period: Period, tau: float, core: list[float]) -> float:
     abar, d, contact = period.contact_at(tau, core)
     gap = abar * abar - d
     phi_a, phi_d = gap * (3 * abar * abar + d) / (abar * abar), -2.0 * gap / abar
-    return phi_a * contact[0] / period.m.rate + phi_d * period.deltabar_rate(tau, core)
+    return phi_a * contact[0] / period.m.speed_scale + phi_d * period.deltabar_rate(tau, core)
 
 
 def summarise(
@@ -143,7 +143,7 @@ def summarise(
 ) -> SteadyState:
     """The record of a converged period: quadratures, refined extremes of a and of Phi."""
     period = run.period
-    dim, rate, v_scale = model.dim, model.rate, period.v_scale
+    dim, speed_scale, v_scale = model.dim, model.speed_scale, period.v_scale
     quad = run.y_end[dim + period.n_var :]
     a0 = float(period.start[-1])
     # Extremes of a (x = 0) and of Phi (of the speed, which decreases with Phi).
@@ -153,10 +153,10 @@ def summarise(
     candidates = [*run.steps, *_refine_roots(run, integrators, _dphi_dtau)]
     peak_speed = max(abs(period.contact_at(t, core)[2][0]) for t, core in candidates)
 
-    abar_m = a0 + quad[0] * v_scale / (TWO_PI * rate)
-    a_c, a_s = quad[1] * v_scale / (math.pi * rate), quad[2] * v_scale / (math.pi * rate)
+    abar_m = a0 + quad[0] * v_scale / (TWO_PI * speed_scale)
+    a_c, a_s = quad[1] * v_scale / (math.pi * speed_scale), quad[2] * v_scale / (math.pi * speed_scale)
     phat_m, phat_c, phat_s = quad[4] / TWO_PI, quad[5] / math.pi, quad[6] / math.pi
-    d_m, d_c, d_s = model.deltabar0, 0.0, -model.eps
+    d_m, d_c, d_s = model.base_offset, 0.0, -model.etahat
     if model.compliant:
         d_m += quad[7] * period.x_scale / TWO_PI
         d_c += quad[8] * period.x_scale / math.pi
@@ -164,9 +164,9 @@ def summarise(
     in_range = None if speed_range is None else bool(speed_range[0] <= peak_speed <= speed_range[1])
     status: SteadyStatus = "ok"
     message = "periodic steady state"
-    if peak_speed > _RESOLVED_SPEED_FRACTION * SPEED_CAP * rate:
+    if peak_speed > _RESOLVED_SPEED_FRACTION * SPEED_CAP * speed_scale:
         status = "speed_unresolved"
-        message = f"peak |d abar/d tau| = {peak_speed / rate:.3g} is within 1e-3 of the numerical speed cap"
+        message = f"peak |d abar/d tau| = {peak_speed / speed_scale:.3g} is within 1e-3 of the numerical speed cap"
     orbit = OrbitDiagnostics(
         start_state=period.start.copy(), A1_over_am=math.hypot(a_c, a_s) / abar_m, abar_c=a_c, abar_s=a_s,
         phat_m=phat_m, phat_c=phat_c, phat_s=phat_s, deltabar_c=d_c, deltabar_s=d_s, peak_speed=peak_speed,
@@ -175,7 +175,7 @@ def summarise(
     )
     return SteadyState(
         level="simulation", status=np.asarray(status), Abar=np.asarray(half_range), abar_m=np.asarray(abar_m),
-        w_eff_ratio=np.asarray((quad[3] / TWO_PI) ** 2), A_over_am=np.asarray(half_range / (rate * abar_m)),
+        w_eff_ratio=np.asarray((quad[3] / TWO_PI) ** 2), A_over_am=np.asarray(half_range / (speed_scale * abar_m)),
         pm_over_abs_pjkr=np.asarray(phat_m / -PHAT_JKR), deltabar_m=np.asarray(d_m),
         stable=np.asarray(np.all(np.abs(multipliers) < 1.0)),
         orbit=orbit, message=message,
@@ -211,7 +211,7 @@ def _frozen_drift(model: Model, abar: float, deltabar_mean: float, amplitude: fl
     """
     tau = np.linspace(0.0, TWO_PI, samples, endpoint=False)
     gap = abar * abar - (deltabar_mean - amplitude * np.sin(tau))
-    cap = SPEED_CAP * model.rate
+    cap = SPEED_CAP * model.speed_scale
     x = np.full_like(tau, cap)
     valid = gap > 0
     x[valid] = model.problem.law.speed(np.maximum(gap[valid] ** 2 / abar, 1e-300))
@@ -221,39 +221,39 @@ def _frozen_drift(model: Model, abar: float, deltabar_mean: float, amplitude: fl
 def _frozen_excitation(model: Model, abar: float) -> tuple[float, complex]:
     """(mean deltabar, complex amplitude of xbar) with the contact radius frozen at ``abar``.
 
-    Rigid: (deltabar0, 0). Compliant: with abar fixed, Phat = 2 abar deltabar - (2/3) abar^3 is
-    linear in deltabar = xbar + deltabar0 - eps sin tau, so Eq. (3') is a linear oscillator with
+    Rigid: (base_offset, 0). Compliant: with abar fixed, Phat = 2 abar deltabar - (2/3) abar^3 is
+    linear in deltabar = xbar + base_offset - etahat sin tau, so Eq. (3') is a linear oscillator with
     the contact stiffness 2 abar (units of E* a_o): with sigma = c_o/kappa,
-    mean xbar = (mu/(kappa c_o^2) - sigma (2 abar deltabar0 - (2/3) abar^3))/(1 + 2 abar sigma), and
-    xbar - mean = Im(X e^{i tau}), X = 2 abar sigma eps/(1 + 2 abar sigma - omega_bar^2 + 2i zeta omega_bar)
+    mean xbar = (mu/(kappa c_o^2) - sigma (2 abar base_offset - (2/3) abar^3))/(1 + 2 abar sigma), and
+    xbar - mean = Im(X e^{i tau}), X = 2 abar sigma etahat/(1 + 2 abar sigma - omega_bar^2 + 2i zeta omega_bar)
     (the denominator is kept away from 0 at an undamped resonance: a guess, not a result).
     """
     if not model.compliant:
-        return model.deltabar0, 0j
+        return model.base_offset, 0j
     sigma = model.compliance
     stiffness = 1.0 + 2.0 * abar * sigma
-    x_mean = (model.force_offset - sigma * (2.0 * abar * model.deltabar0 - (2.0 / 3.0) * abar**3)) / stiffness
+    x_mean = (model.force_offset - sigma * (2.0 * abar * model.base_offset - (2.0 / 3.0) * abar**3)) / stiffness
     denominator = complex(stiffness - model.omega_bar**2, 2.0 * model.zeta * model.omega_bar)
     if abs(denominator) < 1e-2 * stiffness:
         denominator = 1e-2 * stiffness * (denominator / abs(denominator) if denominator != 0 else 1.0)
-    return x_mean + model.deltabar0, 2.0 * abar * sigma * model.eps / denominator
+    return x_mean + model.base_offset, 2.0 * abar * sigma * model.etahat / denominator
 
 
 def _frozen_orbit_drift(abar: float, model: Model) -> float:
     """Mean front speed of the frozen contact ``abar`` under its frozen excitation (rigid or spring).
 
-    :func:`_frozen_drift` with the contact displacement deltabar = mean + Im((X - eps) e^{i tau})
+    :func:`_frozen_drift` with the contact displacement deltabar = mean + Im((X - etahat) e^{i tau})
     of :func:`_frozen_excitation` (limit omega_check -> infinity of Eqs. 3', 6').
     """
     d_mean, x_hat = _frozen_excitation(model, abar)
-    return _frozen_drift(model, abar, d_mean, abs(x_hat - model.eps))
+    return _frozen_drift(model, abar, d_mean, abs(x_hat - model.etahat))
 
 
 def frozen_start(model: Model) -> Array | None:
     """Start of the periodic orbit in the limit omega_check -> infinity (a guess for the shooting).
 
     The contact radius is the largest root of the frozen drift (:func:`_frozen_drift`) with the
-    contact displacement deltabar = mean + Im((X - eps) e^{i tau}) of :func:`_frozen_excitation`;
+    contact displacement deltabar = mean + Im((X - etahat) e^{i tau}) of :func:`_frozen_excitation`;
     None when no root is bracketed.
     """
     hi = 1.0
@@ -270,7 +270,7 @@ def frozen_start(model: Model) -> Array | None:
     if not model.compliant:
         return np.array([abar])
     d_mean, x_hat = _frozen_excitation(model, abar)
-    return np.array([d_mean - model.deltabar0 + x_hat.imag, x_hat.real, abar])
+    return np.array([d_mean - model.base_offset + x_hat.imag, x_hat.real, abar])
 
 
 

@@ -103,7 +103,7 @@ def _psi(run: Run, integrators: Integrators) -> Array:
     period, dim = run.period, run.period.dim
     if period.m.variational:
         return run.y_end[dim : dim + dim * dim].reshape(dim, dim)
-    unscale = [period.x_scale, period.x_scale, period.v_scale / period.m.rate][-dim:]
+    unscale = [period.x_scale, period.x_scale, period.v_scale / period.m.speed_scale][-dim:]
     psi = np.empty((dim, dim))
     for j in range(dim):
         residuals = []
@@ -171,7 +171,7 @@ def _rigid_drift_and_slope(model: Model, run: Run, integrators: Integrators) -> 
     the finite-difference Psi (n > 1).
     """
     u_end = float(run.y_end[0])
-    drift = run.period.v_scale * u_end / model.rate  # r = abar(2pi) - abar(0)
+    drift = run.period.v_scale * u_end / model.speed_scale  # r = abar(2pi) - abar(0)
     if model.variational:
         log_multiplier = float(run.y_end[1])
         slope = math.expm1(log_multiplier)  # r'(a0) = multiplier - 1
@@ -195,7 +195,7 @@ def _secant_step(model: Model, run: Run, integrators: Integrators, a: float, dri
         g_slope = secant if secant > 0 else 1.0
     step = -g / g_slope
     noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run) * run.period.v_scale
-             / (model.rate * abs(slope) * g_slope))
+             / (model.speed_scale * abs(slope) * g_slope))
     return step, noise, (a, g)
 
 
@@ -282,7 +282,7 @@ def _correction(model: Model, run: Run, integrators: Integrators) -> _Correction
                       * np.linalg.norm(np.linalg.inv(psi), np.inf))
     except np.linalg.LinAlgError:
         return None
-    unscale = np.array([period.x_scale, period.x_scale, period.v_scale / model.rate])
+    unscale = np.array([period.x_scale, period.x_scale, period.v_scale / model.speed_scale])
     return g_scaled * unscale, residual * unscale, noise, periodic_to_rounding(run, integrators)
 
 
@@ -368,7 +368,7 @@ def _shoot_compliant(model: Model, start: Array, integrators: Integrators, max_i
     while current is not None and periods < max_iterations:
         v_scale = observed_v_scale(run)
         g, residual, noise, at_rounding = current
-        scales = np.array([run.period.x_scale, run.period.x_scale, max(v_scale / model.rate, 1e-14 * z[2])])
+        scales = np.array([run.period.x_scale, run.period.x_scale, max(v_scale / model.speed_scale, 1e-14 * z[2])])
         broyden, step = _broyden_step(broyden, z, g, previous, scales)
         converged = np.all(np.abs(step) <= _NEWTON_XTOL * np.array([scales[0], scales[1], z[2]]))
         if converged or at_rounding or float(np.max(np.abs(step) / scales)) <= noise:
