@@ -27,11 +27,11 @@ import mpmath as mp
 DIGITS = 30
 
 
-def _breakpoints(abar: mp.mpf) -> list:
+def _breakpoints(Abar: mp.mpf) -> list:
     half_pi = mp.pi / 2
     points = [mp.mpf(0), half_pi, mp.pi]
-    if abar > 1:
-        scale = 1 / abar
+    if Abar > 1:
+        scale = 1 / Abar
         while scale < half_pi / 2:
             points += [half_pi - scale, half_pi + scale]
             scale *= 10
@@ -39,13 +39,13 @@ def _breakpoints(abar: mp.mpf) -> list:
 
 
 @functools.cache
-def j_integrals_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+def j_integrals_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
     """(J0, Jc1, J1) at ``DIGITS`` significant digits for the Gent–Schultz law."""
     # Jc1 is a difference of two O(1) halves that cancel to O(A^n) for small A: carry
     # n*log10(1/A) guard digits so that the result still has DIGITS significant digits.
-    guard = 10 + (int(n * -mp.log10(abar)) + 1 if 0 < abar < 1 else 0)
+    guard = 10 + (int(n * -mp.log10(Abar)) + 1 if 0 < Abar < 1 else 0)
     with mp.workdps(DIGITS + guard):
-        a, nn = mp.mpf(abar), mp.mpf(n)
+        a, nn = mp.mpf(Abar), mp.mpf(n)
 
         def sqrt_f(x):
             s = a * mp.cos(x)

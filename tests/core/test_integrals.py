@@ -60,10 +60,10 @@ def _errors(value: float, reference: mp.mpf) -> float:
 @pytest.mark.parametrize("n", N_VALUES)
 def test_j_integrals_match_mpmath_30_digits_to_1e12(n: float) -> None:
     """Reference: 30-digit mpmath quadrature of Eqs. (28), (29), (36); tolerance 1e-12 relative."""
-    abar = _abar_grid(n)
-    values = j_integrals(abar, n)  # one batched call per n
+    Abar = _abar_grid(n)
+    values = j_integrals(Abar, n)  # one batched call per n
     worst = {name: (0.0, None) for name in ("J0", "Jc1", "J1")}
-    for i, a in enumerate(abar):
+    for i, a in enumerate(Abar):
         ref = j_integrals_mp(float(a), n)
         for k, name in enumerate(("J0", "Jc1", "J1")):
             err = _errors(float(values[k][i]), ref[k])
@@ -74,7 +74,7 @@ def test_j_integrals_match_mpmath_30_digits_to_1e12(n: float) -> None:
     assert max_err < REL_TOL, f"n={n}: max error {max_err:.3e} > {REL_TOL:g}; per integral: {worst}"
 
 
-def _j_integrals_folded_mp(abar: float, n: float, dps: int) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+def _j_integrals_folded_mp(Abar: float, n: float, dps: int) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
     """Eqs. (28), (29), (36) folded onto t = pi/2 - x in (0, pi/2), in mpmath at ``dps`` digits.
 
     J0 = 1/pi int (g(v) + g(-v)) dt, Jc1 = 2/pi int (g(v) - g(-v)) sin t dt,
@@ -82,9 +82,9 @@ def _j_integrals_folded_mp(abar: float, n: float, dps: int) -> tuple[mp.mpf, mp.
     g is evaluated from f directly (not from the simplified S, D); the cancellation in
     g(v) - g(-v) is paid for with guard digits. Breakpoints at t = 10^k / Abar (boundary layer).
     """
-    guard = 15 + (int(n * -math.log10(abar)) + 1 if 0 < abar < 1 else 0)
+    guard = 15 + (int(n * -math.log10(Abar)) + 1 if 0 < Abar < 1 else 0)
     with mp.workdps(dps + guard):
-        a, nn = mp.mpf(abar), mp.mpf(n)
+        a, nn = mp.mpf(Abar), mp.mpf(n)
 
         def f(s):
             f_op = 1 + abs(s) ** nn
@@ -111,11 +111,11 @@ def _j_integrals_folded_mp(abar: float, n: float, dps: int) -> tuple[mp.mpf, mp.
         return +j0, +jc1, +j1
 
 
-@pytest.mark.parametrize("abar, n", [(1e-8, N_PUBLISHED), (1.5708, 0.05), (1e3, 4.0), (1e6, 1.0)])
-def test_mpmath_reference_matches_folded_mpmath_45_digits_to_1e25(abar: float, n: float) -> None:
+@pytest.mark.parametrize("Abar, n", [(1e-8, N_PUBLISHED), (1.5708, 0.05), (1e3, 4.0), (1e6, 1.0)])
+def test_mpmath_reference_matches_folded_mpmath_45_digits_to_1e25(Abar: float, n: float) -> None:
     """Reference of the reference: the 30-digit values agree with an independent 45-digit evaluation."""
-    ref30 = j_integrals_mp(abar, n)
-    ref45 = _j_integrals_folded_mp(abar, n, dps=45)
+    ref30 = j_integrals_mp(Abar, n)
+    ref45 = _j_integrals_folded_mp(Abar, n, dps=45)
     with mp.workdps(50):
         errs = [abs((r30 - r45) / r45) for r30, r45 in zip(ref30, ref45)]
     assert max(errs) < mp.mpf("1e-25"), f"relative differences {[mp.nstr(e, 3) for e in errs]}"
@@ -191,11 +191,11 @@ def test_documented_1e12_accuracy_holds_near_abar_2(n: float) -> None:
     below 1e-13 for Abar in [0, 1e12] and n in [0.05, 4]; probe the hardest region found (n = 4,
     Abar ~ 2, where the integrand's analyticity strip |Im y| < pi/n is narrowest).
     """
-    abar = np.array([1.7, 1.9, 1.95, 2.1, 2.15])
-    values = j_integrals(abar, n)
+    Abar = np.array([1.7, 1.9, 1.95, 2.1, 2.15])
+    values = j_integrals(Abar, n)
     errs = [max(_errors(float(values[k][i]), j_integrals_mp(float(a), n)[k]) for k in range(3))
-            for i, a in enumerate(abar)]
-    assert max(errs) < 1e-12, f"n={n}: max relative error {max(errs):.3e} at Abar={abar[int(np.argmax(errs))]}"
+            for i, a in enumerate(Abar)]
+    assert max(errs) < 1e-12, f"n={n}: max relative error {max(errs):.3e} at Abar={Abar[int(np.argmax(errs))]}"
 
 
 # ----------------------------------------------------------------------------- general rule
@@ -207,10 +207,10 @@ def test_general_rule_matches_gent_schultz_fast_path_to_1e12(n: float) -> None:
 
     Jc1 of the general rule is a difference of sqrt(f) at +-v, so only |Jc1| > 1e-3 is compared.
     """
-    abar = np.logspace(-6, 12, 145)
-    fast = j_integrals(abar, n)
-    general = j_integrals_general(abar, GentSchultz(n))
-    dispatched = j_integrals_for_law(abar, GentSchultz(n))
+    Abar = np.logspace(-6, 12, 145)
+    fast = j_integrals(Abar, n)
+    general = j_integrals_general(Abar, GentSchultz(n))
+    dispatched = j_integrals_for_law(Abar, GentSchultz(n))
     for k in range(3):
         np.testing.assert_array_equal(dispatched[k], fast[k])
     for k in (0, 2):
@@ -248,10 +248,10 @@ def test_large_abar_constants_match_mpmath_quad_of_cos_powers(n: float) -> None:
         assert abs(float(g) / float(e) - 1) < 1e-14, (float(g), float(e))
 
 
-def _large_abar_asymptotes_mp(abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+def _large_abar_asymptotes_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
     """The leading large-Abar asymptotes evaluated in mpmath (constants by quad of the cos powers)."""
     p = mp.mpf(n) / 2
-    scale = mp.mpf(abar) ** p
+    scale = mp.mpf(Abar) ** p
     return (scale * _cos_power_mp(p) / mp.pi, -2 * scale * _cos_power_mp(p + 1) / mp.pi,
             2 * scale * _sin2_cos_power_mp(p) / mp.pi)
 
@@ -275,9 +275,9 @@ def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
             for k in range(3):
                 rem = ref[k] - asym[k]
                 assert 0 < rem < bounds[k], (a, k, rem)
-    abar = np.logspace(0, 12, 241)
-    exact = j_integrals(abar, n)
-    asym = j_integrals_large_abar(abar, n)
+    Abar = np.logspace(0, 12, 241)
+    exact = j_integrals(Abar, n)
+    asym = j_integrals_large_abar(Abar, n)
     for k in range(3):
         rem = exact[k] - asym[k]
         slack = 1e-13 * np.abs(exact[k])
@@ -290,14 +290,14 @@ def test_large_abar_asymptote_relative_error_vanishes(n: float) -> None:
     (it is O(Abar^{-n/2}) by the bounds above) until it reaches double rounding (1e-15), and is
     < 1e-3 at Abar = 1e12 for n >= 1.
     """
-    abar = [1e2, 1e4, 1e6, 1e8, 1e10, 1e12]
-    rel = np.empty((len(abar), 3))
-    for i, a in enumerate(abar):
+    Abar = [1e2, 1e4, 1e6, 1e8, 1e10, 1e12]
+    rel = np.empty((len(Abar), 3))
+    for i, a in enumerate(Abar):
         ref = j_integrals_mp(a, n)
         asym = j_integrals_large_abar(a, n)
         rel[i] = [abs(float(asym[k]) / float(ref[k]) - 1) for k in range(3)]
     assert np.all((np.diff(rel, axis=0) < 0) | (rel[1:] < 1e-15)), rel
-    bound_rel = np.array([1.0 / float(j_integrals_mp(a, n)[0]) for a in abar])  # J0 - J0~ < 1
+    bound_rel = np.array([1.0 / float(j_integrals_mp(a, n)[0]) for a in Abar])  # J0 - J0~ < 1
     assert np.all(rel[:, 0] < bound_rel + 1e-15), (rel[:, 0], bound_rel)
     if n >= 1:
         assert np.all(rel[-1] < 1e-3), rel[-1]
@@ -324,10 +324,10 @@ def test_small_abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[fl
     Where the rounding is negligible the ratio must also approach c3 (within 35 %).
     """
     c3 = _third_order_coefficients(n)
-    abar = np.logspace(decades[1], decades[0], 7)
+    Abar = np.logspace(decades[1], decades[0], 7)
     for k in range(3):
         ratios = []
-        for a in abar:
+        for a in Abar:
             ref = j_integrals_mp(float(a), n)[k]
             approx = float(j_integrals_small_abar(float(a), n)[k])
             err = abs(ref - mp.mpf(approx))
@@ -366,12 +366,12 @@ def test_j0_and_minus_jc1_strictly_increasing_as_proved(n: float) -> None:
     may go down by at most that bound; J0 must increase strictly wherever the expected step
     (J0 - 1)((grid ratio)^{2n} - 1), from J0 - 1 ~ Abar^{2n}, exceeds twice the bound.
     """
-    abar = np.logspace(-12, 12, 4001)
-    j0, jc1, j1 = j_integrals(abar, n)
+    Abar = np.logspace(-12, 12, 4001)
+    j0, jc1, j1 = j_integrals(Abar, n)
     bound = _reordered_sum_bound(2 * len(folded_rule()[0]), elementwise_ulps=7.0)
     assert np.all(np.diff(-jc1) > 0), np.min(np.diff(-jc1))
     assert np.all(np.diff(j0) >= -bound * j0[:-1]), np.min(np.diff(j0))
-    expected_step = (j0[:-1] - 1) * ((abar[1] / abar[0]) ** (2 * n) - 1)
+    expected_step = (j0[:-1] - 1) * ((Abar[1] / Abar[0]) ** (2 * n) - 1)
     resolvable = expected_step > 2 * bound * j0[:-1]
     assert resolvable.sum() > 1000
     assert np.all(np.diff(j0)[resolvable] > 0)
@@ -381,14 +381,14 @@ def test_j0_and_minus_jc1_strictly_increasing_as_proved(n: float) -> None:
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 4.0])
 def test_no_nan_no_warning_at_extreme_abar(n: float) -> None:
     """Abar in {0, 1e-300, 1e12}: finite results, no warning of any kind (closed-form limit at the tiny end)."""
-    abar = np.array([0.0, 1e-300, 1e12])
+    Abar = np.array([0.0, 1e-300, 1e12])
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        values = j_integrals(abar, n)
-        singles = [j_integrals(float(a), n) for a in abar]
-        small = j_integrals_small_abar(abar, n)
-        large = j_integrals_large_abar(abar, n)
-        general = j_integrals_general(abar, GentSchultz(n))
+        values = j_integrals(Abar, n)
+        singles = [j_integrals(float(a), n) for a in Abar]
+        small = j_integrals_small_abar(Abar, n)
+        large = j_integrals_large_abar(Abar, n)
+        general = j_integrals_general(Abar, GentSchultz(n))
     for arr in (*values, *small, *large, *general, *(x for s in singles for x in s)):
         assert np.all(np.isfinite(arr))
     # 1e-300: u = Abar^n sin^n t underflows harmlessly, J = (1, 0, 1) to double precision (|Jc1| ~ Abar^n)

@@ -32,15 +32,15 @@ from vibroadhesion.numerics.roots import NoRootError
 def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: float) -> None:
     """Reference: Eq. (72), (chi0^2/3) J0^{1/3} |Jc1| = eta1, with 30-digit mpmath J at the returned root; 1e-12."""
     law = GentSchultz(n)
-    abar = critical_abar_leading(eta1, CHI0, law)
-    assert abar > 0
-    j0, jc1, _ = j_integrals_mp(abar, n)
+    Abar = critical_abar_leading(eta1, CHI0, law)
+    assert Abar > 0
+    j0, jc1, _ = j_integrals_mp(Abar, n)
     lhs = mp.mpf(CHI0) ** 2 / 3 * mp.cbrt(j0) * abs(jc1)
     residual = float(abs(lhs / mp.mpf(eta1) - 1))
-    assert residual < 1e-12, f"Abar_cr = {abar!r}: relative residual {residual:.3e}"
+    assert residual < 1e-12, f"Abar_cr = {Abar!r}: relative residual {residual:.3e}"
     # Eq. (71): the reported amplification is J0(Abar_cr)^2, and pulloff_leading agrees with the scalar solver
     est = pulloff_leading(np.array([eta1]), CHI0, law)
-    assert est.Abar_cr[0] == abar
+    assert est.Abar_cr[0] == Abar
     assert abs(est.pulloff_ratio[0] / float(j0**2) - 1) < 1e-12
 
 
@@ -49,13 +49,13 @@ def test_eq72_and_eq106_lhs_strictly_increasing_as_proved(n: float) -> None:
     """Closed-form monotonicity proofs (docstrings of leading_order/refined; n < 6): both left-hand
     sides rise strictly with Abar. Dense grid Abar in logspace(-12, 12, 2401).
     """
-    abar = np.logspace(-12, 12, 2401)
+    Abar = np.logspace(-12, 12, 2401)
     law = GentSchultz(n)
-    lhs72 = pulloff_lhs_leading(abar, law)
-    assert np.all(np.diff(lhs72) > 0), (n, abar[np.argmin(np.diff(lhs72))])
+    lhs72 = pulloff_lhs_leading(Abar, law)
+    assert np.all(np.diff(lhs72) > 0), (n, Abar[np.argmin(np.diff(lhs72))])
     for omega_check in (1e2, 1e6):
-        lhs106 = pulloff_lhs_refined(abar, law, CHI0, omega_check)
-        assert np.all(np.diff(lhs106) > 0), (n, omega_check, abar[np.argmin(np.diff(lhs106))])
+        lhs106 = pulloff_lhs_refined(Abar, law, CHI0, omega_check)
+        assert np.all(np.diff(lhs106) > 0), (n, omega_check, Abar[np.argmin(np.diff(lhs106))])
         # the frequency term only adds: Eq. (106) LHS >= (Eq. 72 LHS * chi0^2 / 3)^2
         assert np.all(lhs106 >= (CHI0**2 / 3 * lhs72) ** 2 * (1 - 1e-13))
 
@@ -152,12 +152,12 @@ def test_eq106_root_satisfies_printed_equation_with_mpmath_j(omega_check: float,
     chi0^4/9 J0^{2/3} Jc1^2 + chi0^2/omega^2 Abar^2 J0^{4/3} (1 - J1/(3 J0))^2 = eta1^2.
     """
     eta1 = ETA1
-    abar = critical_abar_refined(eta1, CHI0, omega_check, GentSchultz(n))
-    j0, jc1, j1 = j_integrals_mp(abar, n)
-    c, a, w = mp.mpf(CHI0), mp.mpf(abar), mp.mpf(omega_check)
+    Abar = critical_abar_refined(eta1, CHI0, omega_check, GentSchultz(n))
+    j0, jc1, j1 = j_integrals_mp(Abar, n)
+    c, a, w = mp.mpf(CHI0), mp.mpf(Abar), mp.mpf(omega_check)
     lhs = c**4 / 9 * mp.cbrt(j0) ** 2 * jc1**2 + c**2 / w**2 * a**2 * mp.cbrt(j0) ** 4 * (1 - j1 / (3 * j0)) ** 2
     residual = float(abs(mp.sqrt(lhs) / mp.mpf(eta1) - 1))
-    assert residual < 1e-12, f"Abar_cr = {abar!r}: relative residual {residual:.3e}"
+    assert residual < 1e-12, f"Abar_cr = {Abar!r}: relative residual {residual:.3e}"
 
 
 # ----------------------------------------------------------------------------- bounded LHS -> NoRootError
@@ -176,10 +176,10 @@ class Saturating:
         return np.where(x < 0, g, 1.0 / g)
 
 
-def _saturating_j_mp(abar: float) -> tuple[mp.mpf, mp.mpf]:
+def _saturating_j_mp(Abar: float) -> tuple[mp.mpf, mp.mpf]:
     """J0, Jc1 of the Saturating law straight from Eqs. (28), (29), mpmath at 30 digits."""
     with mp.workdps(30):
-        a = mp.mpf(abar)
+        a = mp.mpf(Abar)
 
         def sqrt_f(x):
             s = a * mp.cos(x)
@@ -209,11 +209,11 @@ def test_bounded_lhs_rate_law_small_eta1_root_satisfies_eq72_with_mpmath() -> No
     """Reference: Eq. (72) with the Saturating law's J0, Jc1 by mpmath quadrature of Eqs. (28), (29); 1e-10."""
     law = Saturating()
     eta1 = 1e-6
-    abar = critical_abar_leading(eta1, CHI0, law)
-    j0, jc1 = _saturating_j_mp(abar)
+    Abar = critical_abar_leading(eta1, CHI0, law)
+    j0, jc1 = _saturating_j_mp(Abar)
     lhs = mp.mpf(CHI0) ** 2 / 3 * mp.cbrt(j0) * abs(jc1)
     residual = float(abs(lhs / mp.mpf(eta1) - 1))
-    assert residual < 1e-10, f"Abar = {abar!r}: relative residual {residual:.3e}"
+    assert residual < 1e-10, f"Abar = {Abar!r}: relative residual {residual:.3e}"
 
 
 @pytest.mark.parametrize("bad", [-1e-6, math.nan, math.inf])

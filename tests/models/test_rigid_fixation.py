@@ -30,10 +30,10 @@ from vibroadhesion.models.stiffness import dynamic_stiffness
 EXPONENTS = [0.05, N_PUBLISHED, 4.0]  # the published n and the two extremes the issue names
 
 
-def eq122_lhs_mp(abar: float, omega_check: float, n: float) -> mp.mpf:
+def eq122_lhs_mp(Abar: float, omega_check: float, n: float) -> mp.mpf:
     """Eq. (122) as printed, with abar_m = J0^(2/3) (Eq. 123), in 30-digit arithmetic."""
-    j0, jc1, j1 = j_integrals_mp(abar, n)
-    c, a, w = mp.mpf(CHI0), mp.mpf(abar), mp.mpf(omega_check)
+    j0, jc1, j1 = j_integrals_mp(Abar, n)
+    c, a, w = mp.mpf(CHI0), mp.mpf(Abar), mp.mpf(omega_check)
     am = mp.cbrt(j0) ** 2
     first = mp.mpf(2) ** (mp.mpf(4) / 3) * c**4 / mp.mpf(3) ** (mp.mpf(8) / 3) * am * jc1**2
     second = (mp.mpf(2) ** (mp.mpf(8) / 3) * c**2 / (mp.mpf(3) ** (mp.mpf(4) / 3) * w**2)) * a**2 * am**2 * (
@@ -73,9 +73,9 @@ def test_eq122_lhs_rises_strictly_from_zero_to_infinity_so_one_root(omega_check:
     eta1^2 = 1e-4 (h1 = 515 um) at Abar = exp(min(60/n, 150)) (an Abar^n of e^60, far past any root).
     """
     law = GentSchultz(n)
-    abar = np.logspace(-12, 12, 2401)
-    lhs = rigid_amplitude_squared(abar, law, CHI0, omega_check, nominal_point_contact_closure)
-    assert np.all(np.diff(lhs) > 0), abar[np.argmin(np.diff(lhs))]
+    Abar = np.logspace(-12, 12, 2401)
+    lhs = rigid_amplitude_squared(Abar, law, CHI0, omega_check, nominal_point_contact_closure)
+    assert np.all(np.diff(lhs) > 0), Abar[np.argmin(np.diff(lhs))]
     ends = rigid_amplitude_squared(np.array([0.0, math.exp(min(60.0 / n, 150.0))]), law, CHI0, omega_check,
                                    nominal_point_contact_closure)
     assert ends[0] == 0.0 and ends[1] > 1e-4
@@ -114,11 +114,11 @@ def test_h1_to_zero_abar_vanishes_and_abar_m_tends_to_one(omega_check: float, n:
     law = GentSchultz(n)
     for eta1 in (1e-10, 1e-12, 1e-14):
         sol = nominal_point_contact(eta1, omega_check, CHI0, law)
-        abar = float(sol.Abar)
+        Abar = float(sol.Abar)
         reference = small_amplitude_abar_mp(eta1, omega_check, n)
-        assert abs(abar / reference - 1) < 10 * abar**n + 1e-9, (eta1, abar, reference)
-        assert abs(float(sol.abar_m) - 1) < 10 * abar ** (2 * n) + 1e-12
-        assert abs(float(sol.w_eff_ratio) - 1) < 10 * abar ** (2 * n) + 1e-12
+        assert abs(Abar / reference - 1) < 10 * Abar**n + 1e-9, (eta1, Abar, reference)
+        assert abs(float(sol.abar_m) - 1) < 10 * Abar ** (2 * n) + 1e-12
+        assert abs(float(sol.w_eff_ratio) - 1) < 10 * Abar ** (2 * n) + 1e-12
     assert 0 < float(sol.A_over_am) < 1e-6
 
 

@@ -45,14 +45,14 @@ def amplitude_in_contact_units(eta1: ArrayLike, chi0: float) -> NDArray[np.float
 
 
 def contact_radius_amplitude_ratio(
-    abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike
+    Abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike
 ) -> NDArray[np.float64]:
     """A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check) = Abar / (c_o abar_m omega_check).
 
     From Eqs. (45), (86), (105): A = Abar v0/omega, so A/a_m = Abar (v0/(omega R)) / (c_o abar_m). The
     printed Eq. (98) drops the factor 1/omega_bar (docs/errata.md, E1).
     """
-    return 3.0 ** (2 / 3) * np.asarray(abar) / (2.0 ** (1 / 3) * chi0 * np.asarray(abar_m) * np.asarray(omega_check))
+    return 3.0 ** (2 / 3) * np.asarray(Abar) / (2.0 ** (1 / 3) * chi0 * np.asarray(abar_m) * np.asarray(omega_check))
 
 
 def eta1(h1: ArrayLike, radius: float) -> NDArray[np.float64]:

@@ -85,22 +85,22 @@ def _gent_schultz_weights() -> tuple[NDArray[np.float64], NDArray[np.float64]]:
     return w_r, w_ur
 
 
-def _as_abar(abar: ArrayLike) -> NDArray[np.float64]:
-    a = np.asarray(abar, dtype=float)
+def _as_internal_variable(Abar: ArrayLike) -> NDArray[np.float64]:
+    a = np.asarray(Abar, dtype=float)
     if np.any(~np.isfinite(a)) or np.any(a < 0):
         raise ValueError("Abar must be finite and non-negative")
     return a
 
 
-def j_integrals(abar: ArrayLike, n: float) -> Triple:
+def j_integrals(Abar: ArrayLike, n: float) -> Triple:
     """J0, Jc1 and J1 of the Gent–Schultz law (Eqs. 28, 29, 36 with Eqs. 73–75).
 
-    Vectorised over ``abar`` (any shape; each output has that shape). ``n`` is the
+    Vectorised over ``Abar`` (any shape; each output has that shape). ``n`` is the
     Gent–Schultz exponent. Relative error below 1e-12 for Abar in [0, 1e12], n in [0.05, 4]
     (absolute for Jc1(0) = 0, which is returned exactly).
     """
     GentSchultz(n)  # validates n
-    a = _as_abar(abar)
+    a = _as_internal_variable(Abar)
     with np.errstate(divide="ignore"):
         n_log_a = n * np.log(a.ravel())
     if np.any(n_log_a > _MAX_N_LOG_A):
@@ -122,14 +122,14 @@ def j_integrals(abar: ArrayLike, n: float) -> Triple:
     return j0, jc1, j1
 
 
-def j_integrals_general(abar: ArrayLike, law: RateLaw) -> Triple:
+def j_integrals_general(Abar: ArrayLike, law: RateLaw) -> Triple:
     """J0, Jc1 and J1 of an arbitrary rate law, Eqs. (28), (29), (36), on the same fixed rule.
 
     The odd part D is formed as a difference of sqrt(f) at +-v, so for small Abar Jc1 carries
     an absolute (not relative) error of ~1e-16; the rule assumes that f changes over
     |x| ~ 1 and is smooth elsewhere, as the Gent–Schultz law does.
     """
-    a = _as_abar(abar)
+    a = _as_internal_variable(Abar)
     t, _, weights = folded_rule()
     out = np.empty((a.size, 3))
     flat = a.ravel()
@@ -142,11 +142,11 @@ def j_integrals_general(abar: ArrayLike, law: RateLaw) -> Triple:
     return j0, jc1, j1
 
 
-def j_integrals_for_law(abar: ArrayLike, law: RateLaw) -> Triple:
+def j_integrals_for_law(Abar: ArrayLike, law: RateLaw) -> Triple:
     """J0, Jc1, J1 of any rate law: the fast path for :class:`GentSchultz`, the general rule otherwise."""
     if isinstance(law, GentSchultz):
-        return j_integrals(abar, law.n)
-    return j_integrals_general(abar, law)
+        return j_integrals(Abar, law.n)
+    return j_integrals_general(Abar, law)
 
 
 def _cos_power_integral(p: float) -> float:
@@ -159,7 +159,7 @@ def _sin2_cos_power_integral(p: float) -> float:
     return 0.5 * float(beta(1.5, 0.5 * (p + 1)))
 
 
-def j_integrals_large_abar(abar: ArrayLike, n: float) -> Triple:
+def j_integrals_large_abar(Abar: ArrayLike, n: float) -> Triple:
     """Leading large-Abar asymptotes of (J0, Jc1, J1) for the Gent–Schultz law.
 
     Only the opening half contributes at leading order (end of Sec. 3.3), sqrt(1+u) ~ u^{1/2}:
@@ -171,7 +171,7 @@ def j_integrals_large_abar(abar: ArrayLike, n: float) -> Triple:
     (all integrals over (0, pi/2), in Gamma functions). The remainders are bounded for every
     Abar: 0 < J0 - J0~ < 1, 0 < Jc1 - Jc1~ < 1/pi, 0 < J1 - J1~ < 1 (tested).
     """
-    a = _as_abar(abar)
+    a = _as_internal_variable(Abar)
     p = 0.5 * n
     scale = a**p
     return (
@@ -181,7 +181,7 @@ def j_integrals_large_abar(abar: ArrayLike, n: float) -> Triple:
     )
 
 
-def j_integrals_small_abar(abar: ArrayLike, n: float) -> Triple:
+def j_integrals_small_abar(Abar: ArrayLike, n: float) -> Triple:
     """Small-Abar expansions of (J0, Jc1, J1) for the Gent–Schultz law, first correction kept.
 
     With u = (Abar sin t)^n: S = 2 + u^2/4 + O(u^3) and D = -u + u^2/2 + O(u^3), so
@@ -193,7 +193,7 @@ def j_integrals_small_abar(abar: ArrayLike, n: float) -> Triple:
     with W(p) = int cos^p and S2(p) = int sin^2 cos^p over (0, pi/2). Hence the limits
     J0(0) = J1(0) = 1 and Jc1(0) = 0 used in Eqs. (99), (123) and Sec. 3.7.
     """
-    a = _as_abar(abar)
+    a = _as_internal_variable(Abar)
     an, a2n = a**n, a ** (2 * n)
     return (
         1.0 + a2n * _cos_power_integral(2 * n) / (4 * math.pi),

@@ -53,27 +53,27 @@ def nominal_point_contact_closure(j0: Array) -> Array:
 
 
 def displacement_harmonics(
-    abar: ArrayLike, abar_m: ArrayLike, jc1: ArrayLike, j1: ArrayLike, chi0: float, omega_check: ArrayLike
+    Abar: ArrayLike, abar_m: ArrayLike, jc1: ArrayLike, j1: ArrayLike, chi0: float, omega_check: ArrayLike
 ) -> tuple[Array, Array]:
     """(delta_c, delta_s) / R of Eqs. (93)–(94), broadcast; ``omega_check = inf`` gives delta_s = 0."""
-    abar, abar_m = np.asarray(abar, dtype=float), np.asarray(abar_m, dtype=float)
+    Abar, abar_m = np.asarray(Abar, dtype=float), np.asarray(abar_m, dtype=float)
     delta_c = -(2.0 ** (2 / 3) / 3.0 ** (4 / 3)) * chi0**2 * np.sqrt(abar_m) * np.asarray(jc1)
-    delta_s = (2.0 ** (4 / 3) / 3.0 ** (2 / 3)) * chi0 * (abar / np.asarray(omega_check, dtype=float)) * abar_m * (
+    delta_s = (2.0 ** (4 / 3) / 3.0 ** (2 / 3)) * chi0 * (Abar / np.asarray(omega_check, dtype=float)) * abar_m * (
         1.0 - np.asarray(j1) / (4.0 * abar_m**1.5)
     )
     return delta_c, delta_s
 
 
 def rigid_amplitude_squared(
-    abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float, closure: Callable[[Array], Array]
+    Abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float, closure: Callable[[Array], Array]
 ) -> Array:
     """delta_c^2 + delta_s^2 (left-hand side of Eq. 103) along a closure abar_m(J0)."""
-    j0, jc1, j1 = j_integrals_for_law(abar, law)
-    delta_c, delta_s = displacement_harmonics(abar, closure(j0), jc1, j1, chi0, omega_check)
+    j0, jc1, j1 = j_integrals_for_law(Abar, law)
+    delta_c, delta_s = displacement_harmonics(Abar, closure(j0), jc1, j1, chi0, omega_check)
     return delta_c**2 + delta_s**2
 
 
-def solve_rigid_abar(
+def solve_rigid_internal_variable(
     eta1: float, chi0: float, omega_check: float, law: RateLaw, closure: Callable[[Array], Array], what: str
 ) -> float:
     """The unique root Abar of delta_c^2 + delta_s^2 = eta1^2 along ``closure``; eta1 = 0 gives 0."""
@@ -93,22 +93,22 @@ def solve_rigid_abar(
 # --- Pull-off, Eq. (106) ------------------------------------------------------------------
 
 
-def pulloff_lhs_refined(abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float) -> Array:
+def pulloff_lhs_refined(Abar: ArrayLike, law: RateLaw, chi0: float, omega_check: float) -> Array:
     """Left-hand side of Eq. (106); ``omega_check = inf`` drops the frequency term."""
-    return rigid_amplitude_squared(abar, law, chi0, omega_check, pulloff_closure)
+    return rigid_amplitude_squared(Abar, law, chi0, omega_check, pulloff_closure)
 
 
 def critical_abar_refined(eta1: float, chi0: float, omega_check: float, law: RateLaw) -> float:
     """Root Abar_cr of Eq. (106) for one (eta1, omega_check); eta1 = 0 gives 0."""
-    return solve_rigid_abar(eta1, chi0, omega_check, law, pulloff_closure, "Eq. (106)")
+    return solve_rigid_internal_variable(eta1, chi0, omega_check, law, pulloff_closure, "Eq. (106)")
 
 
 def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> Pulloff:
     """Refined pull-off (Eqs. 71, 106), vectorised and broadcast over eta1 and omega_check: level ``refined``."""
-    abar = np.vectorize(lambda e, w: critical_abar_refined(e, chi0, w, law), otypes=[float])(
+    Abar = np.vectorize(lambda e, w: critical_abar_refined(e, chi0, w, law), otypes=[float])(
         np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float)
     )
-    return pulloff_from_abar("refined", abar, law)
+    return pulloff_from_abar("refined", Abar, law)
 
 
 # --- Nominal point contact of a rigidly fixed indenter, Eqs. (122)–(123) -------------------
@@ -124,16 +124,17 @@ def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, 
     report them.
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
-    abar = np.vectorize(
-        lambda e, w: solve_rigid_abar(e, chi0, w, law, nominal_point_contact_closure, "Eq. (122)"), otypes=[float]
+    Abar = np.vectorize(
+        lambda e, w: solve_rigid_internal_variable(e, chi0, w, law, nominal_point_contact_closure, "Eq. (122)"),
+        otypes=[float],
     )(eta1, omega_check)
-    j0 = j_integrals_for_law(abar, law)[0]
+    j0 = j_integrals_for_law(Abar, law)[0]
     abar_m = nominal_point_contact_closure(j0)
     w_eff_ratio = j0**2
     return SteadyState(
-        "refined", np.full(abar.shape, "ok"), abar, abar_m, w_eff_ratio,
-        contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check),
-        mean_force_over_pulloff(abar_m, np.sqrt(w_eff_ratio)), np.zeros(abar.shape),
+        "refined", np.full(Abar.shape, "ok"), Abar, abar_m, w_eff_ratio,
+        contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_check),
+        mean_force_over_pulloff(abar_m, np.sqrt(w_eff_ratio)), np.zeros(Abar.shape),
     )
 
 
@@ -145,5 +146,5 @@ def leading_nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0:
     """
     eta1 = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))[0]
     limit = nominal_point_contact(eta1, math.inf, chi0, law)
-    a_over_am = contact_radius_amplitude_ratio(limit.Abar, limit.abar_m, chi0, omega_check)
-    return replace(limit, level="leading", A_over_am=a_over_am)
+    A_over_am = contact_radius_amplitude_ratio(limit.Abar, limit.abar_m, chi0, omega_check)
+    return replace(limit, level="leading", A_over_am=A_over_am)
