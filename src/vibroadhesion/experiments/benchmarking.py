@@ -30,12 +30,12 @@ from vibroadhesion.core.ratelaw import GentSchultz
 Reference = Callable[[float, float], Sequence[float]]
 
 
-def j_integrals_quad(abar: float, n: float) -> tuple[float, float, float]:
+def j_integrals_quad(Abar: float, n: float) -> tuple[float, float, float]:
     """Adaptive-quadrature baseline for one Abar (QUADPACK, split at pi/2, epsrel = 1e-12)."""
     law = GentSchultz(n)
 
     def sqrt_f(x: float) -> float:
-        return math.sqrt(float(law.f(abar * math.cos(x))))
+        return math.sqrt(float(law.f(Abar * math.cos(x))))
 
     options = {"points": [0.5 * math.pi], "epsrel": 1e-12, "epsabs": 0.0, "limit": 200}
     with warnings.catch_warnings():
@@ -65,13 +65,13 @@ def machine_description() -> str:
 def benchmark_j_integrals(
     reference: Reference,
     exponents: Sequence[float] = (0.05, 0.531, 4.0),
-    error_abar: Sequence[float] = (0.0, 1e-12, 1e-3, 0.3, 1.0, 3.0, 30.0, 1e3, 1e5, 1e7, 1e10),
+    error_Abar: Sequence[float] = (0.0, 1e-12, 1e-3, 0.3, 1.0, 3.0, 30.0, 1e3, 1e5, 1e7, 1e10),
     throughput_size: int = 200_000,
     quad_size: int = 60,
 ) -> pd.DataFrame:
     """Table of throughput and maximal error of both methods (one row per method and n)."""
     rows = []
-    error_points = np.asarray(error_abar, dtype=float)
+    error_points = np.asarray(error_Abar, dtype=float)
     timing_abar = np.logspace(-3, 10, throughput_size)
     quad_abar = np.logspace(-3, 10, quad_size)
     for n in exponents:

@@ -183,8 +183,8 @@ def compliant_sweep(fixation: Fixation, chi0: float, eta1: float, n: float, omeg
             if direction == "up":
                 refined = curve.steady_states_at(w, law)
                 rows += [{"direction": "-", "omega_bar": w, "model": refined.level, "solution_index": k,
-                          "status": str(status), "Abar": float(abar), "abar_m": float(abar_m),
-                          "A_over_am": float(a_over_am), "stable": math.nan, "max_floquet_multiplier": math.nan}
-                         for k, (status, abar, abar_m, a_over_am) in enumerate(
+                          "status": str(status), "Abar": float(Abar), "abar_m": float(abar_m),
+                          "A_over_am": float(A_over_am), "stable": math.nan, "max_floquet_multiplier": math.nan}
+                         for k, (status, Abar, abar_m, A_over_am) in enumerate(
                              zip(refined.status, refined.Abar, refined.abar_m, refined.A_over_am, strict=True))]
     return pd.DataFrame(rows)[SWEEP_COLUMNS]
