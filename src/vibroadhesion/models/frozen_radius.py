@@ -312,12 +312,12 @@ def frozen_radius_cycle(beta: ArrayLike, law: GentSchultz) -> FrozenRadiusCycle:
         raise ValueError("beta must be finite and non-negative")
     p = 1.0 / law.n
     flat = beta.ravel()
-    alpha, log_abar, s_min = np.ones_like(flat), np.full_like(flat, -np.inf), np.ones_like(flat)
+    alpha, log_Abar, s_min = np.ones_like(flat), np.full_like(flat, -np.inf), np.ones_like(flat)
 
     small = (flat > 0) & (flat < _BETA_SPLIT)
     if np.any(small):
         b = flat[small]
-        arc, alpha[small], log_abar[small] = _solve(
+        arc, alpha[small], log_Abar[small] = _solve(
             _kink_arc_unknown, np.full_like(b, _ARC_FLOOR), np.full_like(b, np.pi - _ARC_FLOOR), b, p
         )
         s_min[small] = 1.0 - 2.0 * b * np.sin(0.5 * arc) ** 2
@@ -340,18 +340,18 @@ def frozen_radius_cycle(beta: ArrayLike, law: GentSchultz) -> FrozenRadiusCycle:
         idx = np.flatnonzero(large)
         inside = ~below_floor
         if np.any(inside):
-            v, alpha[idx[inside]], log_abar[idx[inside]] = _solve(_floor_unknown, lo[inside], hi[inside], b[inside], p)
+            v, alpha[idx[inside]], log_Abar[idx[inside]] = _solve(_floor_unknown, lo[inside], hi[inside], b[inside], p)
             s_min[idx[inside]] = np.exp(v)
         # n <= 4 and alpha* - beta < 1e-280: alpha* = beta to double precision; I_op at the floor
         alpha[idx[below_floor]] = b[below_floor]
-        log_abar[idx[below_floor]] = log_op_lo[below_floor]
+        log_Abar[idx[below_floor]] = log_op_lo[below_floor]
         s_min[idx[below_floor]] = 0.0
 
-    if np.any(log_abar > _LOG_MAX_DOUBLE):
-        too_large = flat[log_abar > _LOG_MAX_DOUBLE][:5]
+    if np.any(log_Abar > _LOG_MAX_DOUBLE):
+        too_large = flat[log_Abar > _LOG_MAX_DOUBLE][:5]
         raise OverflowError(f"Abar exceeds the double range for beta = {too_large} (n = {law.n})")
     shape = beta.shape
-    return FrozenRadiusCycle(alpha.reshape(shape), np.exp(log_abar).reshape(shape), s_min.reshape(shape))
+    return FrozenRadiusCycle(alpha.reshape(shape), np.exp(log_Abar).reshape(shape), s_min.reshape(shape))
 
 
 def alpha_star(beta: ArrayLike, law: GentSchultz) -> Array:
