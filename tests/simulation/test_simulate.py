@@ -118,8 +118,8 @@ def test_gent_schultz_speed_inverts_the_forward_law(n: float) -> None:
     speed(2) = -1, speed(1/2) = +1.
     """
     law = GentSchultz(n)
-    ratio = np.linspace(0.3, 3.0, 271)
-    assert np.allclose(law.f(law.speed(ratio)), ratio, rtol=1e-13, atol=0)
+    w_ratio = np.linspace(0.3, 3.0, 271)
+    assert np.allclose(law.f(law.speed(w_ratio)), w_ratio, rtol=1e-13, atol=0)
     assert law.speed(1.0) == 0.0 and law.speed(2.0) == -1.0 and law.speed(0.5) == 1.0
     with pytest.raises(ValueError):
         law.speed([1.0, 0.0])

@@ -54,18 +54,18 @@ class GentSchultz:
         f_op = self.f_open(x)
         return np.where(x < 0, f_op, 1.0 / f_op)
 
-    def speed(self, ratio: ArrayLike) -> NDArray[np.float64]:
-        """Inverse of Eq. (75): the signed speed x with f(x) = ``ratio`` = w/w0 > 0.
+    def speed(self, w_ratio: ArrayLike) -> NDArray[np.float64]:
+        """Inverse of Eq. (75): the signed speed x with f(x) = ``w_ratio`` = w/w0 > 0.
 
-        Opening (ratio > 1): x = -(ratio - 1)^(1/n); closing (ratio < 1): x = (1/ratio - 1)^(1/n);
-        x = 0 at ratio = 1. Speeds beyond the double range come back as -inf or +inf (the
+        Opening (w_ratio > 1): x = -(w_ratio - 1)^(1/n); closing (w_ratio < 1): x = (1/w_ratio - 1)^(1/n);
+        x = 0 at w_ratio = 1. Speeds beyond the double range come back as -inf or +inf (the
         overflow is not warned about: it is the exact answer rounded to the nearest double).
         """
-        ratio = np.asarray(ratio, dtype=float)
-        if np.any(~(ratio > 0)):
+        w_ratio = np.asarray(w_ratio, dtype=float)
+        if np.any(~(w_ratio > 0)):
             raise ValueError("w/w0 must be positive for the Gent–Schultz law to be inverted")
-        opening = ratio > 1
-        excess = np.where(opening, ratio - 1.0, (1.0 - ratio) / ratio)
+        opening = w_ratio > 1
+        excess = np.where(opening, w_ratio - 1.0, (1.0 - w_ratio) / w_ratio)
         with np.errstate(over="ignore"):
             magnitude = excess ** (1.0 / self.n)
         return np.where(opening, -magnitude, magnitude)
