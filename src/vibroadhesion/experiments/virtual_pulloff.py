@@ -263,9 +263,9 @@ def _refined_compliant_pulloff(omega_bar: float, fixation: Fixation, chi0: float
 def _record_rows(pulloff: Pulloff, h1_um: np.ndarray) -> list[dict[str, Any]]:
     """Rows of :func:`pulloff_table` from one record, one per amplitude; NaN where the level gives no number."""
     rows: list[dict[str, Any]] = [
-        {"model": pulloff.level, "h1_um": h, "status": str(status), "pulloff_ratio": ratio, "abar_m": abar_m,
-         "abar_cr": abar_cr}
-        for h, status, ratio, abar_m, abar_cr in zip(
+        {"model": pulloff.level, "h1_um": h, "status": str(status), "pulloff_ratio": pulloff_ratio,
+         "abar_m": abar_m, "abar_cr": abar_cr}
+        for h, status, pulloff_ratio, abar_m, abar_cr in zip(
             h1_um, *(np.ravel(v) for v in (pulloff.status, pulloff.pulloff_ratio, pulloff.abar_m, pulloff.abar_cr)),
             strict=True)
     ]
