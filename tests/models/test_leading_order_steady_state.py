@@ -477,8 +477,10 @@ def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check
     law = GentSchultz(0.531)
     fixation, omega_check = spring(kappa, omega_bar, zeta)
     leading = critical_abars(ETA1, fixation, CHI0, law, omega_check)
-    refined = [abar for _, abar in pulloff_by_scan(omega_bar, Fixation.compliant(kappa, zeta, nu0), CHI0, ETA1, law,
-                                                   np.linspace(-40.0, 40.0, 4001))]
+    roots = pulloff_by_scan(omega_bar, Fixation.compliant(kappa, zeta, nu0), CHI0, ETA1, law,
+                            np.linspace(-40.0, 40.0, 4001))
+    assert roots.level == "refined" and roots.found.all()
+    refined = roots.Abar_cr.tolist()
     assert len(refined) == len(leading)
     assert abs(refined[0] / leading[0] - 1) < 1e-10
     assert all(abs(r / q - 1) < 1e-4 for r, q in zip(refined, leading))

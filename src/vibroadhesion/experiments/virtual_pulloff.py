@@ -77,7 +77,7 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.compliant import pulloff_by_scan
-from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_from_abar, pulloff_leading
+from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
 
 #: Periods of the transient that tells how a family without an extremum ends (module docstring).
@@ -254,10 +254,10 @@ def _refined_compliant_pulloff(omega_bar: float, fixation: Fixation, chi0: float
                                law: GentSchultz) -> Pulloff:
     """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn).
 
-    The record of level ``refined`` (scalar); no root on the scan gives ``no_solution``.
+    The record of level ``refined`` (scalar): the first element of the roots' record, ``no_solution`` where
+    the scan finds none.
     """
-    roots = pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN)
-    return pulloff_from_abar("refined", np.asarray(roots[0][1] if roots else math.nan), law)
+    return pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN).taken(np.asarray(0))
 
 
 def _record_rows(pulloff: Pulloff, h1_um: np.ndarray) -> list[dict[str, Any]]:
