@@ -313,14 +313,14 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
                     reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
     if fixation.is_rigid:
-        return [row for model in levels.names("virtual_pulloff_rigid") if model != "simulation"
+        return [row for model in levels.names("virtual_pulloff", fixation.kind) if model != "simulation"
                 for row in _record_rows(predict_pulloff(model, params, frequency_hz, h1_um, radius=radius,
                                                         reduced_modulus=reduced_modulus), h1_um)]
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
-    return [row for model in levels.names("virtual_pulloff_compliant") if model != "simulation"
+    return [row for model in levels.names("virtual_pulloff", fixation.kind) if model != "simulation"
             for h, e in zip(h1_um, eta1, strict=True)
             for row in _record_rows(_compliant_prediction(model, fixation, chi0, float(e), omega_check, law),
                                     np.asarray([h]))]
