@@ -8,7 +8,8 @@ x the test frequencies) on this machine, median of 3 per point, and takes the er
 against the simulation at the same points from the validation artefact (largest relative error over
 Abar, abar_m, w_eff/w0, A/a_m and P_m/|P_JKR|). The simulation is the reference: its error is its
 self-consistency between rtol 1e-12 and 1e-13, measured in results/benchmarks/simulate.txt, and is
-listed as 0 here. Timings vary from run to run; the CSV is a benchmark, not a pipeline result.
+listed as 0 here. Timings vary from run to run; the CSV is a benchmark, not a pipeline result. The
+figure names each level by its registry label and marks it by the registry's cost class.
 """
 
 import json
@@ -28,6 +29,8 @@ from vibroadhesion.pipeline.figures import save_figure
 
 #: The registry's functions this script resolves (vibroadhesion.core.levels): the rigid steady states.
 LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
+#: Marker of each cost class of the registry in the figure (the classes the timings are grouped into).
+MARKERS: dict[levels.Cost, str] = {"algebraic": "o", "quadrature": "s", "simulation": "^"}
 
 
 def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:
@@ -67,7 +70,9 @@ def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt:
     fig, ax = plt.subplots(figsize=(5.2, 3.8), layout="constrained")
     for k, r in table.iterrows():
         error = max(r["max_relative_error_vs_simulation"], 1e-9)
-        ax.plot(r["seconds_per_point_median"], error, "o", color=f"C{k}", ms=8, label=r["model"])
+        entry = levels.level(r["model"])
+        ax.plot(r["seconds_per_point_median"], error, MARKERS[entry.cost], color=f"C{k}", ms=8,
+                label=f"{entry.label} [{entry.cost}]")
     ax.set(xscale="log", yscale="log", xlabel="time per solved point (s, median)",
            ylabel="largest relative error vs simulation", title="Speed against error (simulation plotted at 1e-9)")
     ax.legend(fontsize=8)

@@ -11,6 +11,7 @@ import inspect
 import re
 import subprocess
 import sys
+import typing
 from pathlib import Path
 
 import pandas as pd
@@ -19,6 +20,7 @@ import yaml
 from conftest import ROOT
 
 from vibroadhesion.core import levels
+from vibroadhesion.core.fixation import FixationKind
 from vibroadhesion.core.records import Pulloff, SteadyState
 
 #: Documented leading parameters of each kind of function (module docstring of core/levels.py).
@@ -68,6 +70,21 @@ def test_roles_name_the_levels_of_the_paper_and_its_checks() -> None:
     assert levels.names("fit") == ("leading", "refined", "exact_averaging", "exact_averaging_force_minimum")
     assert levels.names("figures") == ("leading", "refined")
     assert levels.fig4_names() == ("leading", "exact_averaging", "refined")
+    assert levels.names("virtual_pulloff") == ("simulation", "leading", "refined", "exact_averaging",
+                                               "exact_averaging_force_minimum")
+
+
+def test_fixations_select_the_levels_whose_model_covers_the_fixation() -> None:
+    """Rigid: every level; the spring-mass-dashpot: the simulation, the leading order (Eqs. 67-69) and the
+    refined model (Eq. 90), not the exact models of the rigidly fixed contact; free (Sec. 3.1.3): leading only.
+    Every kind named is a kind of Fixation.
+    """
+    assert levels.names("virtual_pulloff", "rigid") == levels.names("virtual_pulloff")
+    assert levels.names("virtual_pulloff", "compliant") == ("simulation", "leading", "refined")
+    assert levels.names("validation_rigid", "rigid") == levels.names("validation_rigid")
+    assert levels.names("fit", "free") == ("leading",)
+    kinds = set(typing.get_args(FixationKind))
+    assert all(entry.fixations and entry.fixations <= kinds and "rigid" in entry.fixations for entry in levels.LEVELS)
 
 
 def _first_appearance(column: pd.Series) -> tuple[str, ...]:
@@ -81,7 +98,7 @@ def test_canonical_order_is_the_row_order_of_every_artefact(pipeline_results: Pa
     for fixation in ("rigid", "compliant"):
         virtual = pd.read_csv(pipeline_results / f"simulation/virtual_pulloff_{fixation}.csv")
         for _, rows in virtual.groupby("frequency_hz", sort=False):
-            assert _first_appearance(rows["model"]) == levels.names(f"virtual_pulloff_{fixation}"), fixation
+            assert _first_appearance(rows["model"]) == levels.names("virtual_pulloff", fixation), fixation
     fits = pd.read_csv(pipeline_results / "validation/identifiability/fits.csv")
     assert tuple(fits["model"]) == levels.names("fit")
     speed = pd.read_csv(pipeline_results / "benchmarks/speed_vs_error.csv")

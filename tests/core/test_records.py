@@ -8,11 +8,12 @@ comes with the defining numbers, and every field has the status's shape. The che
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
-from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, SteadyState
+from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, SteadyState, stacked
 
 
 def _steady(status, value=1.0, **changes) -> SteadyState:
@@ -116,3 +117,31 @@ def test_taken_indexes_every_array_field_alike() -> None:
     assert back.status.tolist() == [["no_solution", "ok"], ["ok", "ok"]]
     assert back.pulloff_ratio[0, 1] == 1.5 and math.isnan(back.pulloff_ratio[0, 0])
     assert back.Abar_cr.shape == back.base_offset.shape == (2, 2) and back.level == "leading"
+
+
+def test_unsolved_pulloff_is_nan_with_its_status_and_message() -> None:
+    pulloff = Pulloff.unsolved("exact_averaging", "no_solution", "no root", shape=(2,))
+    assert pulloff.status.tolist() == ["no_solution"] * 2 and not pulloff.found.any() and pulloff.message == "no root"
+    assert all(np.isnan(getattr(pulloff, name)).all() for name in ("pulloff_ratio", "Abar_cr", "abar_m", "base_offset"))
+
+
+def test_stacked_records_are_the_elements_in_their_order_with_the_messages_joined() -> None:
+    """Several solutions of one level at one point are the elements of one record (shape (k,))."""
+    first, second = _steady("ok", 1.0, stable=True), _steady("ok", 2.0, stable=False)
+    both = stacked([first, SteadyState.unsolved("refined", "not_converged", "Newton"), second][::2])
+    assert both.status.tolist() == ["ok", "ok"] and both.Abar.tolist() == [1.0, 2.0]
+    assert both.stable is not None and both.stable.tolist() == [True, False]
+    mixed = stacked([_steady("ok", 1.0), SteadyState.unsolved("refined", "not_converged", "Newton")])
+    assert mixed.status.tolist() == ["ok", "not_converged"] and math.isnan(mixed.abar_m[1])
+    assert mixed.message == "Newton" and mixed.stable is None
+    roots = stacked([_pulloff("ok", 2.0), _pulloff("ok", 3.0)])
+    assert roots.pulloff_ratio.tolist() == [2.0, 3.0] and roots.taken(np.asarray(0)).pulloff_ratio == 2.0
+
+
+def test_stacking_refuses_records_that_are_not_elements_of_one_level() -> None:
+    with pytest.raises(ValueError, match="different levels"):
+        stacked([_steady("ok"), replace(_steady("ok"), level="leading")])
+    with pytest.raises(ValueError, match="stable"):
+        stacked([_steady("ok", stable=True), _steady("ok")])
+    with pytest.raises(ValueError, match="simulated"):
+        stacked([replace(_pulloff("pulloff"), steady_states=3)])

@@ -22,6 +22,7 @@ from test_leading_order_steady_state import printed_eq_67_log_excess, printed_eq
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import (
     NOTCH_FLOOR,
@@ -48,6 +49,12 @@ from vibroadhesion.numerics.continuation import (
 LAW = GentSchultz(N_PUBLISHED)
 SCAN = np.linspace(-40.0, 40.0, 4001)  # ln Abar grid of the independent root scan
 FOLDING = Fixation.compliant(kappa=1e-3, zeta=0.0, nu0=NU0, mu=0.0)  # the folded curve of Fig. 5
+
+
+def solved(record: SteadyState) -> list[tuple[float, float]]:
+    """(abar_m, Abar) of every element of a record of level refined, in its order; every element must be solved."""
+    assert record.level == "refined" and record.ok.all(), record
+    return list(zip(np.ravel(record.abar_m).tolist(), np.ravel(record.Abar).tolist(), strict=True))
 
 
 # ----------------------------------------------------------------- continuation on a known curve
@@ -119,16 +126,44 @@ def test_three_solutions_between_the_folds_each_satisfying_eqs_87_and_90_to_1e10
     """
     lo, hi = sorted(np.exp(folded.folds[:, 0]))
     for omega_bar in (lo + 0.05 * (hi - lo), 0.5 * (lo + hi), hi - 0.05 * (hi - lo)):
-        on_curve = sorted(folded.solutions_at(omega_bar, LAW), key=lambda s: s[1])
+        on_curve = sorted(solved(folded.steady_states_at(omega_bar, LAW)), key=lambda s: s[1])
         assert len(on_curve) == 3
         for abar_m, abar in on_curve:
             r87, r90 = residual_linear(omega_bar, abar_m, abar, FOLDING, CHI0, ETA1, LAW)
             assert abs(r87) < 1e-10 and abs(r90) < 1e-10, (omega_bar, abar_m, abar, r87, r90)
-        scanned = sorted(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN), key=lambda s: s[1])
+        scanned = sorted(solved(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN)), key=lambda s: s[1])
         assert len(scanned) == 3
         assert np.allclose(np.array(on_curve), np.array(scanned), rtol=1e-9, atol=0)
     for omega_bar in (0.5 * lo, 2.0 * hi):  # outside the fold interval: one solution, both ways
-        assert len(folded.solutions_at(omega_bar, LAW)) == 1 == len(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN))
+        assert len(solved(folded.steady_states_at(omega_bar, LAW))) == 1 == len(
+            solved(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN)))
+
+
+def test_the_records_of_the_compliant_level_are_sorted_and_say_where_there_is_no_solution(folded) -> None:
+    """The records of level refined: the three solutions between the folds by increasing Abar, with
+    w_eff/w0 = J0^2 (Eq. 49) and A/a_m (corrected Eq. 98, omega_check = omega_bar/nu0) of their Abar and
+    abar_m to 1e-13; no crossing of the traced curve (omega_bar beyond its range), no root on a scan grid
+    far below the solutions, and a Newton iteration from Abar = 1e-100 (ln Abar 230 below the solution,
+    while 40 steps clipped to 2 in ln Abar cover 80) are statuses with NaN numbers, not numbers and not
+    exceptions.
+    """
+    lo, hi = sorted(np.exp(folded.folds[:, 0]))
+    states = folded.steady_states_at(0.5 * (lo + hi), LAW)
+    assert states.status.tolist() == ["ok"] * 3 and np.all(np.diff(states.Abar) > 0) and states.stable is None
+    j0 = np.array([float(j_integrals_mp(a, N_PUBLISHED)[0]) for a in states.Abar])
+    assert np.allclose(states.w_eff_ratio, j0**2, rtol=1e-13, atol=0)
+    c_o = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0
+    expected = states.Abar * NU0 / (0.5 * (lo + hi) * c_o * states.abar_m)
+    assert np.allclose(states.A_over_am, expected, rtol=1e-13, atol=0)
+    outside = folded.steady_states_at(100.0, LAW)
+    below = solutions_by_scan(2.0, FOLDING, CHI0, ETA1, LAW, np.linspace(-60.0, -50.0, 11))
+    no_pulloff = pulloff_by_scan(2.0, FOLDING, CHI0, ETA1, LAW, np.linspace(-60.0, -50.0, 11))
+    for record in (outside, below, no_pulloff):
+        assert record.level == "refined" and record.status.tolist() == ["no_solution"] and record.message
+        assert np.isnan(record.abar_m).all()
+    assert np.isnan(below.Abar).all() and np.isnan(no_pulloff.pulloff_ratio).all()
+    diverged = newton_at_frequency(2.0, FOLDING, CHI0, ETA1, LAW, (static_abar_m(FOLDING, CHI0), 1e-100))
+    assert diverged.status == "not_converged" and np.isnan(diverged.Abar) and "Newton" in diverged.message
 
 
 # ----------------------------------------------------------------- zeta = 0, omega_bar = 1
@@ -153,7 +188,7 @@ def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -
     """
     static = static_abar_m(FOLDING, CHI0)
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
-        abar_m, abar = newton_at_frequency(omega_bar, FOLDING, CHI0, ETA1, LAW, (static, 1e-14))
+        (abar_m, abar), = solved(newton_at_frequency(omega_bar, FOLDING, CHI0, ETA1, LAW, (static, 1e-14)))
         assert abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
     curves, _, _ = fig5_tables([FOLDING], CHI0, ETA1, N_PUBLISHED, {}, (0.1, 50.0), 20)
     exact = curves[curves["branch"] == "anti-resonance"]
@@ -208,10 +243,12 @@ def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, z
     The differences are O(1/kappa): tolerance 1e-6.
     """
     p = Fixation.compliant(kappa=1e12, zeta=zeta, nu0=NU0, mu=0.0)
-    (abar_m, abar), = solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
+    (abar_m, abar), = solved(solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN))
     rigid = nominal_point_contact(ETA1, omega_bar / NU0, CHI0, LAW)
     assert abs(abar / float(rigid.Abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
-    (_, abar_cr), = pulloff_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
+    roots = pulloff_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
+    assert roots.level == "refined" and roots.status.tolist() == ["ok"]
+    abar_cr = float(roots.Abar_cr[0])
     assert abs(abar_cr / float(pulloff_refined(ETA1, CHI0, omega_bar / NU0, LAW).Abar_cr) - 1) < 1e-6
 
 
@@ -248,7 +285,7 @@ def test_soft_fixation_reproduces_the_free_indenter_eqs_57_to_59(beta: float) ->
     kappa, mu = 1e-10, 1e-5
     p = Fixation.compliant(kappa=kappa, zeta=0.0, nu0=NU0, mu=mu)
     omega_bar = math.sqrt(beta / kappa)
-    found = solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
+    found = solved(solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN))
     assert len(found) == 1
     abar_m, abar = found[0]
     reference_am, reference_abar = free_indenter(beta, mu, N_PUBLISHED, (1.1 * abar_m, 0.9 * abar))

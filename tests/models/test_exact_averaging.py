@@ -361,6 +361,21 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
     assert abs(float(pulloff_at_critical_radius(tiny, CHI0, law).abar_m) - (9 / 16) ** (1 / 3)) < 1e-6
 
 
+@pytest.mark.parametrize("pulloff", [pulloff_at_critical_radius, pulloff_at_force_minimum])
+def test_pulloff_without_a_drift_free_cycle_is_the_status_no_solution(pulloff) -> None:
+    """Gent-Schultz n = 6 > 4 at h1 = 200 um: no drift-free cycle for the large beta the solve meets
+    (frozen_radius raises NoSteadyStateError, test above). At the level's boundary that is the status
+    no_solution for every amplitude of the call, every number NaN, the reason in the message; the same
+    call at n = 0.531 is ok.
+    """
+    eta1 = np.array([20e-6, 200e-6]) / RADIUS
+    unsolved = pulloff(eta1, CHI0, GentSchultz(6.0))
+    assert unsolved.status.tolist() == ["no_solution"] * 2 and not unsolved.found.any()
+    assert np.all(np.isnan([unsolved.pulloff_ratio, unsolved.Abar_cr, unsolved.abar_m, unsolved.w_eff_ratio]))
+    assert "n = 6" in unsolved.message
+    assert pulloff(eta1, CHI0, GentSchultz(N_PUBLISHED)).found.all()
+
+
 def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
     """deltabar0(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
     (the defining equation of Sec. 3.5.4), to 1e-13; the scale helpers match their definitions.

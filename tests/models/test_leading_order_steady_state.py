@@ -23,6 +23,7 @@ E* = R = 1, w0 = chi0^3/(9 pi) from Eq. 64, a_o = (2 pi w0)^(1/3) from its defin
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import mpmath as mp
 import numpy as np
@@ -33,6 +34,7 @@ from mpmath_reference import j_integrals_mp
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models.compliant import pulloff_by_scan
 from vibroadhesion.models.leading_order import (
     SCAN_STEP,
@@ -67,6 +69,17 @@ def free(beta: float, mu: float = 0.0) -> tuple[Fixation, float]:
 
 
 RIGID = (Fixation.rigid(), math.inf)
+
+#: The numbers of a steady-state record, one value per element (vibroadhesion.core.records.SteadyState).
+NUMBERS = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "pm_over_abs_pjkr", "deltabar_m")
+
+
+def solutions(record: SteadyState) -> list[SteadyState]:
+    """The elements of a leading-order record (one per steady state), each a record of shape (); all must be ok."""
+    assert record.level == "leading" and record.status.ndim == 1 and record.ok.all(), record
+    assert record.stable is not None and np.all(np.diff(record.abar_m) > 0), record  # sorted by abar_m
+    return [replace(record, **{name: getattr(record, name)[k] for name in ("status", "stable", *NUMBERS)})
+            for k in range(record.status.size)]
 
 with mp.workdps(30):
     W0 = mp.mpf(CHI0) ** 3 / (9 * mp.pi)  # Eq. (64) with E* = R = 1
@@ -114,9 +127,9 @@ def test_rigid_limit_equals_eqs_55_56_to_1e9(n: float, base_offset: float) -> No
         am = mean_radius(abar)
         return am**2 - mp.sqrt(2 * mp.pi * W0 * am) * j_integrals_mp(abar, n)[0] - base_offset * A_O**2
 
-    rigid = steady_states(ETA1, Fixation.rigid(), CHI0, law, base_offset=base_offset)
+    rigid = solutions(steady_states(ETA1, Fixation.rigid(), CHI0, law, base_offset=base_offset))
     fixation, omega_check = spring(1e12, 5.0, 0.05, MU_SMALL)
-    stiff = steady_states(ETA1, fixation, CHI0, law, base_offset=base_offset, omega_check=omega_check)
+    stiff = solutions(steady_states(ETA1, fixation, CHI0, law, base_offset=base_offset, omega_check=omega_check))
     assert len(rigid) == len(stiff) == 1 and rigid[0].stable and stiff[0].stable
     assert_reference_root_within(residual, mean_radius, rigid[0])
     assert abs(stiff[0].Abar / rigid[0].Abar - 1) < 1e-10 and abs(stiff[0].abar_m / rigid[0].abar_m - 1) < 1e-10
@@ -145,7 +158,7 @@ def test_free_indenter_equals_eqs_57_59_to_1e9(n: float, beta: float) -> None:
         xi_c = mp.sqrt(2 * mp.pi * W0 * am) * beta * jc1 - mp.sqrt(8 * mp.pi * W0 * am**3) * jc1
         return abs(xi_c) - beta * mp.mpf(ETA1)
 
-    for sol in steady_states(ETA1, Fixation.free(beta, MU_SMALL), CHI0, GentSchultz(n), omega_check=1.0):
+    for sol in solutions(steady_states(ETA1, Fixation.free(beta, MU_SMALL), CHI0, GentSchultz(n), omega_check=1.0)):
         assert_reference_root_within(residual, mean_radius, sol)
         assert abs(sol.pm_over_abs_pjkr / float(MU_SMALL / (mp.mpf(3) / 4 * A_O**3)) - 1) < 1e-10
 
@@ -206,7 +219,7 @@ def test_number_of_roots_equals_independent_count_along_abar(n, setting, case, e
     """
     fixation, omega_check = setting
     assert fixation.d(omega_check) == pytest.approx(complex(case[0] - case[1], case[2]), rel=1e-14)
-    sols = steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check)
+    sols = solutions(steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check))
     count, cells = count_roots_along_abar(case, fixation.mu, n)
     assert len(sols) == count == expected
     for sol, cell in zip(sorted(sols, key=lambda s: s.Abar), cells):
@@ -231,7 +244,7 @@ def test_compliant_roots_satisfy_printed_eq_87_and_eq_43_with_eqs_50_51(kappa, o
     n = 0.531
     fixation, omega_check = spring(kappa, omega_bar, zeta, mu)
     d = mp.mpc(fixation.d(omega_check))
-    for sol in steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check):
+    for sol in solutions(steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check)):
         j0, jc1, _ = j_integrals_mp(float(sol.Abar), n)
         abar_m = float(sol.abar_m)
         terms = printed_eq_87_terms(abar_m, j0, kappa, mu)
@@ -295,7 +308,8 @@ def test_static_limit_eta1_to_zero_equals_eq_82(kappa: float, mu: float, base_of
     reference = eq82_roots(kappa, load)
     for eta1 in (0.0, 1e-12):
         fixation, omega_check = spring(kappa, 2.0, 0.05, mu)
-        sols = steady_states(eta1, fixation, CHI0, GentSchultz(0.531), base_offset=base_offset, omega_check=omega_check)
+        sols = solutions(steady_states(eta1, fixation, CHI0, GentSchultz(0.531), base_offset=base_offset,
+                                       omega_check=omega_check))
         assert len(sols) == len(reference), (sols, reference)
         for sol, (abar_m, stable) in zip(sols, reference):
             assert abs(sol.abar_m / abar_m - 1) < 1e-12 and sol.stable == stable
@@ -310,7 +324,8 @@ def test_anti_resonance_of_appendix_b_gives_abar_zero_and_the_static_state(kappa
     """
     fixation, omega_check = spring(kappa, 1.0, 0.0, mu)
     assert fixation.d(omega_check) == 0 and fixation.transmissibility(1.0, CHI0, omega_check) == 0.0
-    sols = steady_states(ETA1, fixation, CHI0, GentSchultz(0.531), base_offset=base_offset, omega_check=omega_check)
+    sols = solutions(steady_states(ETA1, fixation, CHI0, GentSchultz(0.531), base_offset=base_offset,
+                                   omega_check=omega_check))
     reference = eq82_roots(kappa, mu + kappa * base_offset * A_O**2)
     assert len(sols) == len(reference)
     for sol, (abar_m, stable) in zip(sols, reference):
@@ -336,8 +351,8 @@ def test_two_roots_inside_one_scan_cell_next_to_the_fold_are_both_found(kappa: f
     reference = eq82_roots(kappa, load)
     assert len(reference) == 2 and math.log(reference[1][0] / reference[0][0]) < 0.02
     fixation, omega_check = spring(kappa, 2.0, 0.0)
-    sols = steady_states(0.0, fixation, CHI0, GentSchultz(0.531), base_offset=float(load / (kappa * A_O**2)),
-                         omega_check=omega_check)
+    sols = solutions(steady_states(0.0, fixation, CHI0, GentSchultz(0.531), base_offset=float(load / (kappa * A_O**2)),
+                                   omega_check=omega_check))
     assert len(sols) == 2
     for sol, (abar_m, stable) in zip(sols, reference):
         assert abs(sol.abar_m / abar_m - 1) < 1e-10 and sol.stable == stable
@@ -354,12 +369,12 @@ def test_rigid_nominal_point_contact_is_abar_m_cubed_half_equal_j0_and_matches_r
     with Eq. (86), A/a_m = Abar / (omega_check abar_m a_o/R) (docs/errata.md E1), to 1e-13.
     """
     law = GentSchultz(n)
-    (sol,) = steady_states(ETA1, Fixation.rigid(), CHI0, law, omega_check=1e6)
+    (sol,) = solutions(steady_states(ETA1, Fixation.rigid(), CHI0, law, omega_check=1e6))
     assert abs(sol.abar_m**1.5 / float(j_integrals_mp(float(sol.Abar), n)[0]) - 1) < 1e-12
     refined = nominal_point_contact(ETA1, math.inf, CHI0, law)
     assert abs(sol.Abar / float(refined.Abar) - 1) < 1e-10 and abs(sol.abar_m / float(refined.abar_m) - 1) < 1e-10
     assert abs(sol.A_over_am / float(sol.Abar / (1e6 * sol.abar_m * A_O)) - 1) < 1e-13
-    assert steady_states(ETA1, Fixation.rigid(), CHI0, law)[0].A_over_am == 0.0  # omega_check = inf
+    assert solutions(steady_states(ETA1, Fixation.rigid(), CHI0, law))[0].A_over_am == 0.0  # omega_check = inf
 
 
 # ----------------------------------------------------------------- a_m = a_cr: Eqs. (67)-(69) and (72)
@@ -477,8 +492,10 @@ def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check
     law = GentSchultz(0.531)
     fixation, omega_check = spring(kappa, omega_bar, zeta)
     leading = critical_abars(ETA1, fixation, CHI0, law, omega_check)
-    refined = [abar for _, abar in pulloff_by_scan(omega_bar, Fixation.compliant(kappa, zeta, nu0), CHI0, ETA1, law,
-                                                   np.linspace(-40.0, 40.0, 4001))]
+    roots = pulloff_by_scan(omega_bar, Fixation.compliant(kappa, zeta, nu0), CHI0, ETA1, law,
+                            np.linspace(-40.0, 40.0, 4001))
+    assert roots.level == "refined" and roots.found.all()
+    refined = roots.Abar_cr.tolist()
     assert len(refined) == len(leading)
     assert abs(refined[0] / leading[0] - 1) < 1e-10
     assert all(abs(r / q - 1) < 1e-4 for r, q in zip(refined, leading))
@@ -625,18 +642,19 @@ def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
         steady_states(ETA1, Fixation.rigid(), CHI0, object())
 
 
-# ----------------------------------------------------------------- failures are raised, not numbers
+# ----------------------------------------------------------------- failures are a status, not numbers
 
 
-def test_tensile_load_beyond_pulloff_raises() -> None:
+def test_tensile_load_beyond_pulloff_has_no_solution() -> None:
     """No steady state for a base pulled far from the indenter (rigid: deltabar_base = -10 is below
-    min deltabar_m; compliant: the same offset): NoRootError, not a number.
+    min deltabar_m; compliant: the same offset): one element of status no_solution, every number NaN,
+    the reason in the message -- not a number.
     """
     law = GentSchultz(0.531)
-    with pytest.raises(NoRootError, match="pull-off"):
-        steady_states(ETA1, Fixation.rigid(), CHI0, law, base_offset=-10.0)
-    with pytest.raises(NoRootError, match="pull-off"):
-        steady_states(ETA1, Fixation.compliant(0.1, 0.05, 1.0), CHI0, law, base_offset=-10.0, omega_check=0.5)
+    for fixation, omega_check in (RIGID, (Fixation.compliant(0.1, 0.05, 1.0), 0.5)):
+        record = steady_states(ETA1, fixation, CHI0, law, base_offset=-10.0, omega_check=omega_check)
+        assert record.level == "leading" and record.status.tolist() == ["no_solution"] and not record.ok.any()
+        assert all(np.isnan(getattr(record, name)).all() for name in NUMBERS) and "pull-off" in record.message
 
 
 def test_contact_resonance_raises_in_the_amplitude_equation() -> None:

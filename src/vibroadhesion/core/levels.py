@@ -4,9 +4,15 @@ Every list of levels -- the rows of the rigid validation grid, the predictions n
 pull-off, the fits, the columns of the report, the fit jobs of the Snakemake rules -- is a call of
 :func:`names` with a role, in the canonical order of :data:`LEVELS`, which is the row order of every
 artefact: rigid_grid.csv and speed_vs_error.csv (``validation_rigid``: simulation, leading, refined,
-exact_hb, exact_averaging), virtual_pulloff*.csv (``virtual_pulloff_rigid``/``_compliant``: the
-simulated rows first, then level by level), fits.csv (``fit``). Fig. 4 (``fig4``) draws the
-frequency-independent curves first, then one curve per test frequency: :func:`fig4_names`.
+exact_hb, exact_averaging), virtual_pulloff*.csv (``virtual_pulloff``, of the levels that support the
+fixation: the simulated rows first, then level by level), fits.csv (``fit``). Fig. 4 (``fig4``) draws
+the frequency-independent curves first, then one curve per test frequency: :func:`fig4_names`.
+
+Each level says which kinds of fixation of the indenter (:class:`vibroadhesion.core.fixation.Fixation`)
+its model covers (``fixations``): the exact harmonic balance and the exact averaging are models of the
+rigidly fixed contact; the leading order covers every fixation (Sec. 3.1), the refined model and the
+simulation the rigid and the spring-mass-dashpot ones (Secs. 3.5-3.7). :func:`names` with a fixation
+keeps the levels that support it.
 
 Functions are referenced as ``"module:function"`` strings and imported on first use, so this module
 imports the standard library only and Snakemake reads it at DAG time. Signatures, at the rigidly
@@ -30,27 +36,33 @@ from __future__ import annotations
 import importlib
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
+
+if TYPE_CHECKING:
+    from vibroadhesion.core.fixation import FixationKind
 
 Cost = Literal["algebraic", "quadrature", "simulation"]
-Role = Literal["validation_rigid", "virtual_pulloff_rigid", "virtual_pulloff_compliant", "fit", "figures", "fig4"]
+Role = Literal["validation_rigid", "virtual_pulloff", "fit", "figures", "fig4"]
 Function = Literal["steady_state", "pulloff"]
 
 
 @dataclass(frozen=True)
 class ModelLevel:
-    """One model level: its CSV name, label, functions, whether omega enters it, cost class and roles.
+    """One model level: its CSV name, label, functions, fixations, whether omega enters it, cost class and roles.
 
     ``frequency_dependent`` False: the level does not depend on omega R/v0 (Eq. 105), so v0 cannot be
     identified from it. ``cost`` (measured at the 15 test points, results/benchmarks/speed_vs_error.csv):
-    ``algebraic`` ~0.25 ms per point, ``quadrature`` ~10-30 ms, ``simulation`` ~30 ms and more.
+    ``algebraic`` ~0.25 ms per point, ``quadrature`` ~10-30 ms, ``simulation`` ~30 ms and more; the
+    speed-against-error figure marks each level by its class and names it by its ``label``
+    (benchmarks/speed_vs_error.py; the CSVs keep ``name``).
     ``figures``: the level may supply the parameters of Figs. 3, 6-8 (``fit.figures_use`` of the config).
     """
 
     name: str  # CSV value of ``model``; never renamed (artefacts)
-    label: str  # for figures and report pages
+    label: str  # for humans: figure legends
     steady_state: str | None  # "module:function", or None
     pulloff: str | None  # "module:function", or None
+    fixations: frozenset[FixationKind]  # the kinds of fixation the level's model covers
     frequency_dependent: bool
     cost: Cost
     roles: frozenset[Role]
@@ -64,33 +76,34 @@ class ModelLevel:
         return _resolve(self.pulloff, self.name, "pulloff")
 
 
-_VALIDATION_AND_VIRTUAL_PULLOFF: frozenset[Role] = frozenset(
-    {"validation_rigid", "virtual_pulloff_rigid", "virtual_pulloff_compliant"})
+_VALIDATION_AND_VIRTUAL_PULLOFF: frozenset[Role] = frozenset({"validation_rigid", "virtual_pulloff"})
+_RIGID: frozenset[FixationKind] = frozenset({"rigid"})
+_RIGID_AND_COMPLIANT: frozenset[FixationKind] = frozenset({"rigid", "compliant"})
 
 #: The levels in canonical order (the row order of every artefact, module docstring).
 LEVELS: tuple[ModelLevel, ...] = (
     ModelLevel("simulation", "simulation of the full model (Eqs. 4-11)",
                "vibroadhesion.experiments.validation:simulated_nominal_point_contact",
-               "vibroadhesion.experiments.virtual_pulloff:simulated_pulloff", True, "simulation",
-               _VALIDATION_AND_VIRTUAL_PULLOFF),
+               "vibroadhesion.experiments.virtual_pulloff:simulated_pulloff", _RIGID_AND_COMPLIANT, True,
+               "simulation", _VALIDATION_AND_VIRTUAL_PULLOFF),
     ModelLevel("leading", "leading order, Eqs. (55), (71)-(72)",
                "vibroadhesion.models.refined:leading_nominal_point_contact",
-               "vibroadhesion.models.leading_pulloff:pulloff_leading", False, "algebraic",
-               _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "figures", "fig4"}),
+               "vibroadhesion.models.leading_pulloff:pulloff_leading", frozenset({"rigid", "compliant", "free"}),
+               False, "algebraic", _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "figures", "fig4"}),
     ModelLevel("refined", "refined, Eqs. (106), (122)-(123)",
                "vibroadhesion.models.refined:nominal_point_contact",
-               "vibroadhesion.models.refined:pulloff_refined", True, "algebraic",
+               "vibroadhesion.models.refined:pulloff_refined", _RIGID_AND_COMPLIANT, True, "algebraic",
                _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "figures", "fig4"}),
     ModelLevel("exact_hb", "exact harmonic balance, Eqs. (125)-(126)",
-               "vibroadhesion.models.exact_harmonic_balance:rigid_fixation", None, True, "quadrature",
+               "vibroadhesion.models.exact_harmonic_balance:rigid_fixation", None, _RIGID, True, "quadrature",
                frozenset({"validation_rigid"})),
     ModelLevel("exact_averaging", "exact high-frequency averaging, a_m = a_cr",
                "vibroadhesion.models.exact_averaging:nominal_point_contact",
-               "vibroadhesion.models.exact_averaging:pulloff_at_critical_radius", False, "quadrature",
-               frozenset({"validation_rigid", "virtual_pulloff_rigid", "fit", "fig4"})),
+               "vibroadhesion.models.exact_averaging:pulloff_at_critical_radius", _RIGID, False, "quadrature",
+               frozenset({"validation_rigid", "virtual_pulloff", "fit", "fig4"})),
     ModelLevel("exact_averaging_force_minimum", "exact averaging, force-controlled detachment", None,
-               "vibroadhesion.models.exact_averaging:pulloff_at_force_minimum", False, "quadrature",
-               frozenset({"virtual_pulloff_rigid", "fit"})),
+               "vibroadhesion.models.exact_averaging:pulloff_at_force_minimum", _RIGID, False, "quadrature",
+               frozenset({"virtual_pulloff", "fit"})),
 )
 
 
@@ -102,9 +115,10 @@ def level(name: str) -> ModelLevel:
     raise ValueError(f"unknown model level {name!r}; expected one of {[entry.name for entry in LEVELS]}")
 
 
-def names(role: Role) -> tuple[str, ...]:
-    """The levels that take part in ``role``, in canonical order."""
-    return tuple(entry.name for entry in LEVELS if role in entry.roles)
+def names(role: Role, fixation: FixationKind | None = None) -> tuple[str, ...]:
+    """The levels that take part in ``role``, in canonical order; with ``fixation``, those that support it."""
+    return tuple(entry.name for entry in LEVELS
+                 if role in entry.roles and (fixation is None or fixation in entry.fixations))
 
 
 def fig4_names() -> tuple[str, ...]:

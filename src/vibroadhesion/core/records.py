@@ -18,8 +18,9 @@ Layer 1: imports only the standard library and numpy.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass, fields, replace
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -162,10 +163,11 @@ class Pulloff:
     A_over_am: FloatArray  # A/a_m at detachment
     base_offset: FloatArray  # (hhat - h0) R/a_o^2 at detachment
     steady_states: int | None = None  # periodic orbits solved along the family (simulation)
+    message: str = ""
 
     def __post_init__(self) -> None:
         """Arrays of one shape; NaN numbers without a pull-off; a finite ratio with one."""
-        numbers = tuple(f.name for f in fields(self) if f.name not in ("level", "status", "steady_states"))
+        numbers = tuple(f.name for f in fields(self) if f.name not in ("level", "status", "steady_states", "message"))
         object.__setattr__(self, "status", np.asarray(self.status, dtype=str))
         for name in numbers:
             object.__setattr__(self, name, _float_array(getattr(self, name)))
@@ -178,9 +180,15 @@ class Pulloff:
 
     def taken(self, index: NDArray[np.intp]) -> Pulloff:
         """The record at ``index`` (every array field indexed alike): scatters a solve on distinct inputs back."""
-        arrays = {f.name: getattr(self, f.name)[index] for f in fields(self) if f.name not in ("level",
-                                                                                              "steady_states")}
+        arrays = {f.name: getattr(self, f.name)[index] for f in fields(self)
+                  if f.name not in ("level", "steady_states", "message")}
         return replace(self, **arrays)
+
+    @classmethod
+    def unsolved(cls, level: str, status: PulloffStatus, message: str = "", shape: tuple[int, ...] = ()) -> Pulloff:
+        """A record without a pull-off: ``status`` and NaN numbers everywhere."""
+        nan = np.full(shape, math.nan)
+        return cls(level, np.full(shape, status), *(nan,) * 8, message=message)
 
     @classmethod
     def from_ratio(cls, level: str, status: ArrayLike, pulloff_ratio: ArrayLike, *, Abar_cr: ArrayLike = math.nan,
@@ -191,3 +199,26 @@ class Pulloff:
         nan, shape = np.full(ratio.shape, math.nan), ratio.shape
         return cls(level, np.broadcast_to(np.asarray(status, dtype=str), shape), ratio, _shaped(Abar_cr, shape),
                    _shaped(sqrt_w_eff_ratio, shape), _shaped(w_eff_ratio, shape), nan, _shaped(abar_m, shape), nan, nan)
+
+
+Record = TypeVar("Record", SteadyState, Pulloff)
+
+
+def stacked(records: Sequence[Record]) -> Record:
+    """One record whose elements are ``records`` (one level, each of shape ()), in their order.
+
+    Several solutions of one level at one point (several roots of its equations) are the elements of
+    one record; every array field is stacked along a new first axis, the messages are joined. A
+    simulated orbit's diagnostics and a count of solved orbits belong to one element and are refused.
+    """
+    first = records[0]
+    if any(record.level != first.level for record in records):
+        raise ValueError(f"records of different levels: {sorted({record.level for record in records})}")
+    if any(getattr(record, name, None) is not None for record in records for name in ("orbit", "steady_states")):
+        raise ValueError("a simulated record (orbit diagnostics, orbits solved) cannot be stacked")
+    if any((getattr(record, "stable", None) is None) != (getattr(first, "stable", None) is None) for record in records):
+        raise ValueError("either every stacked steady state says whether it is stable or none does")
+    arrays: dict[str, Any] = {f.name: np.stack([getattr(record, f.name) for record in records]) for f in fields(first)
+                              if isinstance(getattr(first, f.name), np.ndarray)}
+    arrays["message"] = "; ".join(record.message for record in records if record.message)
+    return replace(first, **arrays)

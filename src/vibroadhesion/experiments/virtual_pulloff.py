@@ -77,7 +77,7 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.compliant import pulloff_by_scan
-from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_from_abar, pulloff_leading
+from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
 
 #: Periods of the transient that tells how a family without an extremum ends (module docstring).
@@ -254,10 +254,10 @@ def _refined_compliant_pulloff(omega_bar: float, fixation: Fixation, chi0: float
                                law: GentSchultz) -> Pulloff:
     """Eq. (71) at the smallest root of Eq. (90) with a_m = a_cr (the first reached as the base is withdrawn).
 
-    The record of level ``refined`` (scalar); no root on the scan gives ``no_solution``.
+    The record of level ``refined`` (scalar): the first element of the roots' record, ``no_solution`` where
+    the scan finds none.
     """
-    roots = pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN)
-    return pulloff_from_abar("refined", np.asarray(roots[0][1] if roots else math.nan), law)
+    return pulloff_by_scan(omega_bar, fixation, chi0, eta1, law, PULLOFF_SCAN).taken(np.asarray(0))
 
 
 def _record_rows(pulloff: Pulloff, h1_um: np.ndarray) -> list[dict[str, Any]]:
@@ -313,14 +313,14 @@ def _predicted_rows(params: GentSchultzParameters, frequency_hz: float, h1_um: n
                     reduced_modulus: float) -> list[dict[str, Any]]:
     """The prediction rows of :func:`pulloff_table` (module docstring), one per model and amplitude."""
     if fixation.is_rigid:
-        return [row for model in levels.names("virtual_pulloff_rigid") if model != "simulation"
+        return [row for model in levels.names("virtual_pulloff", fixation.kind) if model != "simulation"
                 for row in _record_rows(predict_pulloff(model, params, frequency_hz, h1_um, radius=radius,
                                                         reduced_modulus=reduced_modulus), h1_um)]
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = h1_um * 1e-6 / radius
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
-    return [row for model in levels.names("virtual_pulloff_compliant") if model != "simulation"
+    return [row for model in levels.names("virtual_pulloff", fixation.kind) if model != "simulation"
             for h, e in zip(h1_um, eta1, strict=True)
             for row in _record_rows(_compliant_prediction(model, fixation, chi0, float(e), omega_check, law),
                                     np.asarray([h]))]

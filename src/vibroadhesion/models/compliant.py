@@ -54,9 +54,9 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
-from vibroadhesion.core.records import SteadyState
+from vibroadhesion.core.records import Pulloff, SteadyState, stacked
 from vibroadhesion.models.leading_order import mean_force_over_pulloff, mean_indentation
-from vibroadhesion.models.leading_pulloff import pulloff_closure
+from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_abar
 from vibroadhesion.models.refined import displacement_harmonics
 from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
 from vibroadhesion.numerics.roots import NoRootError
@@ -199,12 +199,41 @@ def abar_m_from_mean_balance(j0: ArrayLike, fixation: Fixation, chi0: float) -> 
     return np.exp(0.5 * (lo + hi))
 
 
+def refined_steady_state(omega_bar: float, abar_m: ArrayLike, abar: ArrayLike, fixation: Fixation, chi0: float,
+                         law: RateLaw) -> SteadyState:
+    """The record of level ``refined`` at solutions (abar_m, Abar) of Eqs. (87), (90) at ``omega_bar`` (any shape).
+
+    w_eff/w0 = J0^2 (Eq. 49), A/a_m at omega_check = omega_bar/nu0 (corrected Eq. 98), P_m/|P_JKR|
+    (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); the averaged model gives no stability (``stable`` None).
+    """
+    abar_m, abar = np.asarray(abar_m, dtype=float), np.asarray(abar, dtype=float)
+    j0 = j_integrals_for_law(abar, law)[0]
+    return SteadyState("refined", np.full(abar.shape, "ok"), abar, abar_m, j0**2,
+                       contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_bar / fixation.nu0),
+                       mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
+
+
 def newton_at_frequency(
     omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, guess: tuple[float, float]
-) -> tuple[float, float]:
-    """Newton in (ln abar_m, ln Abar) at fixed omega_bar from ``guess`` = (abar_m, Abar), to 1e-13 in the residual.
+) -> SteadyState:
+    """The solution of Eqs. (87), (90) at ``omega_bar`` reached by Newton from ``guess`` = (abar_m, Abar).
 
-    Raises NoRootError when Newton does not converge.
+    A record of level ``refined`` of shape () (:func:`refined_steady_state`); where Newton does not
+    converge (:func:`_newton`), the status ``not_converged`` with NaN numbers and the reason in ``message``.
+    """
+    try:
+        abar_m, abar = _newton(omega_bar, fixation, chi0, eta1, law, guess)
+    except NoRootError as error:
+        return SteadyState.unsolved("refined", "not_converged", str(error))
+    return refined_steady_state(omega_bar, abar_m, abar, fixation, chi0, law)
+
+
+def _newton(
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, guess: tuple[float, float]
+) -> tuple[float, float]:
+    """Newton in (ln abar_m, ln Abar) at fixed omega_bar from ``guess`` = (abar_m, Abar), to 1e-13 in Eqs. (87), (90).
+
+    Returns (abar_m, Abar); raises NoRootError when Newton does not converge.
     """
     at_frequency = partial(residual_at_frequency, log_omega_bar=math.log(omega_bar), fixation=fixation, chi0=chi0,
                            eta1=eta1, law=law)
@@ -259,25 +288,43 @@ def _roots_by_scan(
 
 def solutions_by_scan(
     omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
-) -> list[tuple[float, float]]:
-    """All solutions (abar_m, Abar) of Eqs. (87), (90) at one omega_bar with Abar in the scanned range.
+) -> SteadyState:
+    """All solutions of Eqs. (87), (90) at one omega_bar with Abar in the scanned range: one record.
 
     Independent of the continuation: Eq. (87) gives abar_m(Abar) uniquely, so Eq. (90) becomes a
-    scalar equation in ln Abar.
+    scalar equation in ln Abar. The record of level ``refined`` (:func:`refined_steady_state`) has one
+    element per solution, by increasing Abar; without any, one element of status ``no_solution``.
     """
     closure = partial(abar_m_from_mean_balance, fixation=fixation, chi0=chi0)
-    return _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, closure)
+    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, closure)
+    if not roots:
+        return SteadyState.unsolved("refined", "no_solution", _no_root(omega_bar, "Eqs. (87), (90)", log_abar),
+                                    shape=(1,))
+    return refined_steady_state(omega_bar, [abar_m for abar_m, _ in roots], [abar for _, abar in roots], fixation,
+                                chi0, law)
 
 
 def pulloff_by_scan(
     omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
-) -> list[tuple[float, float]]:
+) -> Pulloff:
     """Refined pull-off of the compliantly fixed indenter: Eq. (90) at a_m = a_cr (Eq. 61), all roots.
 
     The compliant counterpart of Eq. (106) (which it becomes as kappa -> infinity) and the refined
-    counterpart of Eqs. (67)-(69); P_cr/P_cr^JKR = J0(Abar_cr)^2 (Eq. 71) for each root.
+    counterpart of Eqs. (67)-(69). The record of level ``refined`` has one element per root, by
+    increasing Abar_cr, with P_cr/P_cr^JKR = J0(Abar_cr)^2 (Eq. 71) each (a_m = a_cr: ``abar_m`` is not
+    solved for, NaN); without any root, one element of status ``no_solution``.
     """
-    return _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, pulloff_closure)
+    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, pulloff_closure)
+    if not roots:
+        return Pulloff.unsolved("refined", "no_solution", _no_root(omega_bar, "Eq. (90) at a_m = a_cr", log_abar),
+                                shape=(1,))
+    return stacked([pulloff_from_abar("refined", np.asarray(abar), law) for _, abar in roots])
+
+
+def _no_root(omega_bar: float, equations: str, log_abar: Array) -> str:
+    """The message of a scan without a sign change (the grid ``log_abar`` in ln Abar, Eqs. 87, 90)."""
+    return (f"{equations}: no root at omega_bar = {omega_bar:.6g} for Abar in "
+            f"[{math.exp(log_abar[0]):.3g}, {math.exp(log_abar[-1]):.3g}]")
 
 
 def _a_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
@@ -306,37 +353,38 @@ class ResponseCurve:
         """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
         return sum(len(crossings(piece, math.log(omega_bar))) for piece in self.pieces)
 
-    def solutions_at(self, omega_bar: float, law: RateLaw) -> list[tuple[float, float]]:
-        """Every solution (abar_m, Abar) on the traced curve at ``omega_bar``, polished by Newton."""
+    def steady_states_at(self, omega_bar: float, law: RateLaw) -> SteadyState:
+        """Every solution on the traced curve at ``omega_bar``, polished by Newton: one record of level ``refined``.
+
+        One element per crossing of the curve (:func:`newton_at_frequency`), the solutions by increasing
+        Abar, then any crossing where Newton did not converge (``not_converged``); no crossing (outside the
+        traced range) gives one element of status ``no_solution``.
+        """
         s = math.log(omega_bar)
         case = (self.fixation, self.chi0, self.eta1, law)
-        return [newton_at_frequency(omega_bar, *case, (math.exp(g[1]), math.exp(g[2])))
-                for piece in self.pieces for g in crossings(piece, s)]
+        states = [newton_at_frequency(omega_bar, *case, (math.exp(g[1]), math.exp(g[2])))
+                  for piece in self.pieces for g in crossings(piece, s)]
+        if not states:
+            return SteadyState.unsolved("refined", "no_solution", f"the traced curve does not reach omega_bar = "
+                                        f"{omega_bar:.6g}", shape=(1,))
+        return stacked(sorted(states, key=_solutions_first_by_abar))
 
-    def steady_states_at(self, omega_bar: float, law: RateLaw) -> SteadyState:
-        """The solutions at ``omega_bar`` as the record of level ``refined``, one element each, by increasing Abar.
 
-        w_eff/w0 = J0^2 (Eq. 49), A/a_m at omega_check = omega_bar/nu0 (corrected Eq. 98), P_m/|P_JKR|
-        (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); the averaged model gives no stability (``stable`` None).
-        """
-        solutions = sorted(self.solutions_at(omega_bar, law), key=lambda s: s[1])
-        abar_m = np.array([am for am, _ in solutions], dtype=float)
-        abar = np.array([a for _, a in solutions], dtype=float)
-        j0 = j_integrals_for_law(abar, law)[0]
-        return SteadyState("refined", np.full(abar.shape, "ok"), abar, abar_m, j0**2,
-                           contact_radius_amplitude_ratio(abar, abar_m, self.chi0, omega_bar / self.fixation.nu0),
-                           mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
+def _solutions_first_by_abar(state: SteadyState) -> tuple[bool, float]:
+    """Sort key of the elements of a record: the solutions by increasing Abar, then the unsolved ones."""
+    return not bool(state.ok), float(state.Abar)
 
 
 def _start(omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw) -> Array:
     """The one solution x = (ln omega_bar, ln abar_m, ln Abar) of Eqs. (87), (90) at an end of the range."""
     roots = solutions_by_scan(omega_bar, fixation, chi0, eta1, law, np.linspace(-60.0, 60.0, 2401))
-    if len(roots) != 1:
+    found = int(np.count_nonzero(roots.ok))
+    if found != 1:
         raise NoRootError(
             f"Eqs. (87), (90): expected one solution at the end omega_bar = {omega_bar:.6g} to start from, "
-            f"found {len(roots)}"
+            f"found {found}"
         )
-    return np.array([math.log(omega_bar), math.log(roots[0][0]), math.log(roots[0][1])])
+    return np.array([math.log(omega_bar), math.log(float(roots.abar_m[0])), math.log(float(roots.Abar[0]))])
 
 
 def trace_response_curve(
@@ -384,7 +432,7 @@ def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateL
         return curve
     edge = hi if last[0] > hi else lo
     guess = (math.exp(last[1]), math.exp(last[2]))
-    abar_m, abar = newton_at_frequency(math.exp(edge), fixation, chi0, eta1, law, guess)
+    abar_m, abar = _newton(math.exp(edge), fixation, chi0, eta1, law, guess)
     points = curve.points.copy()
     points[-1] = [edge, math.log(abar_m), math.log(abar)]
     return Curve(points, curve.tangents, curve.residuals)

@@ -152,15 +152,20 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
 
     abar_cr = (9/16)^(1/3) (w_eff/w0)^(1/3) reads abar_m^(3/2) = (3/4) alpha*(etahat/sqrt(abar_m)) (unique
     root, :func:`_radius_where_alpha_is` with c = 4/3); there Phat_m = (4/3)(9/16) alpha^2 - (3/2) alpha^2
-    = -(3/4) alpha^2, so P_cr/P_JKR^0 = alpha^2 = w_eff/w0 (Eq. 71 with the exact w_eff).
+    = -(3/4) alpha^2, so P_cr/P_JKR^0 = alpha^2 = w_eff/w0 (Eq. 71 with the exact w_eff). Where the root
+    search fails (:class:`NoRootError`) the record says ``no_solution`` for every amplitude of the call,
+    every number NaN, the reason in ``message``: the exception becomes a status here, at the level boundary.
     """
     eta1 = np.asarray(eta1, dtype=float)
     etahat = amplitude_in_contact_units(eta1, chi0).ravel()
     abar_m = np.full_like(etahat, (9.0 / 16.0) ** (1.0 / 3.0))
     moving = etahat > 0
-    if np.any(moving):
-        abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 4.0 / 3.0)
-    cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
+    try:
+        if np.any(moving):
+            abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 4.0 / 3.0)
+        cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
+    except NoRootError as error:  # includes NoSteadyStateError
+        return Pulloff.unsolved("exact_averaging", "no_solution", str(error), eta1.shape)
     shape = eta1.shape
     ratio = (cycle.alpha**2).reshape(shape)
     return Pulloff.from_ratio("exact_averaging", "ok", ratio, Abar_cr=cycle.abar.reshape(shape),
@@ -204,10 +209,27 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
     0.0058; each scan one vectorised call of :func:`mean_state` for all amplitudes), and placed at the
     vertex of the parabola through the smallest value and its neighbours. The vertex is off by O(h^2)
     in z for the last step h, so the force by O(h^4): 1.1e-9 relative at most over n = 0.05–4 and
-    etahat = 1e-4–1e3 against Brent's method to 1e-12 in z (tested to 1e-8). Raises when a minimum
-    sits at an end of a scan.
+    etahat = 1e-4–1e3 against Brent's method to 1e-12 in z (tested to 1e-8). Where a minimum sits at an
+    end of a scan (:class:`NoRootError`) the record says ``no_solution`` for every amplitude of the call,
+    every number NaN, the reason in ``message``: the exception becomes a status here, at the level boundary.
     """
     eta1 = np.asarray(eta1, dtype=float)
+    try:
+        state = _force_minimum_state(eta1, chi0, law)
+    except NoRootError as error:  # includes NoSteadyStateError
+        return Pulloff.unsolved("exact_averaging_force_minimum", "no_solution", str(error), eta1.shape)
+    abar_m, alpha, abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
+                                                                     state.mean_force / PHAT_JKR))
+    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=abar, sqrt_w_eff_ratio=alpha,
+                              w_eff_ratio=alpha**2, abar_m=abar_m)
+
+
+def _force_minimum_state(eta1: Array, chi0: float, law: GentSchultz) -> MeanState:
+    """The mean state (Eqs. 16-18) at the minimum of Phat_m over abar_m, one per amplitude (flattened).
+
+    The nested scans and the parabola vertex of :func:`pulloff_at_force_minimum`; raises
+    :class:`NoRootError` when a minimum sits at an end of a scan.
+    """
     column = eta1.reshape(-1, 1)
     etahat = amplitude_in_contact_units(column, chi0)[:, 0]
     scale = np.maximum(1.0, np.sqrt(etahat))
@@ -219,8 +241,4 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
         force, k = _smallest_mean_force(z, column, chi0, law)
     lower, middle, upper = force[rows, k - 1], force[rows, k], force[rows, k + 1]
     vertex = z[rows, k] - 0.5 * (z[:, 1] - z[:, 0]) * (upper - lower) / (upper - 2.0 * middle + lower)
-    state = mean_state(np.exp(vertex), column[:, 0], chi0, law)
-    abar_m, alpha, abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
-                                                                     state.mean_force / PHAT_JKR))
-    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=abar, sqrt_w_eff_ratio=alpha,
-                              w_eff_ratio=alpha**2, abar_m=abar_m)
+    return mean_state(np.exp(vertex), column[:, 0], chi0, law)

@@ -61,7 +61,7 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.core.records import SteadyState
+from vibroadhesion.core.records import SteadyState, stacked
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 from vibroadhesion.numerics.scan import (
     Node,
@@ -159,15 +159,20 @@ def steady_states(
     base_offset: float = 0.0,
     omega_check: float = math.inf,
     abar_min: float = 1e-4,
-) -> tuple[SteadyState, ...]:
+) -> SteadyState:
     """All leading-order steady states with abar_m >= ``abar_min``, sorted by abar_m (Sec. 3.1).
 
     Solves the amplitude equation (II) and the mean balance (III) (derivation in the module
     docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation (with
     its weight mu = m g/(E* R^2), Eq. 81), chi0 (Eq. 64), the Gent–Schultz law, the base offset
     (hhat - h0) R/a_o^2 (load group ``load_group``) and omega_check = omega R/v0 (Eq. 105; the
-    fixation's d at that frequency, and A/a_m; a rigid fixation admits omega_check = inf). Raises
-    :class:`NoRootError` if there is none (e.g. a tensile load beyond pull-off).
+    fixation's d at that frequency, and A/a_m; a rigid fixation admits omega_check = inf).
+
+    Returns one record of level ``leading`` with one element per steady state, in increasing abar_m
+    (:func:`steady_state_at`). Where there is none (e.g. a tensile load beyond pull-off) or the scan
+    cannot be completed (:class:`NoRootError` inside, e.g. a residual that does not fall towards a
+    contact resonance), the record has one element of status ``no_solution`` with NaN numbers and the
+    reason in ``message``: the exception becomes a status here, at the level boundary.
 
     Method. For given abar_m, (II) fixes Abar uniquely (:func:`internal_variable`), so the
     solutions are the roots of the one-variable residual F(abar_m) of (III) along that curve
@@ -201,10 +206,29 @@ def steady_states(
     """
     _check_steady_state_inputs(law, chi0, base_offset, abar_min, omega_check)
     balance = MeanBalance(eta1, fixation, chi0, law, omega_check, base_offset)
-    vibrating = eta1 > 0 and fixation.d(omega_check) != 0  # else Abar = 0, J0 = 1 throughout
+    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
+    try:
+        roots = mean_balance_roots(balance, abar_min, what)
+        if roots:
+            return stacked([steady_state_at(abar_m, stable, balance, omega_check) for abar_m, stable in sorted(roots)])
+    except NoRootError as error:
+        return SteadyState.unsolved("leading", "no_solution", str(error), shape=(1,))
+    return SteadyState.unsolved(
+        "leading", "no_solution", f"{what}: no steady state with abar_m >= {abar_min:.3g} (base offset = "
+        f"{base_offset:.6g}); a tensile load beyond the vibroadhesive pull-off has none", shape=(1,))
+
+
+def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list[tuple[float, bool]]:
+    """Every root (abar_m, stable) >= ``abar_min`` of the mean balance (III) along (II) (Eqs. 43, 54), unsorted.
+
+    The scan of :func:`steady_states` (method and end in its docstring): the segments of
+    :func:`scan_segments`, each sign change and interior extremum polished, and the one root of the
+    monotone tail bracketed by doubling. Raises :class:`NoRootError` where the scan cannot be completed.
+    """
+    fixation, chi0, omega_check = balance.fixation, balance.chi0, balance.omega_check
+    vibrating = balance.eta1 > 0 and fixation.d(omega_check) != 0  # else Abar = 0, J0 = 1 throughout
     resonance = fixation.contact_resonance(chi0, omega_check) if vibrating else None
     abar_turn = monotone_tail_start(fixation, chi0, omega_check) if vibrating else 0.0
-    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
     z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
     segments = scan_segments(balance, math.log(abar_min), z_res, abar_turn, what)
     residual = partial(balance_residual, balance=balance)
@@ -212,12 +236,7 @@ def steady_states(
     roots = [root for nodes in segments for root in roots_on_nodes(residual, nodes, what)]
     if tail_root_bracket is not None:
         roots.append(polish_sign_change(residual, *tail_root_bracket, True, what))
-    if not roots:
-        raise NoRootError(
-            f"{what}: no steady state with abar_m >= {abar_min:.3g} (base offset = {base_offset:.6g}); "
-            "a tensile load beyond the vibroadhesive pull-off has none"
-        )
-    return tuple(steady_state_at(abar_m, stable, balance, omega_check) for abar_m, stable in sorted(roots))
+    return roots
 
 
 def _check_steady_state_inputs(
@@ -322,7 +341,7 @@ def scan_segments(
 
 
 def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_check: float) -> SteadyState:
-    """The steady state at a root abar_m of the mean balance (Sec. 3.1): a scalar record of level ``leading``.
+    """The steady state at a root abar_m of the mean balance (Sec. 3.1): a record of level ``leading``, shape ().
 
     Abar (Eq. 43), w_eff/w0 = J0^2 (Eqs. 28, 49), A/a_m (Eq. 45, docs/errata.md E1; 0 for
     omega_check = inf), P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); ``stable`` as in

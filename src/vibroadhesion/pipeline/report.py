@@ -85,7 +85,7 @@ def virtual_pulloff_tables(virtual_csv: str | Path) -> list[tuple[str, pd.DataFr
                 f" (kappa = {rows['kappa'].iloc[0]:g}, zeta = {rows['zeta'].iloc[0]:g}; "
                 "leading: Eqs. (67)-(69), refined: Eq. (90) at a_m = a_cr)")
         ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
-        ratio = ratio[[m for m in levels.names("virtual_pulloff_rigid") if m in ratio.columns]]
+        ratio = ratio[[m for m in levels.names("virtual_pulloff") if m in ratio.columns]]
         for model in ratio.columns.drop("simulation"):
             ratio[f"{model} error"] = ratio[model] / ratio["simulation"] - 1
         ratio = ratio.rename(columns={"simulation": "SIMULATED"})

@@ -40,7 +40,8 @@ def fig5_tables(
     ``branch`` names the monotone segment of the curve in trace order: "lower-k"/"upper-k" for the
     two pieces below/above the exact anti-resonance (zeta = 0), "full-k" otherwise; k counts the
     folds passed. The exact anti-resonance point (Abar = 0 at omega_bar = 1, zeta = 0) is a row
-    with branch "anti-resonance".
+    with branch "anti-resonance". The markers of the test frequencies are the solutions on the traced
+    curve there (:meth:`vibroadhesion.models.compliant.ResponseCurve.steady_states_at`), by increasing Abar.
     """
     law = GentSchultz(n)
     curves, markers, counts = [], [], []
@@ -58,9 +59,11 @@ def fig5_tables(
         markers.append(_fig5_rows(["fold"] * len(curve.folds), curve.folds, curve)
                        .assign(kind="fold", frequency_hz=np.nan))
         for f, omega_bar in sorted(experiment_omega_bar.items()):
-            solutions = np.array([[np.log(omega_bar), np.log(am), np.log(a)]
-                                  for am, a in curve.solutions_at(omega_bar, law)])
-            markers.append(_fig5_rows(["experiment"] * len(solutions), solutions.reshape(-1, 3), curve)
+            states = curve.steady_states_at(omega_bar, law)
+            solved = states.ok
+            solutions = np.column_stack([np.full(np.count_nonzero(solved), np.log(omega_bar)),
+                                         np.log(states.abar_m[solved]), np.log(states.Abar[solved])])
+            markers.append(_fig5_rows(["experiment"] * len(solutions), solutions, curve)
                            .assign(kind="experiment", frequency_hz=f))
         counts.append(pd.DataFrame({"zeta": p.zeta, "kappa": p.kappa, "omega_bar": grid,
                                     "solutions": [curve.count_at(w) for w in grid]}))
