@@ -53,6 +53,9 @@ rule virtual_pulloff:
     wildcard_constraints:
         fixation="rigid|compliant",
         frequency=r"[0-9.]+",
+    # The longest chain of both targets (ingest -> fit -> virtual pull-off -> Figs. 4, 7 -> their pages):
+    # started first, the shorter jobs fill the other core around it.
+    priority: 10
     script:
         "../scripts/virtual_pulloff.py"
 
