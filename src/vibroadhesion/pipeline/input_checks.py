@@ -3,13 +3,15 @@
 :mod:`vibroadhesion.pipeline.data` reads ``data/setup.yaml`` and ``data/pulloff.csv``; this module
 holds what both readers share: :class:`DataError` (``"<file>, row <r>, column <c>: <what is wrong>"``),
 the packaged JSON schemas (draft 2020-12, ``vibroadhesion/pipeline/schemas/``) with their validators,
-the translation of a schema violation into that one-line message, and the UTF-8 file reader.
+the translation of a schema violation into that one-line message, the UTF-8 file reader, and the
+check of the two files against each other (a pull-off force on the scale of the setup's JKR force).
 """
 
 from __future__ import annotations
 
 import difflib
 import json
+import math
 from collections.abc import Sequence
 from functools import cache
 from importlib import resources
@@ -134,3 +136,28 @@ def read_text(path: Path) -> str:
     except UnicodeDecodeError as exc:
         row = raw[: exc.start].count(b"\n") + 1
         raise DataError(path, row, "(file)", "file is not UTF-8 text") from None
+
+
+#: A measured pull-off force below this fraction of |P_cr^JKR| (Eq. 70) at the setup's w0 and R is refused as a
+#: unit slip. Vibration only raises the work of adhesion (w >= w0, Eq. 6), so every model level and the simulation
+#: give at least |P_cr^JKR|; a force below 0.3 of it is far more likely newtons typed in the millinewton column.
+MIN_PULLOFF_OVER_JKR = 0.3
+
+
+def jkr_pulloff_mN(radius: float, w0: float) -> float:
+    """|P_cr^JKR| = (3 pi / 2) R w0 (Eq. 70) in mN, R in m, w0 in J/m^2 (core.jkr.pulloff_force without numpy)."""
+    return 1.5 * math.pi * radius * w0 * 1e3
+
+
+def check_force_scale(radius: float, w0: float, records: Sequence[dict[str, Any]], pulloff_csv: str | Path) -> None:
+    """Refuse the first row whose ``pulloff_mN`` is below :data:`MIN_PULLOFF_OVER_JKR` |P_cr^JKR| (a unit slip).
+
+    ``radius`` (m) and ``w0`` (J/m^2) of data/setup.yaml; ``records`` the rows, each with its ``line`` in the file.
+    """
+    floor = MIN_PULLOFF_OVER_JKR * jkr_pulloff_mN(radius, w0)
+    for rec in records:
+        if rec["pulloff_mN"] < floor:
+            raise DataError(pulloff_csv, rec["line"], "pulloff_mN",
+                            f"pull-off force {rec['pulloff_mN']!r} mN is below {MIN_PULLOFF_OVER_JKR} |P_JKR| = "
+                            f"{floor:.3g} mN of the setup's w0 and R (vibration only raises it): looks like N, "
+                            "expected mN (for a weaker adhesive, set gent_schultz_published.w0 in the setup)")
