@@ -363,8 +363,8 @@ def test_rules_run_with_project_and_interpreter_under_paths_with_spaces(tmp_path
 
 
 def test_building_the_dag_imports_no_numerics() -> None:
-    """The modules the Snakefile imports (pages, import closure) load none of the numerics stack."""
-    code = ("import sys, vibroadhesion.pipeline.imports, vibroadhesion.pipeline.pages; "
+    """The modules the Snakefile imports (pages, import closure, the input checks) load none of the numerics stack."""
+    code = ("import sys, vibroadhesion.pipeline.imports, vibroadhesion.pipeline.pages, vibroadhesion.pipeline.data; "
             "print(' '.join(m for m in ('numpy', 'pandas', 'scipy', 'matplotlib') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == ""
