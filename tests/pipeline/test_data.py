@@ -190,10 +190,10 @@ BAD_CSV = [
     ("nan", HEADER + "\nnan,40,250,lab\n", 2, "frequency_hz", "not a finite number"),
     ("inf", HEADER + "\n200,40,inf,lab\n", 2, "pulloff_mN", "not a finite number"),
     ("empty-numeric", HEADER + "\n200,,250,lab\n", 2, "h1_um", "empty value"),
-    ("zero-frequency", HEADER + "\n0,40,250,lab\n", 2, "frequency_hz", "must be > 0"),
     ("negative-frequency", HEADER + "\n-200,40,250,lab\n", 2, "frequency_hz", "must be > 0"),
-    ("zero-amplitude", HEADER + "\n200,0,250,lab\n", 2, "h1_um", "must be > 0"),
-    ("negative-amplitude", HEADER + "\n200,-40,250,lab\n", 2, "h1_um", "must be > 0"),
+    ("negative-amplitude", HEADER + "\n200,-40,250,lab\n", 2, "h1_um", "must be >= 0 um (0: a static JKR test)"),
+    ("zero-frequency-with-vibration", HEADER + "\n0,40,250,lab\n", 2, "frequency_hz", "only for a static test"),
+    ("empty-frequency-with-vibration", HEADER + "\n,40,250,lab\n", 2, "frequency_hz", "empty value"),
     ("zero-force", HEADER + "\n200,40,0,lab\n", 2, "pulloff_mN", "must be > 0"),
     ("negative-force", HEADER + "\n200,40,-250,lab\n", 2, "pulloff_mN", "must be > 0"),
     ("amplitude-in-mm", HEADER + "\n200,0.04,250,lab\n", 2, "h1_um", "expected micrometres; looks like mm/m"),
@@ -248,6 +248,18 @@ def test_replicate_rows_are_measurements_and_are_kept(tmp_path: Path) -> None:
 # Forces on the scale of newtons typed in the millinewton column. |P_JKR| = (3 pi/2) R w0 = 57.27 mN at the
 # published R = 51.5 mm and w0 = 0.236 J/m^2; the floor is 0.3 of it, 17.18 mN.
 JKR_MN = 1.5 * math.pi * RADIUS * W0 * 1e3
+
+
+def test_static_jkr_rows_need_no_frequency(tmp_path: Path) -> None:
+    """h1_um = 0 is a static JKR test: its frequency may be empty (read as 0, written as 0.0) or given."""
+    path = _csv(tmp_path, HEADER + "\n,0,60.0,static test\n200,0,61.0,static at the rig\n" + ROW + "\n")
+    rows = load_pulloff(path)
+    assert rows["frequency_hz"].tolist() == [0.0, 200.0, 200.0]
+    assert rows["h1_um"].tolist() == [0.0, 0.0, 40.0]
+    out_json, out_csv = tmp_path / "setup.json", tmp_path / "canonical.csv"
+    assert main([str(SETUP_YAML), str(path), str(out_json), str(out_csv)]) == 0
+    assert out_csv.read_text().splitlines()[1] == "0.0,0.0,60.0,static test"
+    assert data.read_canonical_pulloff(out_csv)["h1_um"].tolist() == [0.0, 0.0, 40.0]
 
 
 @pytest.mark.parametrize("force_mN", [0.165, 1.25, 0.299 * JKR_MN])

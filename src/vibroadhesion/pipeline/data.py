@@ -324,6 +324,24 @@ def _number(path: Path, line_no: int, column: str, cell: str) -> float:
     return value
 
 
+def _row_numbers(path: Path, line_no: int, row: dict[str, str]) -> dict[str, Any]:
+    """The numeric columns of one row.
+
+    A static JKR test (h1_um = 0) has no excitation: its frequency may be empty (read as 0); any other row
+    needs a frequency > 0.
+    """
+    h1 = _number(path, line_no, "h1_um", row["h1_um"])
+    if h1 == 0 and not row["frequency_hz"].strip():
+        frequency = 0.0
+    else:
+        frequency = _number(path, line_no, "frequency_hz", row["frequency_hz"])
+        if frequency == 0 and h1 != 0:
+            raise DataError(path, line_no, "frequency_hz", "frequency must be > 0 Hz (0 or empty only for a static "
+                            f"test, h1_um = 0), got {frequency!r}")
+    return {"frequency_hz": frequency, "h1_um": h1, "pulloff_mN": _number(path, line_no, "pulloff_mN",
+                                                                          row["pulloff_mN"])}
+
+
 def load_pulloff(path: str | Path) -> pd.DataFrame:
     """Read and validate ``data/pulloff.csv`` (:func:`pulloff_records`) as a frame.
 
@@ -360,7 +378,7 @@ def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
         if len(cells) != len(header):
             _field_count_error(path, line_no, header, cells)
         row = dict(zip(header, cells, strict=True))
-        record: dict[str, Any] = {c: _number(path, line_no, c, row[c]) for c in NUMERIC_COLUMNS}
+        record = _row_numbers(path, line_no, row)
         record["source"] = row["source"].strip()
         errors = []
         for error in row_validator.iter_errors(record):
