@@ -17,11 +17,11 @@ configfile: "workflow/config.yaml"
 
 
 validate(config, "workflow/schemas/config.schema.yaml")
-# The levels that may supply the figures' parameters are the registry's (vibroadhesion.core.levels).
-if config["fit"]["figures_use"] not in names("figures"):
+# Any fitted level of the registry (vibroadhesion.core.levels) may supply the figures' parameters.
+if config["fit"]["figures_use"] not in names("fit"):
     sys.exit(
         f"workflow/config.yaml: fit.figures_use = {config['fit']['figures_use']!r} is not one of "
-        f"{', '.join(names('figures'))}"
+        f"{', '.join(names('fit'))}"
     )
 
 
