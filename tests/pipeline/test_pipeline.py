@@ -27,7 +27,6 @@ import pandas as pd
 import pytest
 from conftest import AMPLITUDES_UM, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
-from vibroadhesion.core import levels
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline.artefacts import write_csv
@@ -200,7 +199,7 @@ def test_every_notebook_has_exactly_one_parameters_cell() -> None:
 
 
 def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> None:
-    params = dict.fromkeys(levels.fig4_names(), GentSchultzParameters(W0, N_PUBLISHED, V0))
+    params = GentSchultzParameters(W0, N_PUBLISHED, V0)
     geometry = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
     measured = pd.DataFrame({"frequency_hz": [200.0], "h1_um": [40.0], "pulloff_mN": [250.0], "source": ["simulated"]})
     digests = []

@@ -97,13 +97,14 @@ def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
 
 
 def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
-              virtual: pd.DataFrame | None = None) -> Figure:
-    """Fig. 4: P_cr/P_JKR against h1.
+              virtual: pd.DataFrame | None = None, parameter_label: str = "") -> Figure:
+    """Fig. 4: P_cr/P_JKR against h1, every curve and the measured rows at one parameter set (``parameter_label``).
 
-    Leading-order, refined and exact-averaging curves, measured rows by source,
-    and the simulated pull-off of the rigidly fixed virtual experiment (its own, labelled series: not measurements).
+    Leading-order, refined and exact-averaging curves, the simulated pull-off of the rigidly fixed virtual
+    experiment (its own, labelled series: not measurements), and the measured rows scaled by the same
+    ``jkr_pulloff_mN``: coloured by frequency as the refined curve of that frequency, marked by source.
     """
-    fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7.8, 3.9), constrained_layout=True)
     lead = table[table["model"] == "leading"]
     ax.plot(lead["h1_um"], lead["pulloff_ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
     refined = table[table["model"] == "refined"]
@@ -118,16 +119,29 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
                     label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
-    markers = "osD^v<>p"
-    for k, (source, rows) in enumerate(measurements.groupby("source", sort=True)):
-        ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
-                color=f"C{k + 3}", label=str(source))
+    _plot_measured(ax, measurements, jkr_pulloff_mN, sorted(refined["frequency_hz"].unique()))
+    if parameter_label:
+        ax.set_title(parameter_label, fontsize=7.5)
     if measurements.empty:
         ax.text(0.03, 0.97, "no measured rows in data/pulloff.csv\n(published fit shown)", transform=ax.transAxes,
                 va="top", fontsize=7.5, color="0.35")
     ax.set(xlabel=r"base amplitude $h_1$ (µm)", ylabel=r"$P_{cr}/P^{JKR}_{cr}$", xlim=(0, None), ylim=(0, None))
-    ax.legend(loc="lower right")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data, not on it
     return fig
+
+
+def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, frequencies: Sequence[float]) -> None:
+    """Measured rows over P_JKR: one marker per source, the colour of the refined curve of their frequency.
+
+    Grey for a frequency without a curve or for a static test (h1 = 0).
+    """
+    markers = "osD^v<>p"
+    for k, (source, by_source) in enumerate(measurements.groupby("source", sort=True)):
+        for f, rows in by_source.groupby("frequency_hz", sort=True):
+            known = [j for j, test in enumerate(frequencies) if np.isclose(test, f)]
+            where = "static, $h_1$ = 0" if f == 0 else f"{f:g} Hz"
+            ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
+                    color=f"C{known[0]}" if known else "0.4", label=f"{source}, {where}")
 
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
