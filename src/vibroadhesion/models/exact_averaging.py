@@ -17,7 +17,7 @@ which has zero mean, so the drift condition is automatic), obtains s = sqrt(f(Ab
 has higher harmonics that the prescribed deltabar(tau) of Eq. (5) cannot balance -- and so replaces
 alpha*(beta) by J0(Abar) on |Jc1(Abar)| = beta. The exact cycle keeps s affine in sin tau and lets the
 speed x(tau) = X(s(tau)) take whatever (non-sinusoidal) shape makes the drift vanish. For small beta
-(Eqs. 28, 29 expanded as in :func:`vibroadhesion.core.integrals.j_integrals_small_abar`)
+(Eqs. 28, 29 expanded as in :func:`vibroadhesion.core.integrals.j_integrals_small_Abar`)
 
     J0 - 1 = pi W(2n) beta^2/(16 W(n+1)^2) + o(beta^2)   against   alpha* - 1 = beta^2/(2(1+n)),
     Abar_J = (pi beta/(2 W(n+1)))^(1/n)                  against   Abar   = (2 beta)^(1/n) W(1/n),
