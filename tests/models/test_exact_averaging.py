@@ -109,9 +109,9 @@ def test_alpha_star_matches_30_digit_mpmath_root(n: float) -> None:
     betas = CASES[n]
     cycle = frozen_radius_cycle(np.array(betas), GentSchultz(n))
     for k, beta in enumerate(betas):
-        alpha, abar, s_min = frozen_cycle_mp(beta, n, float(cycle.sqrt_w_min[k]))
+        alpha, Abar, s_min = frozen_cycle_mp(beta, n, float(cycle.sqrt_w_min[k]))
         assert abs(float(cycle.alpha[k]) / alpha - 1) < 1e-13, (beta, float(cycle.alpha[k]), alpha)
-        assert abs(float(cycle.abar[k]) / abar - 1) < 1e-12, (beta, float(cycle.abar[k]), abar)
+        assert abs(float(cycle.Abar[k]) / Abar - 1) < 1e-12, (beta, float(cycle.Abar[k]), Abar)
         assert abs(float(cycle.sqrt_w_min[k]) / s_min - 1) < 1e-12, (beta, float(cycle.sqrt_w_min[k]), s_min)
 
 
@@ -119,7 +119,7 @@ def test_beta_zero_is_the_static_state_exactly_and_shapes_are_kept() -> None:
     """beta = 0: s = 1 at all times, so alpha* = 1 and Abar = 0 exactly; output shape = input shape."""
     cycle = frozen_radius_cycle(np.zeros((2, 3)), GentSchultz(N_PUBLISHED))
     assert cycle.alpha.shape == (2, 3)
-    assert np.all(cycle.alpha == 1.0) and np.all(cycle.abar == 0.0) and np.all(cycle.sqrt_w_min == 1.0)
+    assert np.all(cycle.alpha == 1.0) and np.all(cycle.Abar == 0.0) and np.all(cycle.sqrt_w_min == 1.0)
 
 
 # ----------------------------------------------------------------- closed-form limits
@@ -188,7 +188,7 @@ def test_root_below_the_resolvable_floor_is_beta_and_n_above_4_without_steady_st
     closing integral stays finite as alpha -> beta and the opening one wins for large beta: no root.
     """
     cycle = frozen_radius_cycle(np.array([1e3]), GentSchultz(4.0))
-    assert float(cycle.alpha[0]) == 1e3 and float(cycle.sqrt_w_min[0]) == 0.0 and float(cycle.abar[0]) > 0
+    assert float(cycle.alpha[0]) == 1e3 and float(cycle.sqrt_w_min[0]) == 0.0 and float(cycle.Abar[0]) > 0
     assert float(frozen_radius_cycle(np.array([0.5]), GentSchultz(6.0)).alpha[0]) > 1.0
     with pytest.raises(NoSteadyStateError):
         frozen_radius_cycle(np.array([0.5, 10.0]), GentSchultz(6.0))

@@ -100,16 +100,16 @@ def static_abar_m(fixation: Fixation, chi0: float) -> float:
 
 
 def harmonic_coefficients(
-    omega_bar: ArrayLike, abar_m: ArrayLike, abar: ArrayLike, fixation: Fixation, chi0: float, law: RateLaw
+    omega_bar: ArrayLike, abar_m: ArrayLike, Abar: ArrayLike, fixation: Fixation, chi0: float, law: RateLaw
 ) -> tuple[Array, Array, Array, Array, Array]:
     """(J0, delta_c, delta_s, P_c, P_s) of Eqs. (93)–(96), broadcast over the inputs."""
-    omega_bar, abar_m, abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, abar)))
-    j0, jc1, j1 = j_integrals_for_law(abar.ravel(), law)
-    j0, jc1, j1 = (v.reshape(abar.shape) for v in (j0, jc1, j1))
-    delta_c, delta_s = displacement_harmonics(abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
+    omega_bar, abar_m, Abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, Abar)))
+    j0, jc1, j1 = j_integrals_for_law(Abar.ravel(), law)
+    j0, jc1, j1 = (v.reshape(Abar.shape) for v in (j0, jc1, j1))
+    delta_c, delta_s = displacement_harmonics(Abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
     p_c = -(4.0 * chi0**3 / (9.0 * fixation.kappa)) * abar_m**1.5 * jc1
     kappa, nu0 = fixation.kappa, fixation.nu0
-    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * abar * abar_m**2 * (
+    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * Abar * abar_m**2 * (
         1.0 - 3.0 * j1 / (4.0 * abar_m**1.5)
     )
     return j0, delta_c, delta_s, p_c, p_s
@@ -143,8 +143,8 @@ def residual(x: ArrayLike, fixation: Fixation, chi0: float, eta1: float, law: Ra
     Column 0: positive/negative - 1 of Eq. (87); column 1: ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
     """
     x = np.atleast_2d(np.asarray(x, dtype=float))
-    omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, fixation, chi0, law)
+    omega_bar, abar_m, Abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
+    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation, chi0, law)
     amplitude = amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, fixation.zeta, eta1)
     return np.stack([mean_balance_excess(x[:, 1], j0, fixation, chi0), amplitude], axis=1)
 
@@ -159,13 +159,13 @@ def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_
 
 
 def residual_linear(
-    omega_bar: float, abar_m: float, abar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw
+    omega_bar: float, abar_m: float, Abar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw
 ) -> tuple[float, float]:
     """Eqs. (87) and (90) in their printed (polynomial) form, relative: for checking a solution.
 
     Returns ((positive - negative)/negative, (xi_c^2 + xi_s^2 - rhs)/rhs) of Eqs. (87) and (90).
     """
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, fixation, chi0, law)
+    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation, chi0, law)
     positive, negative = mean_balance_parts(abar_m, j0, fixation, chi0)
     xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_c, delta_s, p_c, p_s, fixation.zeta)
     rhs = (eta1 * forcing_modulus(math.log(omega_bar), fixation.zeta)) ** 2
@@ -199,17 +199,17 @@ def abar_m_from_mean_balance(j0: ArrayLike, fixation: Fixation, chi0: float) -> 
     return np.exp(0.5 * (lo + hi))
 
 
-def refined_steady_state(omega_bar: float, abar_m: ArrayLike, abar: ArrayLike, fixation: Fixation, chi0: float,
+def refined_steady_state(omega_bar: float, abar_m: ArrayLike, Abar: ArrayLike, fixation: Fixation, chi0: float,
                          law: RateLaw) -> SteadyState:
     """The record of level ``refined`` at solutions (abar_m, Abar) of Eqs. (87), (90) at ``omega_bar`` (any shape).
 
     w_eff/w0 = J0^2 (Eq. 49), A/a_m at omega_check = omega_bar/nu0 (corrected Eq. 98), P_m/|P_JKR|
     (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); the averaged model gives no stability (``stable`` None).
     """
-    abar_m, abar = np.asarray(abar_m, dtype=float), np.asarray(abar, dtype=float)
-    j0 = j_integrals_for_law(abar, law)[0]
-    return SteadyState("refined", np.full(abar.shape, "ok"), abar, abar_m, j0**2,
-                       contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_bar / fixation.nu0),
+    abar_m, Abar = np.asarray(abar_m, dtype=float), np.asarray(Abar, dtype=float)
+    j0 = j_integrals_for_law(Abar, law)[0]
+    return SteadyState("refined", np.full(Abar.shape, "ok"), Abar, abar_m, j0**2,
+                       contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_bar / fixation.nu0),
                        mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
 
 
@@ -222,10 +222,10 @@ def newton_at_frequency(
     converge (:func:`_newton`), the status ``not_converged`` with NaN numbers and the reason in ``message``.
     """
     try:
-        abar_m, abar = _newton(omega_bar, fixation, chi0, eta1, law, guess)
+        abar_m, Abar = _newton(omega_bar, fixation, chi0, eta1, law, guess)
     except NoRootError as error:
         return SteadyState.unsolved("refined", "not_converged", str(error))
-    return refined_steady_state(omega_bar, abar_m, abar, fixation, chi0, law)
+    return refined_steady_state(omega_bar, abar_m, Abar, fixation, chi0, law)
 
 
 def _newton(
@@ -255,39 +255,39 @@ def residual_at_frequency(
 
 
 def amplitude_residual_on_closure(
-    log_abar: Array, log_omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
+    log_Abar: Array, log_omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
     abar_m_of_j0: Callable[[Array], Array]
 ) -> Array:
     """Eq. (90) in logarithms (column 1 of :func:`residual`) along abar_m = abar_m_of_j0(J0(Abar)).
 
     Vectorised over ln Abar; the closure is Eq. (87) (:func:`abar_m_from_mean_balance`) or a_m = a_cr (Eq. 61).
     """
-    abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_abar), law)[0])
-    x = np.column_stack([np.full(len(log_abar), log_omega_bar), np.log(abar_m), log_abar])
+    abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_Abar), law)[0])
+    x = np.column_stack([np.full(len(log_Abar), log_omega_bar), np.log(abar_m), log_Abar])
     return residual(x, fixation, chi0, eta1, law)[:, 1]
 
 
 def _roots_by_scan(
-    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array,
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_Abar: Array,
     abar_m_of_j0: Callable[[Array], Array]
 ) -> list[tuple[float, float]]:
     """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)).
 
-    Sign changes on the grid ``log_abar`` polished by Brent's method. Roots closer than the grid
+    Sign changes on the grid ``log_Abar`` polished by Brent's method. Roots closer than the grid
     spacing can be missed.
     """
     g = partial(amplitude_residual_on_closure, log_omega_bar=math.log(omega_bar), fixation=fixation, chi0=chi0,
                 eta1=eta1, law=law, abar_m_of_j0=abar_m_of_j0)
-    values = g(log_abar)
+    values = g(log_Abar)
     roots = []
     for k in np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0):
-        z = brentq(lambda y: float(g(np.array([y]))[0]), log_abar[k], log_abar[k + 1], xtol=1e-14, rtol=1e-15)
+        z = brentq(lambda y: float(g(np.array([y]))[0]), log_Abar[k], log_Abar[k + 1], xtol=1e-14, rtol=1e-15)
         roots.append((float(abar_m_of_j0(j_integrals_for_law(np.array([math.exp(z)]), law)[0])[0]), math.exp(z)))
     return roots
 
 
 def solutions_by_scan(
-    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_Abar: Array
 ) -> SteadyState:
     """All solutions of Eqs. (87), (90) at one omega_bar with Abar in the scanned range: one record.
 
@@ -296,16 +296,16 @@ def solutions_by_scan(
     element per solution, by increasing Abar; without any, one element of status ``no_solution``.
     """
     closure = partial(abar_m_from_mean_balance, fixation=fixation, chi0=chi0)
-    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, closure)
+    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_Abar, closure)
     if not roots:
-        return SteadyState.unsolved("refined", "no_solution", _no_root(omega_bar, "Eqs. (87), (90)", log_abar),
+        return SteadyState.unsolved("refined", "no_solution", _no_root(omega_bar, "Eqs. (87), (90)", log_Abar),
                                     shape=(1,))
-    return refined_steady_state(omega_bar, [abar_m for abar_m, _ in roots], [abar for _, abar in roots], fixation,
+    return refined_steady_state(omega_bar, [abar_m for abar_m, _ in roots], [Abar for _, Abar in roots], fixation,
                                 chi0, law)
 
 
 def pulloff_by_scan(
-    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_Abar: Array
 ) -> Pulloff:
     """Refined pull-off of the compliantly fixed indenter: Eq. (90) at a_m = a_cr (Eq. 61), all roots.
 
@@ -314,17 +314,17 @@ def pulloff_by_scan(
     increasing Abar_cr, with P_cr/P_cr^JKR = J0(Abar_cr)^2 (Eq. 71) each (a_m = a_cr: ``abar_m`` is not
     solved for, NaN); without any root, one element of status ``no_solution``.
     """
-    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, pulloff_closure)
+    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_Abar, pulloff_closure)
     if not roots:
-        return Pulloff.unsolved("refined", "no_solution", _no_root(omega_bar, "Eq. (90) at a_m = a_cr", log_abar),
+        return Pulloff.unsolved("refined", "no_solution", _no_root(omega_bar, "Eq. (90) at a_m = a_cr", log_Abar),
                                 shape=(1,))
-    return stacked([pulloff_from_abar("refined", np.asarray(abar), law) for _, abar in roots])
+    return stacked([pulloff_from_abar("refined", np.asarray(Abar), law) for _, Abar in roots])
 
 
-def _no_root(omega_bar: float, equations: str, log_abar: Array) -> str:
-    """The message of a scan without a sign change (the grid ``log_abar`` in ln Abar, Eqs. 87, 90)."""
+def _no_root(omega_bar: float, equations: str, log_Abar: Array) -> str:
+    """The message of a scan without a sign change (the grid ``log_Abar`` in ln Abar, Eqs. 87, 90)."""
     return (f"{equations}: no root at omega_bar = {omega_bar:.6g} for Abar in "
-            f"[{math.exp(log_abar[0]):.3g}, {math.exp(log_abar[-1]):.3g}]")
+            f"[{math.exp(log_Abar[0]):.3g}, {math.exp(log_Abar[-1]):.3g}]")
 
 
 def _a_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
@@ -367,10 +367,10 @@ class ResponseCurve:
         if not states:
             return SteadyState.unsolved("refined", "no_solution", f"the traced curve does not reach omega_bar = "
                                         f"{omega_bar:.6g}", shape=(1,))
-        return stacked(sorted(states, key=_solutions_first_by_abar))
+        return stacked(sorted(states, key=_solutions_first_by_Abar))
 
 
-def _solutions_first_by_abar(state: SteadyState) -> tuple[bool, float]:
+def _solutions_first_by_Abar(state: SteadyState) -> tuple[bool, float]:
     """Sort key of the elements of a record: the solutions by increasing Abar, then the unsolved ones."""
     return not bool(state.ok), float(state.Abar)
 
@@ -432,7 +432,7 @@ def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateL
         return curve
     edge = hi if last[0] > hi else lo
     guess = (math.exp(last[1]), math.exp(last[2]))
-    abar_m, abar = _newton(math.exp(edge), fixation, chi0, eta1, law, guess)
+    abar_m, Abar = _newton(math.exp(edge), fixation, chi0, eta1, law, guess)
     points = curve.points.copy()
-    points[-1] = [edge, math.log(abar_m), math.log(abar)]
+    points[-1] = [edge, math.log(abar_m), math.log(Abar)]
     return Curve(points, curve.tangents, curve.residuals)

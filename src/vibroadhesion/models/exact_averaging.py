@@ -54,7 +54,7 @@ class MeanState(NamedTuple):
     deltabar0: Array  # (hhat - h0) R/a_o^2 that holds this abar_m: abar_m^2 - alpha sqrt(abar_m)
     mean_force: Array  # Phat_m = (4/3) abar_m^3 - 2 alpha abar_m^(3/2)
     alpha: Array  # mean sqrt(w/w0); w_eff/w0 = alpha^2
-    abar: Array  # internal variable omega A/v0
+    Abar: Array  # internal variable omega A/v0
 
 
 def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz) -> MeanState:
@@ -75,7 +75,7 @@ def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz
         abar_m**2 - cycle.alpha * root,
         (4.0 / 3.0) * abar_m**3 - 2.0 * cycle.alpha * abar_m * root,
         cycle.alpha,
-        cycle.abar,
+        cycle.Abar,
     )
 
 
@@ -119,12 +119,12 @@ def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, 
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
     try:
-        abar_m, abar, alpha = _nominal_point_contact_state(eta1, chi0, law)
+        abar_m, Abar, alpha = _nominal_point_contact_state(eta1, chi0, law)
     except NoRootError as error:  # includes NoSteadyStateError
         return SteadyState.unsolved("exact_averaging", "no_solution", str(error), shape=eta1.shape)
     return SteadyState(
-        "exact_averaging", np.full(eta1.shape, "ok"), abar, abar_m, alpha**2,
-        contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check),
+        "exact_averaging", np.full(eta1.shape, "ok"), Abar, abar_m, alpha**2,
+        contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_check),
         ((4.0 / 3.0 - 2.0) * abar_m**3) / -PHAT_JKR, np.zeros(eta1.shape),
     )
 
@@ -137,8 +137,8 @@ def _nominal_point_contact_state(eta1: Array, chi0: float, law: GentSchultz) -> 
     if np.any(moving):
         flat_abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 1.0)
     cycle = frozen_radius_cycle(etahat / np.sqrt(flat_abar_m), law)
-    abar_m, abar, alpha = (v.reshape(eta1.shape) for v in (flat_abar_m, cycle.abar, cycle.alpha))
-    return abar_m, abar, alpha
+    abar_m, Abar, alpha = (v.reshape(eta1.shape) for v in (flat_abar_m, cycle.Abar, cycle.alpha))
+    return abar_m, Abar, alpha
 
 
 # --- Quasi-static pull-off in the high-frequency limit -------------------------------------
@@ -168,7 +168,7 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
         return Pulloff.unsolved("exact_averaging", "no_solution", str(error), eta1.shape)
     shape = eta1.shape
     ratio = (cycle.alpha**2).reshape(shape)
-    return Pulloff.from_ratio("exact_averaging", "ok", ratio, Abar_cr=cycle.abar.reshape(shape),
+    return Pulloff.from_ratio("exact_averaging", "ok", ratio, Abar_cr=cycle.Abar.reshape(shape),
                               sqrt_w_eff_ratio=cycle.alpha.reshape(shape), w_eff_ratio=ratio,
                               abar_m=abar_m.reshape(shape))
 
@@ -218,9 +218,9 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
         state = _force_minimum_state(eta1, chi0, law)
     except NoRootError as error:  # includes NoSteadyStateError
         return Pulloff.unsolved("exact_averaging_force_minimum", "no_solution", str(error), eta1.shape)
-    abar_m, alpha, abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
+    abar_m, alpha, Abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.Abar,
                                                                      state.mean_force / PHAT_JKR))
-    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=abar, sqrt_w_eff_ratio=alpha,
+    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=Abar, sqrt_w_eff_ratio=alpha,
                               w_eff_ratio=alpha**2, abar_m=abar_m)
 
 

@@ -276,9 +276,9 @@ def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
     mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`).
     """
     abar_m = math.exp(z)
-    abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check)
-    j0 = float(j_integrals_for_law(abar, balance.law)[0])
-    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), abar, j0
+    Abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check)
+    j0 = float(j_integrals_for_law(Abar, balance.law)[0])
+    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), Abar, j0
 
 
 def balance_residual(z: float, balance: MeanBalance) -> float:
@@ -347,14 +347,14 @@ def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_che
     omega_check = inf), P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); ``stable`` as in
     :func:`steady_states`.
     """
-    _, abar, j0 = balance_state(math.log(abar_m), balance)
+    _, Abar, j0 = balance_state(math.log(abar_m), balance)
     return SteadyState(
         level="leading",
         status=np.asarray("ok"),
-        Abar=np.asarray(abar),
+        Abar=np.asarray(Abar),
         abar_m=np.asarray(abar_m),
         w_eff_ratio=np.asarray(j0**2),
-        A_over_am=np.asarray(float(contact_radius_amplitude_ratio(abar, abar_m, balance.chi0, omega_check))),
+        A_over_am=np.asarray(float(contact_radius_amplitude_ratio(Abar, abar_m, balance.chi0, omega_check))),
         pm_over_abs_pjkr=np.asarray(float(mean_force_over_pulloff(abar_m, j0))),
         deltabar_m=np.asarray(float(mean_indentation(abar_m, j0))),
         stable=np.asarray(stable),
