@@ -48,7 +48,7 @@ from vibroadhesion.models.leading_order import (
     scan_segments,
     steady_states,
 )
-from vibroadhesion.models.leading_pulloff import critical_abars, critical_log_excess, pulloff_leading
+from vibroadhesion.models.leading_pulloff import critical_internal_variables, critical_log_excess, pulloff_leading
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -432,7 +432,7 @@ def test_critical_log_excess_is_half_the_log_of_printed_eq_67(kappa: float, omeg
 @pytest.mark.parametrize(("kappa", "omega_bar", "zeta", "count"),
                          [(1e-3, 17.85, 0.01, 3), (1e-3, 17.85, 0.0, 3), (1e-2, 0.5, 0.05, 1), (1e-2, 3.0, 0.0, 3)])
 def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, omega_bar, zeta, count) -> None:
-    """Every root returned by critical_abars is a root of the printed Eqs. (67)-(69): the printed residual,
+    """Every root returned by critical_internal_variables is a root of the printed Eqs. (67)-(69): the printed residual,
     with 30-digit mpmath J's, changes sign between Abar (1 -+ 1e-9). Their number equals the sign changes of the
     printed residual on an independent grid (8001 points in ln Abar over [-40, 40], J's from the quadrature,
     which test_integrals checks against mpmath to 1e-12). Above the fixation's resonance a pair of roots
@@ -442,7 +442,7 @@ def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, om
     """
     n = 0.531
     fixation, omega_check = spring(kappa, omega_bar, zeta)
-    roots = critical_abars(ETA1, fixation, CHI0, GentSchultz(n), omega_check)
+    roots = critical_internal_variables(ETA1, fixation, CHI0, GentSchultz(n), omega_check)
     assert len(roots) == count and roots == sorted(roots)
     for Abar in roots:
         lo, hi = (printed_eq_67_log_excess(Abar * f, kappa, omega_bar, zeta, ETA1, j_integrals_mp(Abar * f, n)[:2])
@@ -491,7 +491,7 @@ def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check
     """
     law = GentSchultz(0.531)
     fixation, omega_check = spring(kappa, omega_bar, zeta)
-    leading = critical_abars(ETA1, fixation, CHI0, law, omega_check)
+    leading = critical_internal_variables(ETA1, fixation, CHI0, law, omega_check)
     roots = pulloff_by_scan(omega_bar, Fixation.compliant(kappa, zeta, nu0), CHI0, ETA1, law,
                             np.linspace(-40.0, 40.0, 4001))
     assert roots.level == "refined" and roots.found.all()

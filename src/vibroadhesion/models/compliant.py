@@ -56,7 +56,7 @@ from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState, stacked
 from vibroadhesion.models.leading_order import mean_force_over_pulloff, mean_indentation
-from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_abar
+from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.models.refined import displacement_harmonics
 from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
 from vibroadhesion.numerics.roots import NoRootError
@@ -318,7 +318,7 @@ def pulloff_by_scan(
     if not roots:
         return Pulloff.unsolved("refined", "no_solution", _no_root(omega_bar, "Eq. (90) at a_m = a_cr", log_Abar),
                                 shape=(1,))
-    return stacked([pulloff_from_abar("refined", np.asarray(Abar), law) for _, Abar in roots])
+    return stacked([pulloff_from_internal_variable("refined", np.asarray(Abar), law) for _, Abar in roots])
 
 
 def _no_root(omega_bar: float, equations: str, log_Abar: Array) -> str:

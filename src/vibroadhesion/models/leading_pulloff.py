@@ -26,7 +26,7 @@ Eqs. (67)–(69) as printed (they follow from Eqs. 43, 47–48, 50–51 and 62�
 k - m omega^2 = k (1 - omega_bar^2) and c omega/k = 2 zeta omega_bar; docs/errata.md, checked).
 As d -> infinity (kappa -> infinity, rigid) (IV) becomes Eq. (72).
 
-Roots of (IV) (:func:`critical_abars`). In z = ln Abar, g(z) = ln[(chi0^2/3) J0^(1/3) |Jc1|] -
+Roots of (IV) (:func:`critical_internal_variables`). In z = ln Abar, g(z) = ln[(chi0^2/3) J0^(1/3) |Jc1|] -
 ln[eta1 T(abar_cr)] with the transmissibility T(a) = |d|/|d + 2 c_o a| (Eq. I). g -> -infinity as
 Abar -> 0 (the left term -> -infinity, T(abar_cr(0)) = |d|/|d + chi0| > 0) and g -> +infinity as
 Abar -> infinity (J0 |Jc1| -> infinity while T J0^(2/3) stays bounded). Below the fixation's resonance
@@ -45,7 +45,7 @@ so Abar and a_cr -> infinity) and F > 0 as a_m -> infinity (T -> 0). Further roo
 towards the contact resonance, where the amplified oscillation makes F < 0 again; a withdrawal
 that starts attached below them reaches the smallest root first, and that root is reported as the
 pull-off. (A start above the contact resonance would meet the resonance first; this estimate does
-not cover it, and :func:`critical_abars` returns every root for a caller who needs the others.)
+not cover it, and :func:`critical_internal_variables` returns every root for a caller who needs the others.)
 
 
 Uniqueness of Eq. (72) (Gent–Schultz law). J0 and |Jc1| are strictly increasing in Abar
@@ -70,7 +70,7 @@ from vibroadhesion.models.leading_order import indentation_amplitude
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 
 
-def pulloff_from_abar(level: str, Abar_cr: NDArray[np.float64], law: RateLaw) -> Pulloff:
+def pulloff_from_internal_variable(level: str, Abar_cr: NDArray[np.float64], law: RateLaw) -> Pulloff:
     """The pull-off record at Abar_cr: J0 there (Eq. 28) and the ratio J0^2 (Eq. 71).
 
     A NaN Abar_cr (no root) gives the status ``no_solution`` and NaN numbers.
@@ -93,20 +93,20 @@ def pulloff_closure(j0: ArrayLike) -> NDArray[np.float64]:
     return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
 
 
-def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
+def critical_internal_variable_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
                           omega_check: float = math.inf) -> float:
     """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 (0 gives 0).
 
     Rigid fixation (the default): the unique root of Eq. (72). Any other fixation, with its d at
     ``omega_check`` = omega R/v0 (Eq. 105): the smallest root of Eqs. (67)–(69), (IV) of the module
-    docstring (:func:`critical_abars`), the first reached as the base is withdrawn (module docstring).
+    docstring (:func:`critical_internal_variables`), the first reached as the base is withdrawn (module docstring).
     """
     if eta1 < 0 or not np.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
     if eta1 == 0:
         return 0.0
     if not fixation.is_rigid:
-        return critical_abars(eta1, fixation, chi0, law, omega_check)[0]
+        return critical_internal_variables(eta1, fixation, chi0, law, omega_check)[0]
     log_target = np.log(3.0 * eta1 / chi0**2)
     return solve_log_increasing(
         lambda z: float(np.log(pulloff_lhs_leading(np.exp(z), law))) - log_target,
@@ -119,27 +119,29 @@ def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixati
     """Leading-order pull-off, vectorised over eta1 (Eqs. 67–72): the record of level ``leading``.
 
     Eqs. (71)–(72) for rigid fixation (the default), Eqs. (67)–(69) and (71) for any other, with its d
-    at ``omega_check`` (:func:`critical_abar_leading`). An amplitude without a root has the status
+    at ``omega_check`` (:func:`critical_internal_variable_leading`). An amplitude without a root has the status
     ``no_solution``.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    Abar = np.vectorize(lambda e: critical_abar_or_nan(e, chi0, law, fixation, omega_check), otypes=[float])(eta1)
-    return pulloff_from_abar("leading", Abar, law)
+    Abar = np.vectorize(lambda e: critical_internal_variable_or_nan(e, chi0, law, fixation, omega_check),
+                        otypes=[float])(eta1)
+    return pulloff_from_internal_variable("leading", Abar, law)
 
 
-def critical_abar_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation, omega_check: float) -> float:
-    """:func:`critical_abar_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
+def critical_internal_variable_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation,
+                                      omega_check: float) -> float:
+    """:func:`critical_internal_variable_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
     try:
-        return critical_abar_leading(eta1, chi0, law, fixation, omega_check)
+        return critical_internal_variable_leading(eta1, chi0, law, fixation, omega_check)
     except NoRootError:
         return math.nan
 
 
-#: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_abars`).
+#: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_internal_variables`).
 PULLOFF_SCAN = np.linspace(-40.0, 40.0, 1601)
 
 
-def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
+def critical_internal_variables(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
                    log_Abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
     """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending; d at ``omega_check``.
 

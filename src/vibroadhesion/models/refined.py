@@ -41,7 +41,7 @@ from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState
 from vibroadhesion.models.leading_order import mean_force_over_pulloff
-from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_abar
+from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.numerics.roots import solve_log_increasing
 
 Array = NDArray[np.float64]
@@ -98,17 +98,17 @@ def pulloff_lhs_refined(Abar: ArrayLike, law: RateLaw, chi0: float, omega_check:
     return rigid_amplitude_squared(Abar, law, chi0, omega_check, pulloff_closure)
 
 
-def critical_abar_refined(eta1: float, chi0: float, omega_check: float, law: RateLaw) -> float:
+def critical_internal_variable_refined(eta1: float, chi0: float, omega_check: float, law: RateLaw) -> float:
     """Root Abar_cr of Eq. (106) for one (eta1, omega_check); eta1 = 0 gives 0."""
     return solve_rigid_internal_variable(eta1, chi0, omega_check, law, pulloff_closure, "Eq. (106)")
 
 
 def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> Pulloff:
     """Refined pull-off (Eqs. 71, 106), vectorised and broadcast over eta1 and omega_check: level ``refined``."""
-    Abar = np.vectorize(lambda e, w: critical_abar_refined(e, chi0, w, law), otypes=[float])(
+    Abar = np.vectorize(lambda e, w: critical_internal_variable_refined(e, chi0, w, law), otypes=[float])(
         np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float)
     )
-    return pulloff_from_abar("refined", Abar, law)
+    return pulloff_from_internal_variable("refined", Abar, law)
 
 
 # --- Nominal point contact of a rigidly fixed indenter, Eqs. (122)–(123) -------------------
