@@ -33,7 +33,7 @@ from vibroadhesion.models.compliant import (
     residual,
     residual_linear,
     solutions_by_scan,
-    static_abar_m,
+    static_abar_0,
     trace_response_curve,
 )
 from vibroadhesion.models.leading_pulloff import pulloff_closure
@@ -162,7 +162,7 @@ def test_the_records_of_the_compliant_level_are_sorted_and_say_where_there_is_no
         assert record.level == "refined" and record.status.tolist() == ["no_solution"] and record.message
         assert np.isnan(record.abar_m).all()
     assert np.isnan(below.Abar).all() and np.isnan(no_pulloff.pulloff_ratio).all()
-    diverged = newton_at_frequency(2.0, FOLDING, CHI0, ETA1, LAW, (static_abar_m(FOLDING, CHI0), 1e-100))
+    diverged = newton_at_frequency(2.0, FOLDING, CHI0, ETA1, LAW, (static_abar_0(FOLDING, CHI0), 1e-100))
     assert diverged.status == "not_converged" and np.isnan(diverged.Abar) and "Newton" in diverged.message
 
 
@@ -179,14 +179,14 @@ def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the
         end = piece.points[-1]
         assert folded.a_over_am(end[None, :])[0] < NOTCH_FLOOR
         assert side * end[0] > 0 and abs(end[0]) < 1e-2
-        assert abs(math.exp(end[1]) / static_abar_m(FOLDING, CHI0) - 1) < 1e-6
+        assert abs(math.exp(end[1]) / static_abar_0(FOLDING, CHI0) - 1) < 1e-6
 
 
 def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -> None:
     """Just off omega_bar = 1 (1 +- 1e-9) Newton from the static state converges to Abar < 1e-12 and
     abar_m within 1e-9 of the static root of Eq. (82); the Fig. 5 table carries the exact point.
     """
-    static = static_abar_m(FOLDING, CHI0)
+    static = static_abar_0(FOLDING, CHI0)
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
         (abar_m, Abar), = solved(newton_at_frequency(omega_bar, FOLDING, CHI0, ETA1, LAW, (static, 1e-14)))
         assert Abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
@@ -227,7 +227,7 @@ def test_amplitude_residual_at_a_cr_tends_to_half_the_log_of_printed_eq_67(kappa
 def test_static_contact_radius_solves_eq_82() -> None:
     """Eq. (82) in a_0/R (not the a_o-scaled Eq. 87 the code uses), mu = 1e-4, kappa = 0.01, in mpmath: 1e-12."""
     p = Fixation.compliant(kappa=0.01, zeta=0.0, nu0=NU0, mu=1e-4)
-    r = mp.mpf(static_abar_m(p, CHI0)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
+    r = mp.mpf(static_abar_0(p, CHI0)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
     lhs = r**2 * (mp.mpf(4) / 3 * r + mp.mpf(p.kappa)) - mp.sqrt(2) * mp.mpf(CHI0) ** 1.5 / 3 * mp.sqrt(r) * (2 * r + mp.mpf(p.kappa))
     assert abs(float(lhs / mp.mpf(p.mu) - 1)) < 1e-12
 

@@ -82,13 +82,13 @@ def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi
 def mean_balance_excess(log_abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float) -> Array:
     """positive/negative - 1 of Eq. (87) (:func:`mean_balance_parts`) at abar_m = exp(``log_abar_m``).
 
-    Zero on the mean balance, increasing with abar_m (see :func:`static_abar_m`).
+    Zero on the mean balance, increasing with abar_m (see :func:`static_abar_0`).
     """
     positive, negative = mean_balance_parts(np.exp(log_abar_m), j0, fixation, chi0)
     return positive / negative - 1.0
 
 
-def static_abar_m(fixation: Fixation, chi0: float) -> float:
+def static_abar_0(fixation: Fixation, chi0: float) -> float:
     """Static contact radius a_0/a_o: Eq. (87) with J0 = 1, i.e. Eq. (82) (unique root, see below).
 
     Dividing both parts by abar^(3/2): positive/negative = (c1 abar^(3/2) + kappa abar^(1/2) - M abar^(-3/2))
@@ -173,7 +173,7 @@ def residual_linear(
 
 
 def abar_m_from_mean_balance(j0: ArrayLike, fixation: Fixation, chi0: float) -> Array:
-    """abar_m solving Eq. (87) for given J0(Abar), vectorised (unique root, see :func:`static_abar_m`).
+    """abar_m solving Eq. (87) for given J0(Abar), vectorised (unique root, see :func:`static_abar_0`).
 
     Bisection in ln abar_m on [ln J0^(2/3) - 1, ln J0^(2/3) + 1] (widened upwards while needed): at
     abar_m = lambda J0^(2/3) the ratio of the parts of Eq. (87) lies between (2/3) lambda^(3/2) and
