@@ -177,7 +177,7 @@ def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the
     lower, upper = folded.pieces
     for piece, side in ((lower, -1.0), (upper, 1.0)):
         end = piece.points[-1]
-        assert folded.a_over_am(end[None, :])[0] < NOTCH_FLOOR
+        assert folded.A_over_am(end[None, :])[0] < NOTCH_FLOOR
         assert side * end[0] > 0 and abs(end[0]) < 1e-2
         assert abs(math.exp(end[1]) / static_abar_0(FOLDING, CHI0) - 1) < 1e-6
 

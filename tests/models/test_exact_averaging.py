@@ -23,7 +23,8 @@ from conftest import C_O, CHI0, N_PUBLISHED, RADIUS
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius_ratio
+from vibroadhesion.core import groups
+from vibroadhesion.core.groups import contact_radius_ratio
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.exact_averaging import (
     mean_state,
@@ -386,7 +387,7 @@ def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
     state = mean_state(np.array([float(sol.abar_m)]), eta1, CHI0, law)
     assert abs(float(state.deltabar0[0])) < 1e-13 * float(sol.abar_m) ** 2
     assert abs(contact_radius_ratio(CHI0) / C_O - 1) < 1e-15
-    assert abs(float(amplitude_in_contact_units(eta1, CHI0)) / (eta1 / C_O**2) - 1) < 1e-15
+    assert abs(float(groups.etahat(eta1, CHI0)) / (eta1 / C_O**2) - 1) < 1e-15
 
 
 @pytest.mark.parametrize("p", [0.25, 1.883, 20.0])

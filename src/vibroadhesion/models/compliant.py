@@ -50,8 +50,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
+from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState, stacked
@@ -209,7 +209,7 @@ def refined_steady_state(omega_bar: float, abar_m: ArrayLike, Abar: ArrayLike, f
     abar_m, Abar = np.asarray(abar_m, dtype=float), np.asarray(Abar, dtype=float)
     j0 = j_integrals_for_law(Abar, law)[0]
     return SteadyState("refined", np.full(Abar.shape, "ok"), Abar, abar_m, j0**2,
-                       contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_bar / fixation.nu0),
+                       groups.A_over_am(Abar, abar_m, chi0, omega_bar / fixation.nu0),
                        mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
 
 
@@ -327,9 +327,9 @@ def _no_root(omega_bar: float, equations: str, log_Abar: Array) -> str:
             f"[{math.exp(log_Abar[0]):.3g}, {math.exp(log_Abar[-1]):.3g}]")
 
 
-def _a_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
+def _A_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
     """A/a_m at points x = (ln omega_bar, ln abar_m, ln Abar) (corrected Eq. 98, omega_check = omega_bar/nu0)."""
-    return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), chi0, np.exp(x[:, 0]) / fixation.nu0)
+    return groups.A_over_am(np.exp(x[:, 2]), np.exp(x[:, 1]), chi0, np.exp(x[:, 0]) / fixation.nu0)
 
 
 # --- The response curve, Fig. 5 --------------------------------------------------------------
@@ -345,9 +345,9 @@ class ResponseCurve:
     pieces: tuple[Curve, ...]  # points x = (ln omega_bar, ln abar_m, ln Abar) in trace order
     folds: Array  # (k, 3) fold points in x
 
-    def a_over_am(self, x: Array) -> Array:
+    def A_over_am(self, x: Array) -> Array:
         """A/a_m along points x (corrected Eq. 98)."""
-        return _a_over_am(x, self.fixation, self.chi0)
+        return _A_over_am(x, self.fixation, self.chi0)
 
     def count_at(self, omega_bar: float) -> int:
         """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
@@ -420,7 +420,7 @@ def _into_notch(x: Array, fixation: Fixation, chi0: float) -> bool:
     A branch approaching the anti-resonance omega_bar = 1, where Eq. (90) has the exact solution
     Abar = 0 for zeta = 0 (Appendix B).
     """
-    return _a_over_am(x[None, :], fixation, chi0)[0] < NOTCH_FLOOR
+    return _A_over_am(x[None, :], fixation, chi0)[0] < NOTCH_FLOOR
 
 
 def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,

@@ -36,7 +36,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import elementwise
 
-from vibroadhesion.core.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio
+from vibroadhesion.core import groups
+from vibroadhesion.core.groups import PHAT_JKR
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import Pulloff, SteadyState
 from vibroadhesion.models.frozen_radius import alpha_star, frozen_radius_cycle
@@ -65,7 +66,7 @@ def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz
     (for n <= 4), while a given deltabar0 may have two or none.
     """
     abar_m, etahat = np.broadcast_arrays(np.asarray(abar_m, dtype=float),
-                                         amplitude_in_contact_units(np.asarray(eta1, dtype=float), chi0))
+                                         groups.etahat(np.asarray(eta1, dtype=float), chi0))
     if np.any(~(abar_m > 0)) or np.any(~np.isfinite(abar_m)):
         raise ValueError("abar_m must be positive and finite")
     cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
@@ -124,14 +125,14 @@ def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, 
         return SteadyState.unsolved("exact_averaging", "no_solution", str(error), shape=eta1.shape)
     return SteadyState(
         "exact_averaging", np.full(eta1.shape, "ok"), Abar, abar_m, alpha**2,
-        contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_check),
+        groups.A_over_am(Abar, abar_m, chi0, omega_check),
         ((4.0 / 3.0 - 2.0) * abar_m**3) / -PHAT_JKR, np.zeros(eta1.shape),
     )
 
 
 def _nominal_point_contact_state(eta1: Array, chi0: float, law: GentSchultz) -> tuple[Array, Array, Array]:
     """(abar_m, Abar, alpha*) of the nominal point contact, alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2)."""
-    etahat = amplitude_in_contact_units(eta1, chi0).ravel()
+    etahat = groups.etahat(eta1, chi0).ravel()
     flat_abar_m = np.ones_like(etahat)
     moving = etahat > 0
     if np.any(moving):
@@ -157,7 +158,7 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
     every number NaN, the reason in ``message``: the exception becomes a status here, at the level boundary.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    etahat = amplitude_in_contact_units(eta1, chi0).ravel()
+    etahat = groups.etahat(eta1, chi0).ravel()
     abar_m = np.full_like(etahat, (9.0 / 16.0) ** (1.0 / 3.0))
     moving = etahat > 0
     try:
@@ -190,7 +191,7 @@ def _smallest_mean_force(z: Array, eta1: Array, chi0: float, law: GentSchultz) -
     k = np.argmin(force, axis=1)
     at_end = (k == 0) | (k == z.shape[1] - 1)
     if np.any(at_end):
-        etahat = amplitude_in_contact_units(eta1[:, 0], chi0)
+        etahat = groups.etahat(eta1[:, 0], chi0)
         raise NoRootError(f"mean force has no interior minimum on the scan for etahat = {etahat[at_end][0]:.6g}")
     return force, k
 
@@ -231,7 +232,7 @@ def _force_minimum_state(eta1: Array, chi0: float, law: GentSchultz) -> MeanStat
     :class:`NoRootError` when a minimum sits at an end of a scan.
     """
     column = eta1.reshape(-1, 1)
-    etahat = amplitude_in_contact_units(column, chi0)[:, 0]
+    etahat = groups.etahat(column, chi0)[:, 0]
     scale = np.maximum(1.0, np.sqrt(etahat))
     rows = np.arange(etahat.size)
     z = np.linspace(np.log(0.05 * scale), np.log(20.0 * scale), _SCAN_POINTS, axis=-1)

@@ -57,8 +57,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.core.groups import contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState, stacked
@@ -354,7 +355,7 @@ def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_che
         Abar=np.asarray(Abar),
         abar_m=np.asarray(abar_m),
         w_eff_ratio=np.asarray(j0**2),
-        A_over_am=np.asarray(float(contact_radius_amplitude_ratio(Abar, abar_m, balance.chi0, omega_check))),
+        A_over_am=np.asarray(float(groups.A_over_am(Abar, abar_m, balance.chi0, omega_check))),
         pm_over_abs_pjkr=np.asarray(float(mean_force_over_pulloff(abar_m, j0))),
         deltabar_m=np.asarray(float(mean_indentation(abar_m, j0))),
         stable=np.asarray(stable),

@@ -36,7 +36,7 @@ from dataclasses import replace
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio
+from vibroadhesion.core import groups
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState
@@ -133,7 +133,7 @@ def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, 
     w_eff_ratio = j0**2
     return SteadyState(
         "refined", np.full(Abar.shape, "ok"), Abar, abar_m, w_eff_ratio,
-        contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_check),
+        groups.A_over_am(Abar, abar_m, chi0, omega_check),
         mean_force_over_pulloff(abar_m, np.sqrt(w_eff_ratio)), np.zeros(Abar.shape),
     )
 
@@ -146,5 +146,5 @@ def leading_nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0:
     """
     eta1 = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))[0]
     limit = nominal_point_contact(eta1, math.inf, chi0, law)
-    A_over_am = contact_radius_amplitude_ratio(limit.Abar, limit.abar_m, chi0, omega_check)
+    A_over_am = groups.A_over_am(limit.Abar, limit.abar_m, chi0, omega_check)
     return replace(limit, level="leading", A_over_am=A_over_am)

@@ -25,7 +25,7 @@ def _fig5_rows(branch: Sequence[str], x: np.ndarray, curve: ResponseCurve) -> pd
     return pd.DataFrame({"chi0": curve.chi0, "eta1": curve.eta1, "nu0": p.nu0, "zeta": p.zeta, "kappa": p.kappa,
                          "mu": p.mu,
                          "branch": branch, "omega_bar": np.exp(x[:, 0]), "Abar": np.exp(x[:, 2]),
-                         "abar_m": np.exp(x[:, 1]), "A_over_am": curve.a_over_am(x)})[FIG5_COLUMNS]
+                         "abar_m": np.exp(x[:, 1]), "A_over_am": curve.A_over_am(x)})[FIG5_COLUMNS]
 
 
 def fig5_tables(
