@@ -115,7 +115,7 @@ def test_rigid_limit_equals_eqs_55_56_to_1e9(n: float, base_offset: float) -> No
     in Abar. The rigid fixation must agree with it to 1e-9, and kappa = 1e12 (omega_bar = 5, zeta = 0.05)
     with the rigid one to 1e-10: the O(1/kappa) terms are ~1e-12 (mu/kappa, 2 c_o abar_m/|d|). For base_offset >= 0 the root is
     unique (proof in steady_states' docstring); the tensile offset -0.2 also has one (no unstable branch
-    above abar_min, unlike the static case: vibration lifts deltabar_m near abar_m = 0). n = 0.05 (Abar ~ 1e35,
+    above abar_m_min, unlike the static case: vibration lifts deltabar_m near abar_m = 0). n = 0.05 (Abar ~ 1e35,
     slow in mpmath) and base_offset = 0 are covered by the nominal-point-contact test below.
     """
     law = GentSchultz(n)
@@ -601,7 +601,7 @@ def test_monotone_tail_start_and_criterion_follow_the_closed_forms() -> None:
 
 @pytest.mark.parametrize("setting", [RIGID, free(0.3, MU_SMALL), spring(0.1, 2.0, 0.05, MU_SMALL)])
 def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_tail(setting) -> None:
-    """The scan of F in ln abar_m starts at ln abar_min in steps of SCAN_STEP; for the free indenter it is split
+    """The scan of F in ln abar_m starts at ln abar_m_min in steps of SCAN_STEP; for the free indenter it is split
     at the pole of Eq. (43), abar_m = beta/(2 c_o) (closed form, c_o = a_o/R), with F < 0 at the nodes next to
     it on both sides; it ends at the first node of the grid (past the refinement towards the pole) where abar_m > abar_turn and abar_m^(3/2) >= (3/4) J0, J0 from
     30-digit mpmath at the node's Abar (relative 1e-12 as above, far from the switch at these nodes).
@@ -627,10 +627,10 @@ def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_ta
 
 
 @pytest.mark.parametrize(
-    "kwargs", [{"chi0": -1.0}, {"base_offset": math.inf}, {"abar_min": 0.0}, {"omega_check": 0.0}]
+    "kwargs", [{"chi0": -1.0}, {"base_offset": math.inf}, {"abar_m_min": 0.0}, {"omega_check": 0.0}]
 )
 def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
-    """chi0 > 0 (Eq. 64), a finite base offset, abar_min > 0 and omega_check > 0 (Eq. 105): ValueError; a rate
+    """chi0 > 0 (Eq. 64), a finite base offset, abar_m_min > 0 and omega_check > 0 (Eq. 105): ValueError; a rate
     law other than Gent-Schultz: TypeError (the proof that ends the scan needs it). mu >= 0 (Eq. 81) is the
     fixation's rule (tests/core/test_fixation.py).
     """

@@ -55,7 +55,7 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState, stacked
-from vibroadhesion.models.leading_order import mean_force_over_pulloff, mean_indentation
+from vibroadhesion.models.leading_order import mean_indentation, pm_over_abs_pjkr
 from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.models.refined import displacement_harmonics
 from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
@@ -210,7 +210,7 @@ def refined_steady_state(omega_bar: float, abar_m: ArrayLike, Abar: ArrayLike, f
     j0 = j_integrals_for_law(Abar, law)[0]
     return SteadyState("refined", np.full(Abar.shape, "ok"), Abar, abar_m, j0**2,
                        groups.A_over_am(Abar, abar_m, chi0, omega_bar / fixation.nu0),
-                       mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
+                       pm_over_abs_pjkr(abar_m, j0), mean_indentation(abar_m, j0))
 
 
 def newton_at_frequency(

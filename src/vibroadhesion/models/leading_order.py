@@ -78,7 +78,7 @@ def indentation_amplitude(abar_m: ArrayLike, jc1: ArrayLike, chi0: float) -> NDA
     return contact_radius_ratio(chi0) ** 2 * np.sqrt(np.asarray(abar_m, dtype=float)) * np.abs(jc1)
 
 
-def mean_force_over_pulloff(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
+def pm_over_abs_pjkr(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
     """P_m / |P_JKR| = (4/3) [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)], tensile negative (Eqs. 52, 71).
 
     From Eq. (52) with sqrt(8 pi w0 E* a_m^3) = 2 E* a_o^(3/2) a_m^(3/2)/R and
@@ -136,7 +136,7 @@ def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: fl
     if fixation.is_rigid:
         return deltabar_m - base_offset
     c_o = contact_radius_ratio(chi0)
-    force = 0.75 * float(mean_force_over_pulloff(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
+    force = 0.75 * float(pm_over_abs_pjkr(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
     load = load_group(fixation.mu, base_offset, fixation.kappa, chi0)
     return c_o * force + fixation.kappa * deltabar_m - load / c_o**2
 
@@ -159,9 +159,9 @@ def steady_states(
     *,
     base_offset: float = 0.0,
     omega_check: float = math.inf,
-    abar_min: float = 1e-4,
+    abar_m_min: float = 1e-4,
 ) -> SteadyState:
-    """All leading-order steady states with abar_m >= ``abar_min``, sorted by abar_m (Sec. 3.1).
+    """All leading-order steady states with abar_m >= ``abar_m_min``, sorted by abar_m (Sec. 3.1).
 
     Solves the amplitude equation (II) and the mean balance (III) (derivation in the module
     docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation (with
@@ -192,7 +192,7 @@ def steady_states(
     a condition that, x^(3/2)/J0 rising, persists. So F increases strictly beyond the first grid
     point past abar_turn where x^(3/2) >= (3/4) J0, and from there at most one root remains; it
     exists iff F < 0 there and is bracketed by doubling the step (:func:`monotone_tail_start`,
-    :func:`in_monotone_tail`). Below ``abar_min`` (a_m far
+    :func:`in_monotone_tail`). Below ``abar_m_min`` (a_m far
     below the JKR scale a_o, where with vibration Abar -> infinity) roots are not sought.
 
     Multiplicity and stability. In the static limit (J0 = 1) (III) is, in s = abar_m^(1/2),
@@ -205,22 +205,22 @@ def steady_states(
     criterion under a compliant machine, dP_m/da_m + k d delta_m/da_m > 0, which is dP_m/da_m > 0 under
     load control (kappa = 0) and d delta_m/da_m > 0 under displacement control (rigid).
     """
-    _check_steady_state_inputs(law, chi0, base_offset, abar_min, omega_check)
+    _check_steady_state_inputs(law, chi0, base_offset, abar_m_min, omega_check)
     balance = MeanBalance(eta1, fixation, chi0, law, omega_check, base_offset)
     what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
     try:
-        roots = mean_balance_roots(balance, abar_min, what)
+        roots = mean_balance_roots(balance, abar_m_min, what)
         if roots:
             return stacked([steady_state_at(abar_m, stable, balance, omega_check) for abar_m, stable in sorted(roots)])
     except NoRootError as error:
         return SteadyState.unsolved("leading", "no_solution", str(error), shape=(1,))
     return SteadyState.unsolved(
-        "leading", "no_solution", f"{what}: no steady state with abar_m >= {abar_min:.3g} (base offset = "
+        "leading", "no_solution", f"{what}: no steady state with abar_m >= {abar_m_min:.3g} (base offset = "
         f"{base_offset:.6g}); a tensile load beyond the vibroadhesive pull-off has none", shape=(1,))
 
 
-def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list[tuple[float, bool]]:
-    """Every root (abar_m, stable) >= ``abar_min`` of the mean balance (III) along (II) (Eqs. 43, 54), unsorted.
+def mean_balance_roots(balance: MeanBalance, abar_m_min: float, what: str) -> list[tuple[float, bool]]:
+    """Every root (abar_m, stable) >= ``abar_m_min`` of the mean balance (III) along (II) (Eqs. 43, 54), unsorted.
 
     The scan of :func:`steady_states` (method and end in its docstring): the segments of
     :func:`scan_segments`, each sign change and interior extremum polished, and the one root of the
@@ -230,8 +230,8 @@ def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list
     vibrating = balance.eta1 > 0 and fixation.d(omega_check) != 0  # else Abar = 0, J0 = 1 throughout
     resonance = fixation.contact_resonance(chi0, omega_check) if vibrating else None
     abar_turn = monotone_tail_start(fixation, chi0, omega_check) if vibrating else 0.0
-    z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
-    segments = scan_segments(balance, math.log(abar_min), z_res, abar_turn, what)
+    z_res = math.log(resonance) if resonance is not None and resonance > abar_m_min else None
+    segments = scan_segments(balance, math.log(abar_m_min), z_res, abar_turn, what)
     residual = partial(balance_residual, balance=balance)
     tail_root_bracket = bracket_increasing_root(residual, *segments[-1][-1], SCAN_STEP, what)
     roots = [root for nodes in segments for root in roots_on_nodes(residual, nodes, what)]
@@ -241,7 +241,7 @@ def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list
 
 
 def _check_steady_state_inputs(
-    law: GentSchultz, chi0: float, base_offset: float, abar_min: float, omega_check: float
+    law: GentSchultz, chi0: float, base_offset: float, abar_m_min: float, omega_check: float
 ) -> None:
     """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 105); the fixation checks itself.
 
@@ -253,8 +253,8 @@ def _check_steady_state_inputs(
         raise ValueError(f"chi0 must be a positive number, got {chi0!r}")
     if not math.isfinite(base_offset):
         raise ValueError(f"need a finite base offset, got base_offset = {base_offset!r}")
-    if not (math.isfinite(abar_min) and abar_min > 0):
-        raise ValueError(f"abar_min must be a positive number, got {abar_min!r}")
+    if not (math.isfinite(abar_m_min) and abar_m_min > 0):
+        raise ValueError(f"abar_m_min must be a positive number, got {abar_m_min!r}")
     if not omega_check > 0:
         raise ValueError(f"omega_check must be positive, got {omega_check!r}")
 
@@ -356,7 +356,7 @@ def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_che
         abar_m=np.asarray(abar_m),
         w_eff_ratio=np.asarray(j0**2),
         A_over_am=np.asarray(float(groups.A_over_am(Abar, abar_m, balance.chi0, omega_check))),
-        pm_over_abs_pjkr=np.asarray(float(mean_force_over_pulloff(abar_m, j0))),
+        pm_over_abs_pjkr=np.asarray(float(pm_over_abs_pjkr(abar_m, j0))),
         deltabar_m=np.asarray(float(mean_indentation(abar_m, j0))),
         stable=np.asarray(stable),
     )

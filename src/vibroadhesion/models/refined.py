@@ -40,7 +40,7 @@ from vibroadhesion.core import groups
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState
-from vibroadhesion.models.leading_order import mean_force_over_pulloff
+from vibroadhesion.models.leading_order import pm_over_abs_pjkr
 from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.numerics.roots import solve_log_increasing
 
@@ -134,7 +134,7 @@ def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, 
     return SteadyState(
         "refined", np.full(Abar.shape, "ok"), Abar, abar_m, w_eff_ratio,
         groups.A_over_am(Abar, abar_m, chi0, omega_check),
-        mean_force_over_pulloff(abar_m, np.sqrt(w_eff_ratio)), np.zeros(Abar.shape),
+        pm_over_abs_pjkr(abar_m, np.sqrt(w_eff_ratio)), np.zeros(Abar.shape),
     )
 
 
