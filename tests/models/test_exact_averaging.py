@@ -333,7 +333,7 @@ def test_force_minimum_equals_brent_minimisation_of_the_mean_force(n: float) -> 
     fast = pulloff_at_force_minimum(eta1, CHI0, law)
     for i, (e, eh) in enumerate(zip(eta1, etahat)):
         m = max(1.0, math.sqrt(eh))
-        opt = minimize_scalar(lambda z: float(mean_state(math.exp(z), e, CHI0, law).mean_force),
+        opt = minimize_scalar(lambda z: float(mean_state(math.exp(z), e, CHI0, law).phat_m),
                               bounds=(math.log(0.05 * m), math.log(20 * m)), method="bounded", options={"xatol": 1e-12})
         assert abs(float(fast.pulloff_ratio[i]) / (opt.fun / -0.75) - 1) < 1e-8
         assert abs(float(fast.abar_m[i]) / math.exp(opt.x) - 1) < 1e-4
@@ -353,7 +353,7 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
         assert abs(float(first.abar_m) ** 1.5 / (0.75 * float(first.sqrt_w_eff_ratio)) - 1) < 1e-13
         assert abs(float(first.pulloff_ratio) / float(first.sqrt_w_eff_ratio) ** 2 - 1) < 1e-14
         assert float(second.pulloff_ratio) >= float(first.pulloff_ratio)
-        around = mean_state(float(second.abar_m) * np.array([1 - 1e-3, 1.0, 1 + 1e-3]), eta1, CHI0, law).mean_force
+        around = mean_state(float(second.abar_m) * np.array([1 - 1e-3, 1.0, 1 + 1e-3]), eta1, CHI0, law).phat_m
         assert around[1] < around[0] and around[1] < around[2]
         assert abs(float(around[1]) / -0.75 / float(second.pulloff_ratio) - 1) < 1e-14
     tiny = 1e-4 * C_O**2
@@ -378,14 +378,14 @@ def test_pulloff_without_a_drift_free_cycle_is_the_status_no_solution(pulloff) -
 
 
 def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
-    """deltabar0(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
+    """base_offset(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
     (the defining equation of Sec. 3.5.4), to 1e-13; the scale helpers match their definitions.
     """
     law = GentSchultz(N_PUBLISHED)
     eta1 = 60e-6 / RADIUS
     sol = nominal_point_contact(eta1, 1e6, CHI0, law)
     state = mean_state(np.array([float(sol.abar_m)]), eta1, CHI0, law)
-    assert abs(float(state.deltabar0[0])) < 1e-13 * float(sol.abar_m) ** 2
+    assert abs(float(state.base_offset[0])) < 1e-13 * float(sol.abar_m) ** 2
     assert abs(contact_radius_ratio(CHI0) / C_O - 1) < 1e-15
     assert abs(float(groups.etahat(eta1, CHI0)) / (eta1 / C_O**2) - 1) < 1e-15
 

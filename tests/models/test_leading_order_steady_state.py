@@ -570,7 +570,7 @@ def test_balance_state_solves_printed_eq_43_and_returns_the_printed_eq_87_residu
 
 def test_balance_state_for_rigid_fixation_is_eq_55_and_eq_56() -> None:
     """Rigid fixation: Abar solves Eq. (55), c_o^2 abar_m^(1/2) |Jc1(Abar)| = eta1 (a_o/R = c_o, Eq. 86), and F is
-    Eq. (56) as a residual, deltabar_m - deltabar_base = abar_m^2 - J0 abar_m^(1/2) - base_offset; 30-digit J's,
+    Eq. (56) as a residual, deltabar_m - base_offset = abar_m^2 - J0 abar_m^(1/2) - base_offset; 30-digit J's,
     tolerance 1e-12 as above.
     """
     n, base_offset = 4.0, 0.2
@@ -646,7 +646,7 @@ def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
 
 
 def test_tensile_load_beyond_pulloff_has_no_solution() -> None:
-    """No steady state for a base pulled far from the indenter (rigid: deltabar_base = -10 is below
+    """No steady state for a base pulled far from the indenter (rigid: base_offset = -10 is below
     min deltabar_m; compliant: the same offset): one element of status no_solution, every number NaN,
     the reason in the message -- not a number.
     """

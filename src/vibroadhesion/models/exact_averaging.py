@@ -6,7 +6,7 @@ effective work of adhesion is the mean of s squared, exactly, and at a mean radi
 (beta = etahat/sqrt(abar_m))
 
     w_eff/w0 = alpha*^2,   Phat_m = mean Phat = (4/3) abar_m^3 - 2 alpha* abar_m^(3/2),
-    deltabar0 = abar_m^2 - alpha* sqrt(abar_m).
+    base_offset = abar_m^2 - alpha* sqrt(abar_m).
 
 Relation to the paper's first-harmonic (J-integral) model, Eqs. (25)–(29), (47), (49), (55). Its
 leading order for rigid fixation imposes the same two conditions on s: the mean of s is abar_m^(3/2)
@@ -52,8 +52,8 @@ class MeanState(NamedTuple):
     """High-frequency mean state at a given abar_m (rigid fixation), Eqs. (16)–(18) exact."""
 
     abar_m: Array
-    deltabar0: Array  # (hhat - h0) R/a_o^2 that holds this abar_m: abar_m^2 - alpha sqrt(abar_m)
-    mean_force: Array  # Phat_m = (4/3) abar_m^3 - 2 alpha abar_m^(3/2)
+    base_offset: Array  # (hhat - h0) R/a_o^2 that holds this abar_m: abar_m^2 - alpha sqrt(abar_m)
+    phat_m: Array  # Phat_m = (4/3) abar_m^3 - 2 alpha abar_m^(3/2)
     alpha: Array  # mean sqrt(w/w0); w_eff/w0 = alpha^2
     Abar: Array  # internal variable omega A/v0
 
@@ -62,8 +62,8 @@ def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz
     """Mean state at given abar_m for base amplitude eta1 = h1/R: beta = etahat/sqrt(abar_m), alpha = alpha*(beta).
 
     ``abar_m`` and ``eta1`` broadcast against each other. Parametrising by abar_m (instead of
-    deltabar0) makes a quasi-static sweep of h0 explicit: every abar_m > 0 has exactly one state
-    (for n <= 4), while a given deltabar0 may have two or none.
+    base_offset) makes a quasi-static sweep of h0 explicit: every abar_m > 0 has exactly one state
+    (for n <= 4), while a given base_offset may have two or none.
     """
     abar_m, etahat = np.broadcast_arrays(np.asarray(abar_m, dtype=float),
                                          groups.etahat(np.asarray(eta1, dtype=float), chi0))
@@ -102,7 +102,7 @@ def _radius_where_alpha_is(etahat: Array, law: GentSchultz, c: float) -> Array:
 def _log_alpha_excess(u: Array, etahat: Array, law: GentSchultz, c: float) -> Array:
     """ln alpha*(etahat/u) - ln(c u^3), u = sqrt(abar_m) (Eq. * of :mod:`vibroadhesion.models.frozen_radius`).
 
-    Zero where the drift-free cycle meets the closure abar_m^(3/2) = alpha*/c (deltabar0 = 0,
+    Zero where the drift-free cycle meets the closure abar_m^(3/2) = alpha*/c (base_offset = 0,
     Eqs. 99, 123, for c = 1; a_m = a_cr, Eqs. 60–61, for c = 4/3).
     """
     return np.log(alpha_star(etahat / u, law)) - np.log(c * u**3)
@@ -111,11 +111,11 @@ def _log_alpha_excess(u: Array, etahat: Array, law: GentSchultz, c: float) -> Ar
 def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: GentSchultz) -> SteadyState:
     """Exact high-frequency nominal point contact (Sec. 3.5.4), broadcast over eta1 and omega_check.
 
-    The record of level ``exact_averaging``: deltabar0 = 0 gives alpha = abar_m^(3/2), so abar_m solves
+    The record of level ``exact_averaging``: base_offset = 0 gives alpha = abar_m^(3/2), so abar_m solves
     alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2) (unique root, see :func:`_radius_where_alpha_is`);
     Abar is the exact half peak-to-peak of the contact-radius oscillation, w_eff/w0 = alpha*^2,
     A/a_m = Abar/(omega_check c_o abar_m), P_m/|P_JKR| = Phat_m/(3/4) with Phat_m = (4/3 - 2) abar_m^3
-    (negative: tensile) and deltabar_m = deltabar0 = 0. omega_check enters A/a_m only. Where the root
+    (negative: tensile) and deltabar_m = base_offset = 0. omega_check enters A/a_m only. Where the root
     search fails the status is ``no_solution`` (every number NaN).
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
@@ -187,7 +187,7 @@ def _smallest_mean_force(z: Array, eta1: Array, chi0: float, law: GentSchultz) -
     Phat_m = (4/3) abar_m^3 - 2 alpha* abar_m^(3/2) (Eqs. 16–18, :func:`mean_state`). Raises
     :class:`NoRootError` when the smallest value of a row sits at an end of its scan.
     """
-    force = mean_state(np.exp(z), eta1, chi0, law).mean_force
+    force = mean_state(np.exp(z), eta1, chi0, law).phat_m
     k = np.argmin(force, axis=1)
     at_end = (k == 0) | (k == z.shape[1] - 1)
     if np.any(at_end):
@@ -220,7 +220,7 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
     except NoRootError as error:  # includes NoSteadyStateError
         return Pulloff.unsolved("exact_averaging_force_minimum", "no_solution", str(error), eta1.shape)
     abar_m, alpha, Abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.Abar,
-                                                                     state.mean_force / PHAT_JKR))
+                                                                     state.phat_m / PHAT_JKR))
     return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=Abar, sqrt_w_eff_ratio=alpha,
                               w_eff_ratio=alpha**2, abar_m=abar_m)
 

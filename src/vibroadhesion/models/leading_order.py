@@ -39,12 +39,12 @@ Mean balance. Eq. (15) times k, k (hhat - h0) + m g = P_m + k delta_m, with P_m,
 Eqs. (52)–(53). Divided by E* R^2 c_o^2, using P_m/(E* R^2) = c_o^3 [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)]
 and R delta_m/a_o^2 = abar_m^2 - J0 abar_m^(1/2) =: deltabar_m (Eq. 86):
 
-    c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] + kappa deltabar_m = mu/c_o^2 + kappa deltabar_base,   (III)
+    c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] + kappa deltabar_m = mu/c_o^2 + kappa base_offset,   (III)
 
-with deltabar_base = (hhat - h0) R/a_o^2; the load group of the right-hand side, times c_o^2,
+with base_offset = (hhat - h0) R/a_o^2; the load group of the right-hand side, times c_o^2,
 is lambda = mu + kappa (hhat - h0)/R. With h0 = hhat, (III) is Eq. (87) term by term; with J0 = 1
 and a_m/R = c_o abar_m it is Eq. (82). Limits: kappa -> inf (d -> inf) gives Eq. (55) from (II)
-and deltabar_m = deltabar_base, Eq. (56); kappa = 0 with d = -m omega^2/(E* R) gives Eq. (57)–(58)
+and deltabar_m = base_offset, Eq. (56); kappa = 0 with d = -m omega^2/(E* R) gives Eq. (57)–(58)
 from (II) and P_m = m g, Eq. (59).
 """
 
@@ -127,7 +127,7 @@ def internal_variable(
 
 
 def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: float, base_offset: float) -> float:
-    """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - deltabar_base (Eq. 56).
+    """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - base_offset (Eq. 56).
 
     ``base_offset`` = (hhat - h0) R / a_o^2 (positive: base pushed towards the indenter); for a
     rigid fixation it is the imposed mean indentation. The weight mu is the fixation's (Eq. 81).
@@ -142,7 +142,7 @@ def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: fl
 
 
 def load_group(mu: float, base_offset: float, kappa: float, chi0: float) -> float:
-    """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 deltabar_base: right-hand side of (III) times c_o^2."""
+    """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 base_offset: right-hand side of (III) times c_o^2."""
     return mu + kappa * contact_radius_ratio(chi0) ** 2 * base_offset
 
 
