@@ -13,16 +13,16 @@ a_m/R = c_o abar_m, c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, dividing by c_o^2 and u
 Harmonic balance, Eq. (90) with Eqs. (91)–(92):
 
     xi_c^2 + xi_s^2 = eta1^2 [(1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2],
-    xi_c = (1 - omega_bar^2) delta_c + 2 zeta omega_bar delta_s + P_c,
-    xi_s = (1 - omega_bar^2) delta_s - 2 zeta omega_bar delta_c + P_s,
+    xi_c = (1 - omega_bar^2) delta_check_c + 2 zeta omega_bar delta_check_s + p_check_c,
+    xi_s = (1 - omega_bar^2) delta_check_s - 2 zeta omega_bar delta_check_c + p_check_s,
 
 with the refined coefficients divided by R (delta) and by kR (P), Eqs. (93)–(96); omega_check =
 omega_bar/nu0 (Eq. 105), so nu0/omega_bar = 1/omega_check:
 
-    delta_c = -(2^(2/3)/3^(4/3)) chi0^2 abar_m^(1/2) Jc1                                   (93)
-    delta_s = (2^(4/3)/3^(2/3)) chi0 (nu0/omega_bar) Abar abar_m (1 - J1/(4 abar_m^(3/2)))  (94)
-    P_c     = -(4 chi0^3/(9 kappa)) abar_m^(3/2) Jc1                                       (95)
-    P_s     = (2^(8/3)/3^(4/3)) chi0^2 (nu0/(kappa omega_bar)) Abar abar_m^2 (1 - 3 J1/(4 abar_m^(3/2)))  (96)
+    delta_check_c = -(2^(2/3)/3^(4/3)) chi0^2 abar_m^(1/2) Jc1                                   (93)
+    delta_check_s = (2^(4/3)/3^(2/3)) chi0 (nu0/omega_bar) Abar abar_m (1 - J1/(4 abar_m^(3/2)))  (94)
+    p_check_c     = -(4 chi0^3/(9 kappa)) abar_m^(3/2) Jc1                                       (95)
+    p_check_s     = (2^(8/3)/3^(4/3)) chi0^2 (nu0/(kappa omega_bar)) Abar abar_m^2 (1 - 3 J1/(4 abar_m^(3/2)))  (96)
 
 (re-derived from Eqs. 32–35 in docs/errata.md; Eq. 96 prints sigma_bar for abar_m). The
 contact-radius amplitude is A/a_m = 3^(2/3) nu0 Abar / (2^(1/3) chi0 abar_m omega_bar), the
@@ -102,17 +102,17 @@ def static_abar_0(fixation: Fixation, chi0: float) -> float:
 def harmonic_coefficients(
     omega_bar: ArrayLike, abar_m: ArrayLike, Abar: ArrayLike, fixation: Fixation, chi0: float, law: RateLaw
 ) -> tuple[Array, Array, Array, Array, Array]:
-    """(J0, delta_c, delta_s, P_c, P_s) of Eqs. (93)–(96), broadcast over the inputs."""
+    """(J0, delta_check_c, delta_check_s, p_check_c, p_check_s) of Eqs. (93)–(96), broadcast over the inputs."""
     omega_bar, abar_m, Abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, Abar)))
     j0, jc1, j1 = j_integrals_for_law(Abar.ravel(), law)
     j0, jc1, j1 = (v.reshape(Abar.shape) for v in (j0, jc1, j1))
-    delta_c, delta_s = displacement_harmonics(Abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
-    p_c = -(4.0 * chi0**3 / (9.0 * fixation.kappa)) * abar_m**1.5 * jc1
+    delta_check_c, delta_check_s = displacement_harmonics(Abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
+    p_check_c = -(4.0 * chi0**3 / (9.0 * fixation.kappa)) * abar_m**1.5 * jc1
     kappa, nu0 = fixation.kappa, fixation.nu0
-    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * Abar * abar_m**2 * (
+    p_check_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * Abar * abar_m**2 * (
         1.0 - 3.0 * j1 / (4.0 * abar_m**1.5)
     )
-    return j0, delta_c, delta_s, p_c, p_s
+    return j0, delta_check_c, delta_check_s, p_check_c, p_check_s
 
 
 def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
@@ -126,14 +126,14 @@ def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
     return np.hypot(np.expm1(2.0 * s), 2.0 * zeta * np.exp(s))
 
 
-def amplitude_log_residual(log_omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
-                           zeta: float, eta1: float) -> Array:
+def amplitude_log_residual(log_omega_bar: Array, delta_check_c: Array, delta_check_s: Array, p_check_c: Array,
+                           p_check_s: Array, zeta: float, eta1: float) -> Array:
     """Eq. (90) in logarithms, ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
 
     From the harmonic coefficients of any model level (Eqs. 93-96 here, Eqs. 125-126 in
     exact_harmonic_balance).
     """
-    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_c, delta_s, p_c, p_s, zeta)
+    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_check_c, delta_check_s, p_check_c, p_check_s, zeta)
     return np.log(np.hypot(xi_c, xi_s)) - math.log(eta1) - np.log(forcing_modulus(log_omega_bar, zeta))
 
 
@@ -144,18 +144,19 @@ def residual(x: ArrayLike, fixation: Fixation, chi0: float, eta1: float, law: Ra
     """
     x = np.atleast_2d(np.asarray(x, dtype=float))
     omega_bar, abar_m, Abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation, chi0, law)
-    amplitude = amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, fixation.zeta, eta1)
+    j0, delta_check_c, delta_check_s, p_check_c, p_check_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation,
+                                                                                   chi0, law)
+    amplitude = amplitude_log_residual(x[:, 0], delta_check_c, delta_check_s, p_check_c, p_check_s, fixation.zeta, eta1)
     return np.stack([mean_balance_excess(x[:, 1], j0, fixation, chi0), amplitude], axis=1)
 
 
-def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
-                    zeta: float) -> tuple[Array, Array]:
+def xi_coefficients(log_omega_bar: ArrayLike, delta_check_c: Array, delta_check_s: Array, p_check_c: Array,
+                    p_check_s: Array, zeta: float) -> tuple[Array, Array]:
     """xi_c, xi_s of Eqs. (91)-(92) from the harmonic coefficients (any model level that provides them)."""
     log_omega_bar = np.asarray(log_omega_bar, dtype=float)
     omega_bar, stiffness = np.exp(log_omega_bar), -np.expm1(2.0 * log_omega_bar)  # stiffness = 1 - omega_bar^2
-    return (stiffness * delta_c + 2.0 * zeta * omega_bar * delta_s + p_c,
-            stiffness * delta_s - 2.0 * zeta * omega_bar * delta_c + p_s)
+    return (stiffness * delta_check_c + 2.0 * zeta * omega_bar * delta_check_s + p_check_c,
+            stiffness * delta_check_s - 2.0 * zeta * omega_bar * delta_check_c + p_check_s)
 
 
 def residual_linear(
@@ -165,9 +166,10 @@ def residual_linear(
 
     Returns ((positive - negative)/negative, (xi_c^2 + xi_s^2 - rhs)/rhs) of Eqs. (87) and (90).
     """
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation, chi0, law)
+    j0, delta_check_c, delta_check_s, p_check_c, p_check_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation,
+                                                                                   chi0, law)
     positive, negative = mean_balance_parts(abar_m, j0, fixation, chi0)
-    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_c, delta_s, p_c, p_s, fixation.zeta)
+    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_check_c, delta_check_s, p_check_c, p_check_s, fixation.zeta)
     rhs = (eta1 * forcing_modulus(math.log(omega_bar), fixation.zeta)) ** 2
     return float((positive - negative) / negative), float((xi_c**2 + xi_s**2 - rhs) / rhs)
 
