@@ -168,9 +168,9 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
     except NoRootError as error:  # includes NoSteadyStateError
         return Pulloff.unsolved("exact_averaging", "no_solution", str(error), eta1.shape)
     shape = eta1.shape
-    ratio = (cycle.alpha**2).reshape(shape)
-    return Pulloff.from_ratio("exact_averaging", "ok", ratio, Abar_cr=cycle.Abar.reshape(shape),
-                              sqrt_w_eff_ratio=cycle.alpha.reshape(shape), w_eff_ratio=ratio,
+    pulloff_ratio = (cycle.alpha**2).reshape(shape)
+    return Pulloff.from_ratio("exact_averaging", "ok", pulloff_ratio, Abar_cr=cycle.Abar.reshape(shape),
+                              sqrt_w_eff_ratio=cycle.alpha.reshape(shape), w_eff_ratio=pulloff_ratio,
                               abar_m=abar_m.reshape(shape))
 
 
@@ -219,10 +219,10 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
         state = _force_minimum_state(eta1, chi0, law)
     except NoRootError as error:  # includes NoSteadyStateError
         return Pulloff.unsolved("exact_averaging_force_minimum", "no_solution", str(error), eta1.shape)
-    abar_m, alpha, Abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.Abar,
-                                                                     state.phat_m / PHAT_JKR))
-    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=Abar, sqrt_w_eff_ratio=alpha,
-                              w_eff_ratio=alpha**2, abar_m=abar_m)
+    abar_m, alpha, Abar, pulloff_ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.Abar,
+                                                                              state.phat_m / PHAT_JKR))
+    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", pulloff_ratio, Abar_cr=Abar,
+                              sqrt_w_eff_ratio=alpha, w_eff_ratio=alpha**2, abar_m=abar_m)
 
 
 def _force_minimum_state(eta1: Array, chi0: float, law: GentSchultz) -> MeanState:

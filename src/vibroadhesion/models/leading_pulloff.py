@@ -77,9 +77,9 @@ def pulloff_from_internal_variable(level: str, Abar_cr: NDArray[np.float64], law
     """
     found = ~np.isnan(Abar_cr)
     j0 = np.where(found, j_integrals_for_law(np.where(found, Abar_cr, 0.0), law)[0], np.nan)
-    ratio = j0**2
-    return Pulloff.from_ratio(level, np.where(found, "ok", "no_solution"), ratio, Abar_cr=Abar_cr,
-                              sqrt_w_eff_ratio=j0, w_eff_ratio=ratio)
+    pulloff_ratio = j0**2
+    return Pulloff.from_ratio(level, np.where(found, "ok", "no_solution"), pulloff_ratio, Abar_cr=Abar_cr,
+                              sqrt_w_eff_ratio=j0, w_eff_ratio=pulloff_ratio)
 
 
 def pulloff_lhs_leading(Abar: ArrayLike, law: RateLaw) -> NDArray[np.float64]:
