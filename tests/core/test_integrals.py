@@ -26,8 +26,8 @@ from vibroadhesion.core.integrals import (
     j_integrals,
     j_integrals_for_law,
     j_integrals_general,
-    j_integrals_large_abar,
-    j_integrals_small_abar,
+    j_integrals_large_Abar,
+    j_integrals_small_Abar,
 )
 from vibroadhesion.core.ratelaw import GentSchultz
 
@@ -234,7 +234,7 @@ def _sin2_cos_power_mp(p: float) -> mp.mpf:
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
-def test_large_abar_constants_match_mpmath_quad_of_cos_powers(n: float) -> None:
+def test_large_Abar_constants_match_mpmath_quad_of_cos_powers(n: float) -> None:
     """Reference: mpmath quad of int_0^{pi/2} cos^{n/2}, cos^{n/2+1}, sin^2 cos^{n/2} (30 digits); 1e-14 relative.
 
     Asymptotes (only the opening half counts, sqrt(1+u) ~ u^{1/2}): J0 ~ A^{n/2}/pi int cos^{n/2},
@@ -243,12 +243,12 @@ def test_large_abar_constants_match_mpmath_quad_of_cos_powers(n: float) -> None:
     with mp.workdps(30):
         p = mp.mpf(n) / 2
         expected = (_cos_power_mp(p) / mp.pi, -2 * _cos_power_mp(p + 1) / mp.pi, 2 * _sin2_cos_power_mp(p) / mp.pi)
-    got = j_integrals_large_abar(1.0, n)
+    got = j_integrals_large_Abar(1.0, n)
     for g, e in zip(got, expected):
         assert abs(float(g) / float(e) - 1) < 1e-14, (float(g), float(e))
 
 
-def _large_abar_asymptotes_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+def _large_Abar_asymptotes_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
     """The leading large-Abar asymptotes evaluated in mpmath (constants by quad of the cos powers)."""
     p = mp.mpf(n) / 2
     scale = mp.mpf(Abar) ** p
@@ -257,7 +257,7 @@ def _large_abar_asymptotes_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
-def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
+def test_large_Abar_remainders_within_rigorous_bounds(n: float) -> None:
     """Closed-form bounds: 0 < J0 - J0~ < 1, 0 < Jc1 - Jc1~ < 1/pi, 0 < J1 - J1~ < 1 for every Abar > 0.
 
     (The remainder integrands are 1/sqrt(1+u) on the closing half and sqrt(1+u) - sqrt(u) on the
@@ -271,13 +271,13 @@ def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
     with mp.workdps(30):
         for a in (1.0, 1e3, 1e6, 1e12):
             ref = j_integrals_mp(a, n)
-            asym = _large_abar_asymptotes_mp(a, n)
+            asym = _large_Abar_asymptotes_mp(a, n)
             for k in range(3):
                 rem = ref[k] - asym[k]
                 assert 0 < rem < bounds[k], (a, k, rem)
     Abar = np.logspace(0, 12, 241)
     exact = j_integrals(Abar, n)
-    asym = j_integrals_large_abar(Abar, n)
+    asym = j_integrals_large_Abar(Abar, n)
     for k in range(3):
         rem = exact[k] - asym[k]
         slack = 1e-13 * np.abs(exact[k])
@@ -285,7 +285,7 @@ def test_large_abar_remainders_within_rigorous_bounds(n: float) -> None:
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
-def test_large_abar_asymptote_relative_error_vanishes(n: float) -> None:
+def test_large_Abar_asymptote_relative_error_vanishes(n: float) -> None:
     """Reference: 30-digit mpmath values. Relative error of the asymptote decreases with Abar
     (it is O(Abar^{-n/2}) by the bounds above) until it reaches double rounding (1e-15), and is
     < 1e-3 at Abar = 1e12 for n >= 1.
@@ -294,7 +294,7 @@ def test_large_abar_asymptote_relative_error_vanishes(n: float) -> None:
     rel = np.empty((len(Abar), 3))
     for i, a in enumerate(Abar):
         ref = j_integrals_mp(a, n)
-        asym = j_integrals_large_abar(a, n)
+        asym = j_integrals_large_Abar(a, n)
         rel[i] = [abs(float(asym[k]) / float(ref[k]) - 1) for k in range(3)]
     assert np.all((np.diff(rel, axis=0) < 0) | (rel[1:] < 1e-15)), rel
     bound_rel = np.array([1.0 / float(j_integrals_mp(a, n)[0]) for a in Abar])  # J0 - J0~ < 1
@@ -316,7 +316,7 @@ def _third_order_coefficients(n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
 
 
 @pytest.mark.parametrize("n, decades", [(0.5, (-5, -2)), (1.0, (-4, -1)), (2.0, (-3.5, -0.5))])
-def test_small_abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[float, float]) -> None:
+def test_small_Abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[float, float]) -> None:
     """Reference: 30-digit mpmath J. error / Abar^{3n} stays bounded as Abar decreases over 3 decades.
 
     Bound: 2 |c3| where c3 is the exact Abar^{3n} coefficient (u^3 Taylor terms of S and D,
@@ -329,7 +329,7 @@ def test_small_abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[fl
         ratios = []
         for a in Abar:
             ref = j_integrals_mp(float(a), n)[k]
-            approx = float(j_integrals_small_abar(float(a), n)[k])
+            approx = float(j_integrals_small_Abar(float(a), n)[k])
             err = abs(ref - mp.mpf(approx))
             scale = mp.mpf(float(a)) ** (3 * n)
             rounding = 4 * np.spacing(abs(approx))
@@ -341,7 +341,7 @@ def test_small_abar_expansion_error_is_order_abar_3n(n: float, decades: tuple[fl
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
-def test_small_abar_limits_are_one_zero_one(n: float) -> None:
+def test_small_Abar_limits_are_one_zero_one(n: float) -> None:
     """Closed-form limit J -> (1, 0, 1) as Abar -> 0 (Eqs. 99, 123): |J - limit| <= C Abar^n, checked vs mpmath."""
     for a in (1e-4, 1e-8, 1e-12):
         ref = j_integrals_mp(a, n)
@@ -386,8 +386,8 @@ def test_no_nan_no_warning_at_extreme_abar(n: float) -> None:
         warnings.simplefilter("error")
         values = j_integrals(Abar, n)
         singles = [j_integrals(float(a), n) for a in Abar]
-        small = j_integrals_small_abar(Abar, n)
-        large = j_integrals_large_abar(Abar, n)
+        small = j_integrals_small_Abar(Abar, n)
+        large = j_integrals_large_Abar(Abar, n)
         general = j_integrals_general(Abar, GentSchultz(n))
     for arr in (*values, *small, *large, *general, *(x for s in singles for x in s)):
         assert np.all(np.isfinite(arr))

@@ -159,7 +159,7 @@ def _sin2_cos_power_integral(p: float) -> float:
     return 0.5 * float(beta(1.5, 0.5 * (p + 1)))
 
 
-def j_integrals_large_abar(Abar: ArrayLike, n: float) -> Triple:
+def j_integrals_large_Abar(Abar: ArrayLike, n: float) -> Triple:
     """Leading large-Abar asymptotes of (J0, Jc1, J1) for the Gent–Schultz law.
 
     Only the opening half contributes at leading order (end of Sec. 3.3), sqrt(1+u) ~ u^{1/2}:
@@ -181,7 +181,7 @@ def j_integrals_large_abar(Abar: ArrayLike, n: float) -> Triple:
     )
 
 
-def j_integrals_small_abar(Abar: ArrayLike, n: float) -> Triple:
+def j_integrals_small_Abar(Abar: ArrayLike, n: float) -> Triple:
     """Small-Abar expansions of (J0, Jc1, J1) for the Gent–Schultz law, first correction kept.
 
     With u = (Abar sin t)^n: S = 2 + u^2/4 + O(u^3) and D = -u + u^2/2 + O(u^3), so

@@ -21,7 +21,7 @@ from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
 
-from vibroadhesion.core.integrals import j_integrals_large_abar  # noqa: E402
+from vibroadhesion.core.integrals import j_integrals_large_Abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
 from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
@@ -61,7 +61,7 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     rows = table[np.isclose(table["n"], n_fitted)]
     Abar = rows["Abar"].to_numpy()
-    asym = j_integrals_large_abar(Abar, n_fitted)
+    asym = j_integrals_large_Abar(Abar, n_fitted)
     for (label, column, sign), a, color in zip(
         [(r"$\mathcal{J}_0$", "J0", 1), (r"$-\mathcal{J}_{c1}$", "Jc1", -1), (r"$\mathcal{J}_1$", "J1", 1)],
         asym,
