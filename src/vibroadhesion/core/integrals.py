@@ -21,9 +21,10 @@ over in a boundary layer t ~ 1/A. One fixed rule serves every A: t = (pi/2) tau^
 kink into tau^(4n) times the Jacobian tau^3 (dt = 2 pi tau^3 dtau), and Gauss–Jacobi
 quadrature with the weight tau^3 (72 nodes, tau = (1 + x)/2, weight (1 + x)^3 on (-1, 1))
 integrates the rest: tau^(4n) is smooth enough (Gauss error on x^b is O(N^(-2b-2))) and the
-layer, spread over tau ~ A^(-1/4), is resolved. The weight tau^3 is exact in the weights, so
-constants integrate to rounding (J(0+) = (1, 0, 1) to 1e-16; Gauss–Legendre times tau^3 misses
-by 4e-15 through its end weights). The hardest case is the largest n, where the layer is
+layer, spread over tau ~ A^(-1/4), is resolved. The weight tau^3 is carried by the weights, so
+they sum to pi/2 within 2e-16 (Gauss–Legendre times tau^3 misses by 4e-15 through its end
+weights); what is left of the rule's rounding is below 3e-15 (J1(0+) = 1 - 2.6e-15: a node's
+rounding, 2e-16 in x, moves t by up to pi times that). The hardest case is the largest n, where the layer is
 sharpest (the pole of 1/sqrt(1+u) at u = -1 lies ~ 1/(nA) off the real t axis); the error
 falls geometrically with the number of nodes (n = 4: 3.9e-13 with 64 nodes, 5.4e-14 with 72).
 Where A is large the layer carries a share ~ A^(-1-n/2) of the integral and its error is
@@ -41,8 +42,8 @@ The tests check it on a coarser scan (9 values of n, 1201 of A) and 1e-12 agains
 the hard cases (n = 0.05 and 4, A from 1e-300 to 1e100, and A = 50–250 at n = 4).
 
 Because A enters only through A^n times the node value (sin t_k)^n, u = (A sin t_k)^n is one
-product per node after one power per A: no exp, which took half the time and carried the
-rounding of n ln A (relative error up to 690 x 1.1e-16 = 8e-14 in u at the overflow limit).
+product per node after one power per A: no exp, which cost time and carried the rounding of
+n ln A (relative error up to 690 x 1.1e-16 = 8e-14 in u at the overflow limit).
 The rule is several thousand times faster than adaptive quadrature (see ``benchmarks/``).
 """
 
