@@ -111,7 +111,7 @@ from scipy.optimize import brentq
 from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
-from vibroadhesion.core.integrals import folded_rule
+from vibroadhesion.core.integrals import folded_rule, gent_schultz_u
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
 from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models.compliant import amplitude_log_residual
@@ -138,13 +138,11 @@ class ExactHarmonics(NamedTuple, Generic[Value]):
 
 def _even_odd_parts(Abar: Array, law: RateLaw) -> tuple[Array, Array]:
     """S = s(v) + s(-v) and D = s(v) - s(-v) at the rule's nodes, v = Abar sin t (rows: Abar values)."""
-    t, log_sin_t, _ = folded_rule()
     if isinstance(law, GentSchultz):  # S = (2 + u)/sqrt(1 + u), D = -u/sqrt(1 + u), u = v^n: no cancellation
-        with np.errstate(divide="ignore"):
-            u = np.exp(law.n * (np.log(Abar)[:, None] + log_sin_t[None, :]))
+        u = gent_schultz_u(Abar, law.n)
         r = 1.0 / np.sqrt(1.0 + u)
         return (2.0 + u) * r, -u * r
-    v = np.multiply.outer(Abar, np.sin(t))
+    v = np.multiply.outer(Abar, folded_rule()[1])
     closing, opening = np.sqrt(law.f(v)), np.sqrt(law.f(-v))
     return closing + opening, closing - opening
 
