@@ -17,11 +17,14 @@ core the full problem carries Psi = M - I of the one-period map (its variational
 :mod:`vibroadhesion.simulation.shooting`) and the quadratures of the orbit's means and harmonics
 (:mod:`vibroadhesion.simulation.orbits`).
 
-Integrators. "auto": the first period with LSODA (ODEPACK), the periods near the orbit, not stiff
-for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode` (a period costs
-~100 steps, ~25 us each: the Python loop of solve_ivp would cost 4 times more), a period DOP853
-gives up on repeated with Radau (analytic Jacobian). The extremes of a and of Phi are located
-between accepted steps by Brent's method on re-integrated states.
+Integrators. "auto": a rigid period with the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`
+(a period costs ~100-300 steps of 12 right-hand sides; ~0.1-0.4 ms compiled, ~20 times less than
+with the Python right-hand side), the first period from the static state too for n <= 1; otherwise,
+and where the compiled run gives up, the first period with LSODA (ODEPACK), the periods near the
+orbit, not stiff for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode`
+(~25 us a step: the Python loop of solve_ivp would cost 4 times more), a period DOP853 gives up on
+repeated with Radau (analytic Jacobian). The extremes of a and of Phi are located between accepted
+steps by Brent's method on re-integrated states.
 
 Known limitation: for n > 1 in the quasi-static regime (omega_check c_o << etahat^(1/n - 1)) the
 contact tracks Phi - 1 ~ x^n ~ 1e-9..1e-16, where the speed (Phi - 1)^(1/n) has a relative
@@ -40,16 +43,18 @@ from typing import Literal, NamedTuple
 import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau, ode
 
+from vibroadhesion.simulation import kernel
 from vibroadhesion.simulation.model import SPEED_CAP, TWO_PI, Array, Model, contact_kernel
 
 Integrator = Literal["auto", "fortran-dop853", "Radau", "BDF", "LSODA", "DOP853", "RK45"]
 #: A right-hand side f(tau, y) of the scaled problem, and the Jacobian df/dy of one.
-RightHandSide = Callable[[float, Array], list[float]]
+RightHandSide = Callable[[float, Array], list[float] | Array]
 Jacobian = Callable[[float, Array], Array]
 #: Called after every accepted step with (tau, y); True stops the integration.
 StepCallback = Callable[[float, Array], bool]
 
 _FORTRAN = "fortran-dop853"
+_COMPILED = "numba-dop853"
 _IVP_SOLVERS = {"Radau": Radau, "BDF": BDF, "LSODA": LSODA, "DOP853": DOP853, "RK45": RK45}
 _IMPLICIT = ("Radau", "BDF", "LSODA")
 #: Steps allowed per call: to the Fortran DOP853 (then "auto" repeats the call with Radau) and
@@ -68,12 +73,23 @@ _N_QUAD_RIGID = 7
 _N_QUAD_COMPLIANT = 10
 
 
+def compiled_rigid_rhs(constants: Array, size: int, tau: float, y: Array) -> Array:
+    """The rigid rates of Eq. (6') (size 1) or of the full state (size 9) for scipy's integrators.
+
+    :func:`vibroadhesion.simulation.kernel.rigid_rates` with the period's ``constants``, into a new array.
+    """
+    out = np.empty(size)
+    kernel.rigid_rates(tau, y, out, constants)
+    return out
+
+
 class Period:
     """The one-period problem from a start state, in scaled variables.
 
     Scaled core: u = v/V (rigid) or (xi, eta, u) = (xbar/S, xbar'/S, v/V) (compliant), with
     v = speed_scale (abar - abar(0)); the map coordinate of abar is beta = speed_scale abar / V. The
-    right-hand sides are closures over the constants (speed: they run ~1e4 times per period).
+    rigid right-hand sides are the compiled ones of :mod:`vibroadhesion.simulation.kernel`; the
+    compliant ones are closures over the constants (speed: they run ~1e4 times per period).
     """
 
     def __init__(self, model: Model, start: Array, v_scale: float, x_scale: float):
@@ -85,7 +101,17 @@ class Period:
         self.x_scale = x_scale
         self.dim = model.dim
         self.n_var = self.dim * self.dim
-        self.core_rhs, self.full_rhs = (self._compliant_rhs() if model.compliant else self._rigid_rhs())
+        #: The constants of the compiled rigid period (kernel.CONSTANTS); empty when compliant.
+        self.kernel_constants = np.array([] if model.compliant else [
+            self.b0, v_scale, 1.0 / model.speed_scale, 1.0 / v_scale, model.base_offset, model.etahat, model.inv_n,
+            model.log_cap, 1.0 if model.variational else 0.0])
+        self.core_rhs: RightHandSide
+        self.full_rhs: RightHandSide
+        if model.compliant:
+            self.core_rhs, self.full_rhs = self._compliant_rhs()
+        else:
+            self.core_rhs = partial(compiled_rigid_rhs, self.kernel_constants, 1)
+            self.full_rhs = partial(compiled_rigid_rhs, self.kernel_constants, kernel.FULL_SIZE)
 
     # -- conversions
 
@@ -171,27 +197,6 @@ class Period:
         return jac
 
     # -- right-hand sides
-
-    def _rigid_rhs(self) -> tuple[RightHandSide, RightHandSide]:
-        b0, v_scale, m = self.b0, self.v_scale, self.m
-        inv_speed_scale, inv_v, d0, etahat = 1.0 / m.speed_scale, 1.0 / v_scale, m.base_offset, m.etahat
-        inv_n, log_cap = m.inv_n, m.log_cap
-        sin, cos, contact = math.sin, math.cos, contact_kernel
-
-        def core(tau: float, y: Array) -> list[float]:
-            abar = (b0 + v_scale * y.item(0)) * inv_speed_scale
-            return [contact(abar, d0 - etahat * sin(tau), inv_n, log_cap)[0] * inv_v]
-
-        variational = m.variational
-
-        def full(tau: float, y: Array) -> list[float]:
-            u = y.item(0)
-            abar = (b0 + v_scale * u) * inv_speed_scale
-            s, c = sin(tau), cos(tau)
-            x, x_a, _, p, w = contact(abar, d0 - etahat * s, inv_n, log_cap)
-            return [x * inv_v, x_a * inv_speed_scale if variational else 0.0, u, u * c, u * s, w, p, p * c, p * s]
-
-        return core, full
 
     def _compliant_rhs(self) -> tuple[RightHandSide, RightHandSide]:
         b0, v_scale, x_scale, m = self.b0, self.v_scale, self.x_scale, self.m
@@ -311,7 +316,10 @@ class Integrators:
     to grow: the front then slides along Phi ~ 0 at a huge closing speed) with LSODA,
     which switches to BDF there; the periods near the orbit, which are not stiff for
     omega_check >~ 1e3, with the Fortran DOP853; a run that DOP853 gives up on is repeated with
-    Radau. Any other name runs everything.
+    Radau. A rigid period runs first with the compiled DOP853 of
+    :mod:`vibroadhesion.simulation.kernel` (the transient too for n <= 1, where it stays within
+    ~2e3 steps; for n > 1 its stiff first periods take 2e4 to more than 2e5 steps, so LSODA), and
+    with the methods above only if that gives up. Any other name runs everything.
     """
 
     def __init__(self, integrator: Integrator, rtol: float):
@@ -325,6 +333,15 @@ class Integrators:
         self.transient = "LSODA" if self.auto else integrator
         self.rtol = rtol
         self.used: list[str] = []
+
+    def compiles(self, period: Period, transient: bool = False) -> bool:
+        """Whether ``period`` runs with the compiled DOP853 ("auto", rigid; a transient only for n <= 1)."""
+        return self.auto and not period.m.compliant and (period.m.variational or not transient)
+
+    def note(self, method: str) -> None:
+        """Record that ``method`` ran."""
+        if method not in self.used:
+            self.used.append(method)
 
     def run(
         self,
@@ -349,8 +366,7 @@ class Integrators:
                 raise
             method = "Radau"
             result = _integrate(fun, jac, tau0, y0, tau1, method, self.rtol, on_step)
-        if method not in self.used:
-            self.used.append(method)
+        self.note(method)
         return result
 
     def description(self) -> str:
@@ -382,11 +398,39 @@ class _StepRecorder:
         return False
 
 
+def _compiled_run(period: Period, integrators: Integrators, y0: Sequence[float], tau0: float, tau1: float,
+                  loss_abar: float) -> kernel.KernelRun | None:
+    """:func:`kernel.integrate` of ``period`` (None when it gives up: the caller takes the scipy path)."""
+    result = kernel.integrate(period.kernel_constants, np.asarray(y0, dtype=float), tau0, tau1, integrators.rtol,
+                              _FORTRAN_MAX_STEPS, loss_abar)
+    if result.code < 0:
+        return None
+    integrators.note(_COMPILED)
+    return result
+
+
+def integrate_core(period: Period, integrators: Integrators, tau0: float, core0: Sequence[float],
+                   tau1: float) -> list[float]:
+    """The scaled core at ``tau1`` from ``core0`` at ``tau0`` (compiled when it can, without a contact-loss stop)."""
+    if integrators.compiles(period):
+        result = _compiled_run(period, integrators, core0, tau0, tau1, -math.inf)
+        if result is not None:
+            return result.y.tolist()
+    return integrators.run(period.core_rhs, period.core_jacobian, tau0, core0, tau1)[1].tolist()
+
+
 def run_period(period: Period, integrators: Integrators, full: bool, transient: bool = False) -> Run:
     """Integrate one period, stopping at contact loss; records accepted steps and the range of u."""
+    y0 = period.full_start() if full else period.core_start()
+    if integrators.compiles(period, transient):
+        result = _compiled_run(period, integrators, y0, 0.0, TWO_PI, period.m.contact_loss_abar)
+        if result is not None:
+            lost = result.code == kernel.CONTACT_LOST
+            taus, us = (result.taus[:-1], result.us[:-1]) if lost else (result.taus, result.us)
+            steps = [(tau, [u]) for tau, u in zip(taus.tolist(), us.tolist(), strict=True)]
+            return Run(period, result.tau if lost else math.nan, result.y, steps, (float(us.min()), float(us.max())))
     recorder = _StepRecorder(period)
     fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
-    y0 = period.full_start() if full else period.core_start()
     _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)
     u = [core[-1] for _, core in recorder.steps]
     return Run(period, recorder.lost_at, y_end, recorder.steps, (min(u), max(u)))

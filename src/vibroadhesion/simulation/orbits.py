@@ -42,6 +42,7 @@ from vibroadhesion.simulation.integrators import (
     Integrators,
     Period,
     Run,
+    integrate_core,
     observed_v_scale,
     run_period,
     v_scale_estimate,
@@ -114,7 +115,7 @@ def _state_in_step(
     """Scaled core at ``tau`` inside the accepted step that starts at (tau_k, core_k), re-integrated."""
     if tau == tau_k:
         return core_k
-    return integrators.run(period.core_rhs, period.core_jacobian, tau_k, core_k, tau)[1].tolist()
+    return integrate_core(period, integrators, tau_k, core_k, tau)
 
 
 def _g_in_step(tau: float, g: Callable[[Period, float, list[float]], float], period: Period, integrators: Integrators,
