@@ -50,6 +50,8 @@ Integrator = Literal["auto", "fortran-dop853", "Radau", "BDF", "LSODA", "DOP853"
 #: A right-hand side f(tau, y) of the scaled problem, and the Jacobian df/dy of one.
 RightHandSide = Callable[[float, Array], list[float] | Array]
 Jacobian = Callable[[float, Array], Array]
+#: A number, or numbers at several points.
+Values = float | Array
 #: Called after every accepted step with (tau, y); True stops the integration.
 StepCallback = Callable[[float, Array], bool]
 
@@ -145,9 +147,9 @@ class Period:
             d += core[0] * self.x_scale
         return abar, d, contact_kernel(abar, d, m.inv_n, m.log_cap)
 
-    def deltabar_rate(self, tau: float, core: Sequence[float]) -> float:
-        """d deltabar / d tau."""
-        rate = -self.m.etahat * math.cos(tau)
+    def deltabar_rate(self, tau: Values, core: Sequence[Values]) -> Values:
+        """d deltabar / d tau at a point (floats) or at points (arrays: ``core`` the components' arrays)."""
+        rate = -self.m.etahat * np.cos(tau)
         return rate + core[1] * self.x_scale if self.m.compliant else rate
 
     # -- Jacobians (for the implicit integrators)
@@ -305,7 +307,8 @@ class Run(NamedTuple):
     period: Period
     lost_at: float  # tau of contact loss, NaN if none
     y_end: Array
-    steps: list[tuple[float, list[float]]]
+    taus: Array  # accepted steps, the start first (the step of a contact loss left out)
+    cores: Array  # (steps, dim): the scaled core at those steps
     u_range: tuple[float, float]
 
 
@@ -425,15 +428,16 @@ def run_period(period: Period, integrators: Integrators, full: bool, transient: 
     if integrators.compiles(period, transient):
         result = _compiled_run(period, integrators, y0, 0.0, TWO_PI, period.m.contact_loss_abar)
         if result is not None:
-            lost = result.code == kernel.CONTACT_LOST
-            taus, us = (result.taus[:-1], result.us[:-1]) if lost else (result.taus, result.us)
-            steps = [(tau, [u]) for tau, u in zip(taus.tolist(), us.tolist(), strict=True)]
-            return Run(period, result.tau if lost else math.nan, result.y, steps, (float(us.min()), float(us.max())))
+            kept = len(result.taus) - 1 if result.code == kernel.CONTACT_LOST else len(result.taus)
+            lost_at = result.tau if kept < len(result.taus) else math.nan
+            us = result.us[:kept]
+            return Run(period, lost_at, result.y, result.taus[:kept], us[:, None], (float(us.min()), float(us.max())))
     recorder = _StepRecorder(period)
     fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
     _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)
-    u = [core[-1] for _, core in recorder.steps]
-    return Run(period, recorder.lost_at, y_end, recorder.steps, (min(u), max(u)))
+    cores = np.array([core for _, core in recorder.steps])
+    return Run(period, recorder.lost_at, y_end, np.array([tau for tau, _ in recorder.steps]), cores,
+               (float(cores[:, -1].min()), float(cores[:, -1].max())))
 
 
 # --- Scales ----------------------------------------------------------------------------------------
@@ -490,6 +494,6 @@ def periodic_to_rounding(run: Run, integrators: Integrators) -> bool:
 
 def scaled_core_range(run: Run) -> float:
     """Largest magnitude of the scaled core over the accepted steps (O(1) when the scales fit)."""
-    return max(1.0, max(abs(c) for _, core in run.steps for c in core))
+    return max(1.0, float(np.max(np.abs(run.cores))))
 
 

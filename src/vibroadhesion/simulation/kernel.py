@@ -194,6 +194,17 @@ def _dop853_loop(k: Array, y: Array, tau0: float, tau1: float, tol: float, max_s
 _compiled_dop853_loop = njit(cache=True)(_dop853_loop)
 
 
+def _speeds(abar: Array, deltabar: Array, inv_n: float, log_cap: float) -> Array:
+    """x = adot/v0 of Eq. (6') (:func:`vibroadhesion.simulation.model.contact_kernel`) at each (abar, deltabar)."""
+    out = np.empty(abar.shape[0])
+    for i in range(abar.shape[0]):
+        out[i] = compiled_contact_kernel(abar[i], deltabar[i], inv_n, log_cap)[0]
+    return out
+
+
+speeds = njit(cache=True)(_speeds)
+
+
 class KernelRun(NamedTuple):
     """What :func:`integrate` returns: the code, the tau reached, the state there, the accepted steps."""
 
