@@ -403,7 +403,7 @@ class _StepRecorder:
 
 def _compiled_run(period: Period, integrators: Integrators, y0: Sequence[float], tau0: float, tau1: float,
                   loss_abar: float) -> kernel.KernelRun | None:
-    """:func:`kernel.integrate` of ``period`` (None when it gives up: the caller takes the scipy path)."""
+    """:func:`kernel.integrate` of ``period`` (Eq. 6'; None when it gives up: the caller takes the scipy path)."""
     result = kernel.integrate(period.kernel_constants, np.asarray(y0, dtype=float), tau0, tau1, integrators.rtol,
                               _FORTRAN_MAX_STEPS, loss_abar)
     if result.code < 0:
@@ -414,7 +414,7 @@ def _compiled_run(period: Period, integrators: Integrators, y0: Sequence[float],
 
 def integrate_core(period: Period, integrators: Integrators, tau0: float, core0: Sequence[float],
                    tau1: float) -> list[float]:
-    """The scaled core at ``tau1`` from ``core0`` at ``tau0`` (compiled when it can, without a contact-loss stop)."""
+    """The scaled core at ``tau1`` from ``core0`` at ``tau0`` (Eqs. 3', 6'; compiled if it can; no loss stop)."""
     if integrators.compiles(period):
         result = _compiled_run(period, integrators, core0, tau0, tau1, -math.inf)
         if result is not None:

@@ -217,10 +217,11 @@ class KernelRun(NamedTuple):
 
 def integrate(constants: Array, y0: Array, tau0: float, tau1: float, rtol: float, max_steps: int,
               loss_abar: float) -> KernelRun:
-    """Compiled DOP853 of the rigid period with the ``constants`` (module docstring) from (tau0, y0) to tau1.
+    """Compiled DOP853 of the rigid period (Eq. 6', with full y0 its variational equation and quadratures).
 
-    ``y0`` has 1 (u) or :data:`FULL_SIZE` components; rtol is also the absolute tolerance (the state
-    is scaled to O(1)). Integration failures are return codes, never exceptions.
+    From (tau0, y0) to tau1 with the period's ``constants`` (module docstring). ``y0`` has 1 (u) or
+    :data:`FULL_SIZE` components; rtol is also the absolute tolerance (the state is scaled to O(1)).
+    Integration failures are return codes, never exceptions.
     """
     y = np.array(y0, dtype=np.float64)
     taus, us = np.empty(max_steps + 1), np.empty(max_steps + 1)

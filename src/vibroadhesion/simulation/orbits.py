@@ -89,7 +89,7 @@ PointFunction = Callable[[Period, Values, Any, Values, Values, Values], Values]
 
 
 def _contact_at_steps(run: Run) -> tuple[Array, Array, Array]:
-    """(abar, deltabar, x) at the run's accepted steps: :meth:`Period.contact_at` for all steps at once."""
+    """(abar, deltabar, x) at the run's accepted steps (Eqs. 6', 7): :meth:`Period.contact_at` at all at once."""
     period, m = run.period, run.period.m
     abar = (period.b0 + period.v_scale * run.cores[:, -1]) / m.speed_scale
     d = m.base_offset - m.etahat * np.sin(run.taus)
