@@ -17,9 +17,10 @@ core the full problem carries Psi = M - I of the one-period map (its variational
 :mod:`vibroadhesion.simulation.shooting`) and the quadratures of the orbit's means and harmonics
 (:mod:`vibroadhesion.simulation.orbits`).
 
-Integrators. "auto": a rigid period with the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`
+Integrators. "auto": a period with the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`
 (a period costs ~100-300 steps of 12 right-hand sides; ~0.1-0.4 ms compiled, ~20 times less than
-with the Python right-hand side), the first period from the static state too for n <= 1; otherwise,
+with the Python right-hand side), the first period from the static state too if rigid with n <= 1
+(:class:`Integrators`); otherwise,
 and where the compiled run gives up, the first period with LSODA (ODEPACK), the periods near the
 orbit, not stiff for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode`
 (~25 us a step: the Python loop of solve_ivp would cost 4 times more), a period DOP853 gives up on
@@ -75,13 +76,13 @@ _N_QUAD_RIGID = 7
 _N_QUAD_COMPLIANT = 10
 
 
-def compiled_rigid_rhs(constants: Array, size: int, tau: float, y: Array) -> Array:
-    """The rigid rates of Eq. (6') (size 1) or of the full state (size 9) for scipy's integrators.
+def compiled_rhs(constants: Array, size: int, tau: float, y: Array) -> Array:
+    """The rates of Eqs. (3'), (6') of the core or of the full state (``size`` components) for scipy's integrators.
 
-    :func:`vibroadhesion.simulation.kernel.rigid_rates` with the period's ``constants``, into a new array.
+    :func:`vibroadhesion.simulation.kernel.state_rates` with the period's ``constants``, into a new array.
     """
     out = np.empty(size)
-    kernel.rigid_rates(tau, y, out, constants)
+    kernel.state_rates(tau, y, out, constants)
     return out
 
 
@@ -90,8 +91,7 @@ class Period:
 
     Scaled core: u = v/V (rigid) or (xi, eta, u) = (xbar/S, xbar'/S, v/V) (compliant), with
     v = speed_scale (abar - abar(0)); the map coordinate of abar is beta = speed_scale abar / V. The
-    rigid right-hand sides are the compiled ones of :mod:`vibroadhesion.simulation.kernel`; the
-    compliant ones are closures over the constants (speed: they run ~1e4 times per period).
+    right-hand sides are the compiled ones of :mod:`vibroadhesion.simulation.kernel`.
     """
 
     def __init__(self, model: Model, start: Array, v_scale: float, x_scale: float):
@@ -103,17 +103,22 @@ class Period:
         self.x_scale = x_scale
         self.dim = model.dim
         self.n_var = self.dim * self.dim
-        #: The constants of the compiled rigid period (kernel.CONSTANTS); empty when compliant.
-        self.kernel_constants = np.array([] if model.compliant else [
+        #: The constants of the compiled period (kernel.CONSTANTS).
+        self.kernel_constants = np.array([
             self.b0, v_scale, 1.0 / model.speed_scale, 1.0 / v_scale, model.base_offset, model.etahat, model.inv_n,
-            model.log_cap, 1.0 if model.variational else 0.0])
-        self.core_rhs: RightHandSide
-        self.full_rhs: RightHandSide
-        if model.compliant:
-            self.core_rhs, self.full_rhs = self._compliant_rhs()
-        else:
-            self.core_rhs = partial(compiled_rigid_rhs, self.kernel_constants, 1)
-            self.full_rhs = partial(compiled_rigid_rhs, self.kernel_constants, kernel.FULL_SIZE)
+            model.log_cap, 1.0 if model.variational else 0.0, 1.0 if model.compliant else 0.0,
+            *self._spring_constants()])
+        full_size = kernel.COMPLIANT_FULL_SIZE if model.compliant else kernel.FULL_SIZE
+        self.core_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, self.dim)
+        self.full_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, full_size)
+
+    def _spring_constants(self) -> list[float]:
+        """S, mu/(kappa c_o^2)/S, (c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (Eq. 3'); zeros if rigid."""
+        m = self.m
+        if not m.compliant:
+            return [0.0] * 6
+        return [self.x_scale, m.force_offset / self.x_scale, m.compliance / self.x_scale, 1.0 / m.omega_bar**2,
+                2.0 * m.zeta * m.omega_bar, m.compliance]
 
     # -- conversions
 
@@ -200,46 +205,6 @@ class Period:
 
     # -- right-hand sides
 
-    def _compliant_rhs(self) -> tuple[RightHandSide, RightHandSide]:
-        b0, v_scale, x_scale, m = self.b0, self.v_scale, self.x_scale, self.m
-        inv_speed_scale, inv_v, d0, etahat = 1.0 / m.speed_scale, 1.0 / v_scale, m.base_offset, m.etahat
-        inv_n, log_cap = m.inv_n, m.log_cap
-        # eta' = (offset - compliance Phat - S xi - 2 zeta omega_bar S eta) / (omega_bar^2 S), Eq. (3')
-        offset, compliance = m.force_offset / x_scale, m.compliance / x_scale
-        inv_w2, damp = 1.0 / m.omega_bar**2, 2.0 * m.zeta * m.omega_bar
-        sin, cos, contact, entries = math.sin, math.cos, contact_kernel, self._jacobian_entries
-        variational = m.variational
-        no_variation = [0.0] * 9
-
-        def core(tau: float, y: Array) -> list[float]:
-            xi, eta, u = y.item(0), y.item(1), y.item(2)
-            abar = (b0 + v_scale * u) * inv_speed_scale
-            x, _, _, p, _ = contact(abar, x_scale * xi + d0 - etahat * sin(tau), inv_n, log_cap)
-            return [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
-
-        def full(tau: float, y: Array) -> list[float]:
-            xi, eta, u = y.item(0), y.item(1), y.item(2)
-            abar = (b0 + v_scale * u) * inv_speed_scale
-            s, c = sin(tau), cos(tau)
-            d = x_scale * xi + d0 - etahat * s
-            x, x_a, x_d, p, w = contact(abar, d, inv_n, log_cap)
-            quadratures = [u, u * c, u * s, w, p, p * c, p * s, xi, xi * c, xi * s]
-            core_rates = [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
-            if not variational:
-                return core_rates + no_variation + quadratures
-            j10, j11, j12, j20, j22 = entries(abar, d, x_a, x_d)
-            p0, p1, p2, p3, p4, p5, p6, p7, p8 = y[3:12].tolist()
-            m00, m01, m02 = 1.0 + p0, p1, p2  # M = I + Psi, row-major
-            m10, m11, m12 = p3, 1.0 + p4, p5
-            m20, m21, m22 = p6, p7, 1.0 + p8
-            return core_rates + [  # Psi' = J M with J = [[0, 1, 0], [j10, j11, j12], [j20, 0, j22]]
-                m10, m11, m12,
-                j10 * m00 + j11 * m10 + j12 * m20, j10 * m01 + j11 * m11 + j12 * m21, j10 * m02 + j11 * m12 + j12 * m22,
-                j20 * m00 + j22 * m20, j20 * m01 + j22 * m21, j20 * m02 + j22 * m22,
-            ] + quadratures
-
-        return core, full
-
 
 # --- Integration drivers --------------------------------------------------------------------------
 
@@ -319,10 +284,13 @@ class Integrators:
     to grow: the front then slides along Phi ~ 0 at a huge closing speed) with LSODA,
     which switches to BDF there; the periods near the orbit, which are not stiff for
     omega_check >~ 1e3, with the Fortran DOP853; a run that DOP853 gives up on is repeated with
-    Radau. A rigid period runs first with the compiled DOP853 of
-    :mod:`vibroadhesion.simulation.kernel` (the transient too for n <= 1, where it stays within
-    ~2e3 steps; for n > 1 its stiff first periods take 2e4 to more than 2e5 steps, so LSODA), and
-    with the methods above only if that gives up. Any other name runs everything.
+    Radau. A period near the orbit runs first with the compiled DOP853 of
+    :mod:`vibroadhesion.simulation.kernel`, and with the methods above only if that gives up; so
+    does a transient period of the rigid fixation with n <= 1 (within ~2e3 steps). Transients stay
+    with LSODA for n > 1 (stiff first periods of 2e4 to more than 2e5 explicit steps) and for the
+    compliant fixation (there the compiled DOP853's end state jumps by ~1e-9 between neighbouring
+    starts as its step count changes, which spoils differences of transients such as the
+    finite-difference monodromy). Any other name runs everything.
     """
 
     def __init__(self, integrator: Integrator, rtol: float):
@@ -338,8 +306,8 @@ class Integrators:
         self.used: list[str] = []
 
     def compiles(self, period: Period, transient: bool = False) -> bool:
-        """Whether ``period`` runs with the compiled DOP853 ("auto", rigid; a transient only for n <= 1)."""
-        return self.auto and not period.m.compliant and (period.m.variational or not transient)
+        """Whether ``period`` runs with the compiled DOP853 ("auto"; a transient only if rigid with n <= 1)."""
+        return self.auto and (not transient or (period.m.variational and not period.m.compliant))
 
     def note(self, method: str) -> None:
         """Record that ``method`` ran."""
@@ -430,8 +398,9 @@ def run_period(period: Period, integrators: Integrators, full: bool, transient: 
         if result is not None:
             kept = len(result.taus) - 1 if result.code == kernel.CONTACT_LOST else len(result.taus)
             lost_at = result.tau if kept < len(result.taus) else math.nan
-            us = result.us[:kept]
-            return Run(period, lost_at, result.y, result.taus[:kept], us[:, None], (float(us.min()), float(us.max())))
+            cores = result.cores[:kept]
+            return Run(period, lost_at, result.y, result.taus[:kept], cores,
+                       (float(cores[:, -1].min()), float(cores[:, -1].max())))
     recorder = _StepRecorder(period)
     fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
     _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)

@@ -1,11 +1,13 @@
-"""One period of the rigid fixation compiled with numba: the right-hand side of Eq. (6') and DOP853.
+"""One period of the full model compiled with numba: the right-hand sides of Eqs. (3'), (6') and DOP853.
 
 The rigid one-period problem (:mod:`vibroadhesion.simulation.integrators`) is a scalar ODE for the
 scaled front displacement u = v/V (Eq. 6'), carried with the log-multiplier lambda of its
-variational equation and seven quadratures. Called from scipy's integrators, its right-hand side
-costs ~1.5 us a call in Python and a period at rtol 1e-12 ~1500 calls; here the right-hand side
-(:func:`rigid_rates`, the same :func:`vibroadhesion.simulation.model.contact_kernel` compiled) and the
-whole Dormand–Prince 8(5,3) loop (:func:`integrate`) run compiled, ~20 times faster per period.
+variational equation and seven quadratures; the compliant one adds the spring (Eq. 3') in the
+scaled xi = xbar/S, eta = xbar'/S, with Psi = M - I (9 components) and ten quadratures. Called from
+scipy's integrators, a right-hand side costs ~1.5-3 us a call in Python and a period at rtol 1e-12
+~1500 calls; here the right-hand sides (:func:`state_rates`, the same
+:func:`vibroadhesion.simulation.model.contact_kernel` compiled) and the whole Dormand–Prince 8(5,3)
+loop (:func:`integrate`) run compiled, ~20 times faster per period.
 
 The integrator is the explicit Runge–Kutta method of order 8 of Hairer, Nørsett & Wanner
 (Solving ODEs I, Sec. II.10) with the coefficients and the step-size control of
@@ -17,7 +19,8 @@ abar below the contact-loss threshold (model docstring). Compiled code is cached
 
 Constants of a period (:data:`CONSTANTS`, in this order): b0 = speed_scale abar(0), V, 1/speed_scale,
 1/V, base_offset, etahat, 1/n, ln(speed cap), 1.0 if the variational equation is integrated
-(n <= 1) else 0.0.
+(n <= 1) else 0.0, 1.0 if compliant else 0.0; then, compliant (else 0): S, mu/(kappa c_o^2)/S,
+(c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (integrators module, Eq. 3').
 """
 
 from __future__ import annotations
@@ -33,10 +36,14 @@ from vibroadhesion.simulation.model import Array, contact_kernel
 
 #: Names of the entries of the constants array of a period (module docstring).
 CONSTANTS = ("b0", "v_scale", "inv_speed_scale", "inv_v_scale", "base_offset", "etahat", "inv_n", "log_cap",
-             "variational")
+             "variational", "compliant", "x_scale", "scaled_force_offset", "scaled_compliance", "inv_omega_bar2",
+             "damping", "compliance")
 #: Components of the full rigid state: u, lambda and the quadratures u, u cos, u sin, sqrt(w/w0), Phat,
 #: Phat cos, Phat sin (integrators module).
 FULL_SIZE = 9
+#: Components of the full compliant state: xi, eta, u, Psi (9, row-major) and the quadratures u, u cos,
+#: u sin, sqrt(w/w0), Phat, Phat cos, Phat sin, xi, xi cos, xi sin.
+COMPLIANT_FULL_SIZE = 22
 #: Return codes of :func:`integrate`.
 REACHED, CONTACT_LOST, STEP_BUDGET, STEP_UNDERFLOW = 0, 1, -1, -2
 
@@ -71,7 +78,54 @@ def _rigid_rates(tau: float, y: Array, out: Array, k: Array) -> None:
         out[5], out[6], out[7], out[8] = w, p, p * c, p * s
 
 
-rigid_rates = njit(cache=True)(_rigid_rates)
+_compiled_rigid_rates = njit(cache=True)(_rigid_rates)
+
+
+def _compliant_rates(tau: float, y: Array, out: Array, k: Array) -> None:
+    """Rates of the scaled compliant state into ``out``: Eqs. (3'), (6'); with 22 components Psi and the quadratures.
+
+    xi' = eta, eta' = (mu/(kappa c_o^2) - (c_o/kappa) Phat - S xi - 2 zeta omega_bar S eta)/(omega_bar^2 S)
+    (Eq. 3'), u' = x/V (Eq. 6') with deltabar = S xi + base_offset - etahat sin tau (Eq. 7); then
+    Psi' = J (I + Psi) with J = [[0, 1, 0], [j10, j11, j12], [j20, 0, j22]] (0 for n > 1, shooting
+    module) and u, u cos, u sin, sqrt(w/w0), Phat, Phat cos, Phat sin, xi, xi cos, xi sin.
+    """
+    xi, eta, u = y[0], y[1], y[2]
+    abar = (k[0] + k[1] * u) * k[2]
+    s = math.sin(tau)
+    d = k[10] * xi + k[4] - k[5] * s
+    x, x_a, x_d, p, w = compiled_contact_kernel(abar, d, k[6], k[7])
+    out[0], out[1], out[2] = eta, (k[11] - k[12] * p - xi - k[14] * eta) * k[13], x * k[3]
+    if out.shape[0] == 3:
+        return
+    out[3:12] = 0.0
+    if k[8] > 0.0:
+        j10, j11 = (-1.0 - 2.0 * k[15] * abar) * k[13], -k[14] * k[13]
+        j12 = -k[12] * (2.0 * d - 2.0 * abar * abar) * k[13] * k[1] * k[2]
+        j20, j22 = x_d * k[10] * k[3], x_a * k[2]
+        for col in range(3):  # column col of M = I + Psi (row-major Psi in y[3:12])
+            m0 = y[3 + col] + (1.0 if col == 0 else 0.0)
+            m1 = y[6 + col] + (1.0 if col == 1 else 0.0)
+            m2 = y[9 + col] + (1.0 if col == 2 else 0.0)
+            out[3 + col] = m1
+            out[6 + col] = j10 * m0 + j11 * m1 + j12 * m2
+            out[9 + col] = j20 * m0 + j22 * m2
+    c = math.cos(tau)
+    out[12], out[13], out[14], out[15], out[16] = u, u * c, u * s, w, p
+    out[17], out[18], out[19], out[20], out[21] = p * c, p * s, xi, xi * c, xi * s
+
+
+_compiled_compliant_rates = njit(cache=True)(_compliant_rates)
+
+
+def _rates(tau: float, y: Array, out: Array, k: Array) -> None:
+    """The rates of the period's state (rigid or compliant, k[9]) into ``out``: Eqs. (3'), (6')."""
+    if k[9] > 0.0:
+        _compiled_compliant_rates(tau, y, out, k)
+    else:
+        _compiled_rigid_rates(tau, y, out, k)
+
+
+state_rates = njit(cache=True)(_rates)
 
 
 def _rms(values: Array, y: Array, tol: float) -> float:
@@ -96,7 +150,7 @@ def _initial_step(k: Array, tau0: float, tau1: float, y: Array, f: Array, tol: f
     h0 = min(h0, tau1 - tau0)
     for i in range(y.shape[0]):
         work[i] = y[i] + h0 * f[i]
-    rigid_rates(tau0 + h0, work, rates, k)
+    state_rates(tau0 + h0, work, rates, k)
     for i in range(y.shape[0]):
         work[i] = rates[i] - f[i]
     d2 = _compiled_rms(work, y, tol) / h0
@@ -121,14 +175,14 @@ def _rk_step(k: Array, tau: float, y: Array, h: float, tol: float, stages: Array
             for j in range(s):
                 acc += stages[j, i] * _A[s, j]
             work[i] = y[i] + acc * h
-        rigid_rates(tau + _C[s] * h, work, rates, k)
+        state_rates(tau + _C[s] * h, work, rates, k)
         stages[s, :] = rates
     for i in range(n):
         acc = 0.0
         for j in range(_STAGES):
             acc += stages[j, i] * _B[j]
         y_new[i] = y[i] + h * acc
-    rigid_rates(tau + h, y_new, rates, k)
+    state_rates(tau + h, y_new, rates, k)
     stages[_STAGES, :] = rates
     e5, e3 = 0.0, 0.0
     for i in range(n):
@@ -148,21 +202,22 @@ _compiled_rk_step = njit(cache=True)(_rk_step)
 
 
 def _dop853_loop(k: Array, y: Array, tau0: float, tau1: float, tol: float, max_steps: int, loss_abar: float,
-                 taus: Array, us: Array) -> tuple[int, float, int]:
+                 taus: Array, cores: Array) -> tuple[int, float, int]:
     """DOP853 from (tau0, y) to tau1 (``y`` overwritten with the last accepted state).
 
-    Records the accepted steps in ``taus``, ``us`` (index 0 the start) and returns (code, tau
+    Records the accepted steps in ``taus`` and the core (the first ``cores.shape[1]`` components:
+    u, or xi, eta, u) in ``cores`` (index 0 the start) and returns (code, tau
     reached, steps): code REACHED, CONTACT_LOST (abar < ``loss_abar`` after a step), STEP_BUDGET
     (more than ``max_steps`` steps) or STEP_UNDERFLOW (the step fell below 10 ulp of tau).
     """
-    n = y.shape[0]
+    n, u_at = y.shape[0], cores.shape[1] - 1
     stages, y_new = np.empty((_STAGES + 1, n)), np.empty(n)
     work, rates = np.empty(n), np.empty(n)
-    rigid_rates(tau0, y, rates, k)
+    state_rates(tau0, y, rates, k)
     stages[0, :] = rates
     h_abs = _compiled_initial_step(k, tau0, tau1, y, stages[0], tol, work, rates)
     tau, steps = tau0, 0
-    taus[0], us[0] = tau0, y[0]
+    taus[0], cores[0, :] = tau0, y[: u_at + 1]
     while tau < tau1:
         if steps >= max_steps:
             return STEP_BUDGET, tau, steps
@@ -185,8 +240,8 @@ def _dop853_loop(k: Array, y: Array, tau0: float, tau1: float, tol: float, max_s
         y[:] = y_new
         stages[0, :] = stages[_STAGES]
         steps += 1
-        taus[steps], us[steps] = tau, y[0]
-        if (k[0] + k[1] * y[0]) * k[2] < loss_abar:
+        taus[steps], cores[steps, :] = tau, y[: u_at + 1]
+        if (k[0] + k[1] * y[u_at]) * k[2] < loss_abar:
             return CONTACT_LOST, tau, steps
     return REACHED, tau, steps
 
@@ -212,19 +267,21 @@ class KernelRun(NamedTuple):
     tau: float
     y: Array
     taus: Array  # accepted steps, the start first
-    us: Array  # u at those steps
+    cores: Array  # (steps, core dimension): the core (u, or xi, eta, u) at those steps
 
 
 def integrate(constants: Array, y0: Array, tau0: float, tau1: float, rtol: float, max_steps: int,
               loss_abar: float) -> KernelRun:
-    """Compiled DOP853 of the rigid period (Eq. 6', with full y0 its variational equation and quadratures).
+    """Compiled DOP853 of a period (Eqs. 3', 6', with the full y0 the variational equations and quadratures).
 
-    From (tau0, y0) to tau1 with the period's ``constants`` (module docstring). ``y0`` has 1 (u) or
-    :data:`FULL_SIZE` components; rtol is also the absolute tolerance (the state is scaled to O(1)).
-    Integration failures are return codes, never exceptions.
+    From (tau0, y0) to tau1 with the period's ``constants`` (module docstring). ``y0`` is the core
+    (1 or 3 components) or the full state (:data:`FULL_SIZE`, :data:`COMPLIANT_FULL_SIZE`); rtol is
+    also the absolute tolerance (the state is scaled to O(1)). Integration failures are return
+    codes, never exceptions.
     """
+    k = np.asarray(constants, dtype=np.float64)
     y = np.array(y0, dtype=np.float64)
-    taus, us = np.empty(max_steps + 1), np.empty(max_steps + 1)
-    code, tau, steps = _compiled_dop853_loop(np.asarray(constants, dtype=np.float64), y, float(tau0), float(tau1),
-                                             float(rtol), int(max_steps), float(loss_abar), taus, us)
-    return KernelRun(int(code), float(tau), y, taus[: steps + 1], us[: steps + 1])
+    taus, cores = np.empty(max_steps + 1), np.empty((max_steps + 1, 3 if k[9] > 0.0 else 1))
+    code, tau, steps = _compiled_dop853_loop(k, y, float(tau0), float(tau1), float(rtol), int(max_steps),
+                                             float(loss_abar), taus, cores)
+    return KernelRun(int(code), float(tau), y, taus[: steps + 1], cores[: steps + 1])
