@@ -378,7 +378,7 @@ def test_recommended_level_and_the_static_test(pipeline_results: Path) -> None:
 def test_steady_states_per_amplitude(pipeline_results: Path) -> None:
     rigid = simulated_pulloffs(pipeline_results, "rigid")["steady_states"]
     compliant = simulated_pulloffs(pipeline_results, "compliant")["steady_states"]
-    check("({14}–{31} steady states per amplitude)", [rigid.min(), rigid.max()])
+    check("({14}–{27} steady states per amplitude)", [rigid.min(), rigid.max()])
     check("({25}–{52} steady states per amplitude, including the Brent polish", [compliant.min(), compliant.max()])
 
 
@@ -396,11 +396,16 @@ def test_j_integral_accuracy(pipeline_results: Path) -> None:
 
 
 def test_shooting_self_consistency(pipeline_results: Path) -> None:
-    """Column "rtol 1e-13 diff" of the converged (status ok) rigid n = 0.531 cases of benchmarks/simulate.txt."""
+    """Column "rtol 1e-13 diff" of the converged (status ok) rigid n = 0.531 cases of benchmarks/simulate.txt.
+
+    A row is the case (3 words), omega_check, status, periods, cpu min, cpu med, wall ms, then the difference.
+    """
     lines = (pipeline_results / ARTEFACTS["simulate"]).read_text().splitlines()
-    diffs = [float(line.split()[8]) for line in lines if line.startswith("rigid n=0.531") and " ok " in line]
+    header = next(line for line in lines if line.startswith("case"))
+    assert "cpu min  cpu med  wall ms rtol 1e-13 diff" in header, header
+    diffs = [float(line.split()[9]) for line in lines if line.startswith("rigid n=0.531") and " ok " in line]
     assert len(diffs) == 14
-    check("self-consistent to <= {1.3e-9} between rtol 1e-12 and 1e-13", [max(diffs)])
+    check("self-consistent to <= {4.5e-10} between rtol 1e-12 and 1e-13", [max(diffs)])
 
 
 def test_speed_against_error(pipeline_results: Path) -> None:

@@ -290,7 +290,8 @@ def _reference_closure(path: Path) -> frozenset[str]:
     """Package files (relative to the repository) that running ``path`` loads, by the record above."""
     out = subprocess.run([sys.executable, "-c", _REFERENCE, *_named_modules(path)], capture_output=True, text=True,
                          check=True, cwd=ROOT)
-    return frozenset(Path(f).resolve().relative_to(ROOT).as_posix() for f in out.stdout.split())
+    # one path per line: a checkout under a path with spaces must not split one
+    return frozenset(Path(f).resolve().relative_to(ROOT).as_posix() for f in out.stdout.splitlines())
 
 
 _SOURCES = sorted((ROOT / "workflow/scripts").glob("*.py")) + sorted((ROOT / "notebooks").glob("*.ipynb"))
