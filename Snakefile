@@ -8,6 +8,7 @@ import sys
 from snakemake.utils import min_version, validate
 
 from vibroadhesion.core.levels import names
+from vibroadhesion.pipeline.data import DataError, check_inputs
 
 min_version("9.0")
 
@@ -16,12 +17,20 @@ configfile: "workflow/config.yaml"
 
 
 validate(config, "workflow/schemas/config.schema.yaml")
-# The levels that may supply the figures' parameters are the registry's (vibroadhesion.core.levels).
-if config["fit"]["figures_use"] not in names("figures"):
+# Any fitted level of the registry (vibroadhesion.core.levels) may supply the figures' parameters.
+if config["fit"]["figures_use"] not in names("fit"):
     sys.exit(
         f"workflow/config.yaml: fit.figures_use = {config['fit']['figures_use']!r} is not one of "
-        f"{', '.join(names('figures'))}"
+        f"{', '.join(names('fit'))}"
     )
+
+
+# The user's inputs are checked before any job is planned: a rejected edit stops here with one line naming
+# the file, row and column, and changes nothing in results/ (rule ingest writes their canonical copies).
+try:
+    check_inputs(config["data"]["setup"], config["data"]["pulloff"])
+except DataError as error:
+    sys.exit(f"error: {error}")
 
 
 include: "workflow/rules/common.smk"

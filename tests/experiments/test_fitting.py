@@ -13,7 +13,9 @@ import pandas as pd
 import pytest
 from conftest import AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
-from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
+from vibroadhesion.core.records import Pulloff
+from vibroadhesion.experiments import fitting
+from vibroadhesion.experiments.fitting import distinct_conditions, fit_gent_schultz, parameters_from_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
@@ -116,3 +118,88 @@ def test_zero_rows_returns_published_parameters(model: str) -> None:
     assert summary["rows"] == 0
     assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}
     assert parameters_from_fit(summary) == PUBLISHED
+
+
+# ----------------------------------------------------------------------------- statuses, rows, static tests
+
+
+def _table(rows: list[tuple[float, float, float]]) -> pd.DataFrame:
+    f, h1, force = (np.array(c, dtype=float) for c in zip(*rows, strict=True))
+    return pd.DataFrame({"frequency_hz": f, "h1_um": h1, "pulloff_mN": force, "source": "hand",
+                         "line": np.arange(2, 2 + f.size)})
+
+
+def test_distinct_conditions_keep_the_order_of_first_appearance() -> None:
+    f, h1, index = distinct_conditions(np.array([300.0, 200.0, 300.0, 300.0]), np.array([40.0, 40.0, 40.0, 60.0]))
+    assert f.tolist() == [300.0, 200.0, 300.0] and h1.tolist() == [40.0, 40.0, 60.0]
+    assert index.tolist() == [0, 1, 0, 2]
+
+
+@pytest.mark.parametrize("model", ["leading", "refined"])
+def test_replicated_rows_give_the_estimates_of_the_rows_once(model: str) -> None:
+    """Least squares with every residual twice has the same minimiser. The search stops on a relative cost change
+    below ftol = 1e-12, which places it within ~sqrt(ftol) = 1e-6 (relative, in ln theta) of the minimum along a
+    flat direction: agreement to 1e-6 (measured 1e-8); a wrong weighting of replicates moves the noisy fit by ~1 %."""
+    rows = _rows(FREQUENCIES_HZ, model, noise=0.01, seed=3)
+    once = _estimates(fit_gent_schultz(rows, model, PUBLISHED, **GEOMETRY))
+    twice = _estimates(fit_gent_schultz(pd.concat([rows, rows], ignore_index=True), model, PUBLISHED, **GEOMETRY))
+    assert all(abs(twice[k] / once[k] - 1) < 1e-6 for k in once), (once, twice)
+
+
+@pytest.mark.parametrize("model", ["leading", "refined", "exact_averaging", "exact_averaging_force_minimum"])
+def test_four_plausible_rows_end_in_a_status_not_an_exception(model: str) -> None:
+    """The rows of issue 13 that ended in 'Singular matrix' (uncaught LinAlgError): every level ends in a status."""
+    rows = _table([(200, 20, 130), (200, 60, 700), (300, 40, 420), (400, 100, 1300)])
+    summary = fit_gent_schultz(rows, model, PUBLISHED, **GEOMETRY)
+    assert summary["status"] in ("fitted", "at_bound", "not_identifiable", "failed"), summary
+    if summary["status"] in ("not_identifiable", "failed"):
+        assert summary["note"] and all(summary["parameters"][k]["std_error"] is None for k in ("w0", "n", "v0"))
+
+
+def test_one_condition_replicated_cannot_separate_w0_and_n() -> None:
+    """Three replicates of one (f, h1): the leading force depends on (w0, n) through one number, so J has rank 1 < 2:
+    not_identifiable, no standard errors."""
+    rows = _rows([300.0], "leading").iloc[[1, 1, 1]].reset_index(drop=True)
+    summary = fit_gent_schultz(rows, "leading", PUBLISHED, **GEOMETRY)
+    assert summary["status"] == "not_identifiable", summary
+    assert "lower rank" in summary["note"]
+    assert all(summary["parameters"][k]["std_error"] is None for k in ("w0", "n"))
+
+
+def test_two_rows_keep_the_published_values_and_say_so() -> None:
+    summary = fit_gent_schultz(_rows([300.0], "leading").iloc[:2], "leading", PUBLISHED, **GEOMETRY)
+    assert summary["status"] == "not_identifiable" and "2 rows" in summary["note"]
+    assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}
+
+
+def test_a_model_without_solution_fails_that_level_with_its_reason(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A level whose pull-off has no solution at a trial point ends as 'failed' with the reason, published values
+    kept and no standard errors; the exception does not escape (the other levels go on)."""
+    rows = _rows(FREQUENCIES_HZ, "leading")
+
+    def no_solution(model, params, frequency_hz, h1_um, **geometry):
+        return Pulloff.unsolved(model, "no_solution", "no root of Eq. (72)", shape=np.shape(h1_um))
+
+    monkeypatch.setattr(fitting, "predict_pulloff", no_solution)
+    summary = fit_gent_schultz(rows, "leading", PUBLISHED, **GEOMETRY)
+    assert summary["status"] == "failed" and "no solution" in summary["note"], summary
+    assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}
+
+
+def test_static_jkr_rows_pin_w0_by_eq70() -> None:
+    """h1 = 0: no vibration, the pull-off is |P_JKR| = (3 pi/2) R w0 (Eq. 70) at every level. Static rows alone
+    give w0 = |P|/((3 pi/2) R) but no n (not_identifiable); with the vibrated rows of TRUE both are recovered (1e-6)."""
+    jkr_mN = 1.5 * np.pi * RADIUS * TRUE.w0 * 1e3
+    static = _table([(0.0, 0.0, jkr_mN)] * 3)
+    alone = fit_gent_schultz(static, "leading", PUBLISHED, **GEOMETRY)
+    assert alone["status"] == "not_identifiable"
+    rows = pd.concat([static.iloc[:1], _rows([300.0], "leading").iloc[[0, 4]]], ignore_index=True)
+    est = _estimates(fit_gent_schultz(rows, "leading", PUBLISHED, **GEOMETRY))
+    assert abs(est["w0"] / TRUE.w0 - 1) < 1e-6 and abs(est["n"] / TRUE.n - 1) < 1e-6, est
+
+
+def test_static_rows_are_not_a_frequency_for_v0() -> None:
+    """A static row has no excitation: with vibrated rows at one frequency, v0 stays not identifiable."""
+    rows = pd.concat([_table([(0.0, 0.0, 70.0)]), _rows([300.0], "refined")], ignore_index=True)
+    summary = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
+    assert summary["v0_identifiable"] is False and "1 frequency" in summary["v0_note"], summary["v0_note"]

@@ -20,8 +20,8 @@ from mpmath_reference import j_integrals_mp
 from vibroadhesion.core import groups, jkr, levels
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
-from vibroadhesion.models.leading_pulloff import critical_abar_leading, pulloff_leading, pulloff_lhs_leading
-from vibroadhesion.models.refined import critical_abar_refined, pulloff_lhs_refined, pulloff_refined
+from vibroadhesion.models.leading_pulloff import critical_internal_variable_leading, pulloff_leading, pulloff_lhs_leading
+from vibroadhesion.models.refined import critical_internal_variable_refined, pulloff_lhs_refined, pulloff_refined
 from vibroadhesion.numerics.roots import NoRootError
 
 # ----------------------------------------------------------------------------- Eq. (72)
@@ -32,7 +32,7 @@ from vibroadhesion.numerics.roots import NoRootError
 def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: float) -> None:
     """Reference: Eq. (72), (chi0^2/3) J0^{1/3} |Jc1| = eta1, with 30-digit mpmath J at the returned root; 1e-12."""
     law = GentSchultz(n)
-    Abar = critical_abar_leading(eta1, CHI0, law)
+    Abar = critical_internal_variable_leading(eta1, CHI0, law)
     assert Abar > 0
     j0, jc1, _ = j_integrals_mp(Abar, n)
     lhs = mp.mpf(CHI0) ** 2 / 3 * mp.cbrt(j0) * abs(jc1)
@@ -66,8 +66,8 @@ def test_eq72_and_eq106_lhs_strictly_increasing_as_proved(n: float) -> None:
 def test_eta1_zero_gives_abar_zero_and_ratio_exactly_one() -> None:
     """Limit h1 -> 0: no vibration, Abar_cr = 0 and P_cr / P_cr^JKR = J0(0)^2 = 1 exactly (Eq. 71)."""
     law = GentSchultz(N_PUBLISHED)
-    assert critical_abar_leading(0.0, CHI0, law) == 0.0
-    assert critical_abar_refined(0.0, CHI0, 1e6, law) == 0.0
+    assert critical_internal_variable_leading(0.0, CHI0, law) == 0.0
+    assert critical_internal_variable_refined(0.0, CHI0, 1e6, law) == 0.0
     lead = pulloff_leading(0.0, CHI0, law)
     ref = pulloff_refined(0.0, CHI0, 1e6, law)
     assert float(lead.Abar_cr) == 0.0 and float(ref.Abar_cr) == 0.0
@@ -118,13 +118,13 @@ def test_refined_tends_to_leading_as_omega_check_to_infinity(n: float, eta1: flo
     1e-14 up to rounding for |z| < 10, and 2e-13 at Abar = 1e-43 (n = 0.05, eta1 = 1e-6).
     """
     law = GentSchultz(n)
-    lead = critical_abar_leading(eta1, CHI0, law)
+    lead = critical_internal_variable_leading(eta1, CHI0, law)
     j0, jc1, j1 = (float(x) for x in j_integrals_mp(lead, n))
     term_ratio = (3 * lead / (CHI0 * 1e14)) ** 2 * j0 ** (2 / 3) * (1 - j1 / (3 * j0)) ** 2 / jc1**2
     assert term_ratio < 1e-12  # precondition of the limit for this case
-    assert abs(critical_abar_refined(eta1, CHI0, 1e14, law) / lead - 1) < 1e-9
+    assert abs(critical_internal_variable_refined(eta1, CHI0, 1e14, law) / lead - 1) < 1e-9
     tol = 2 * (1e-14 + 4 * np.finfo(float).eps * abs(math.log(lead)))
-    assert abs(critical_abar_refined(eta1, CHI0, math.inf, law) / lead - 1) < tol
+    assert abs(critical_internal_variable_refined(eta1, CHI0, math.inf, law) / lead - 1) < tol
 
 
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
@@ -152,7 +152,7 @@ def test_eq106_root_satisfies_printed_equation_with_mpmath_j(omega_check: float,
     chi0^4/9 J0^{2/3} Jc1^2 + chi0^2/omega^2 Abar^2 J0^{4/3} (1 - J1/(3 J0))^2 = eta1^2.
     """
     eta1 = ETA1
-    Abar = critical_abar_refined(eta1, CHI0, omega_check, GentSchultz(n))
+    Abar = critical_internal_variable_refined(eta1, CHI0, omega_check, GentSchultz(n))
     j0, jc1, j1 = j_integrals_mp(Abar, n)
     c, a, w = mp.mpf(CHI0), mp.mpf(Abar), mp.mpf(omega_check)
     lhs = c**4 / 9 * mp.cbrt(j0) ** 2 * jc1**2 + c**2 / w**2 * a**2 * mp.cbrt(j0) ** 4 * (1 - j1 / (3 * j0)) ** 2
@@ -198,18 +198,18 @@ def test_bounded_lhs_rate_law_raises_no_root_error() -> None:
     law = Saturating()
     assert 3 * 1e-2 / CHI0**2 > 1.7
     with pytest.raises(NoRootError):
-        critical_abar_leading(1e-2, CHI0, law)
+        critical_internal_variable_leading(1e-2, CHI0, law)
     unsolved = pulloff_leading(np.array([1e-6, 1e-2]), CHI0, law)
     assert unsolved.status.tolist() == ["ok", "no_solution"] and np.all(np.isnan(unsolved.pulloff_ratio[1:]))
     with pytest.raises(NoRootError):
-        critical_abar_refined(1e-2, CHI0, math.inf, law)
+        critical_internal_variable_refined(1e-2, CHI0, math.inf, law)
 
 
 def test_bounded_lhs_rate_law_small_eta1_root_satisfies_eq72_with_mpmath() -> None:
     """Reference: Eq. (72) with the Saturating law's J0, Jc1 by mpmath quadrature of Eqs. (28), (29); 1e-10."""
     law = Saturating()
     eta1 = 1e-6
-    Abar = critical_abar_leading(eta1, CHI0, law)
+    Abar = critical_internal_variable_leading(eta1, CHI0, law)
     j0, jc1 = _saturating_j_mp(Abar)
     lhs = mp.mpf(CHI0) ** 2 / 3 * mp.cbrt(j0) * abs(jc1)
     residual = float(abs(lhs / mp.mpf(eta1) - 1))
@@ -220,9 +220,9 @@ def test_bounded_lhs_rate_law_small_eta1_root_satisfies_eq72_with_mpmath() -> No
 def test_invalid_eta1_raises_value_error(bad: float) -> None:
     """eta1 = h1/R is a finite nonnegative ratio (Eq. 65)."""
     with pytest.raises(ValueError):
-        critical_abar_leading(bad, CHI0, GentSchultz(N_PUBLISHED))
+        critical_internal_variable_leading(bad, CHI0, GentSchultz(N_PUBLISHED))
     with pytest.raises(ValueError):
-        critical_abar_refined(bad, CHI0, 1e6, GentSchultz(N_PUBLISHED))
+        critical_internal_variable_refined(bad, CHI0, 1e6, GentSchultz(N_PUBLISHED))
 
 
 # ----------------------------------------------------------------------------- groups and JKR

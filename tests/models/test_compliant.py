@@ -33,7 +33,7 @@ from vibroadhesion.models.compliant import (
     residual,
     residual_linear,
     solutions_by_scan,
-    static_abar_m,
+    static_abar_0,
     trace_response_curve,
 )
 from vibroadhesion.models.leading_pulloff import pulloff_closure
@@ -128,9 +128,9 @@ def test_three_solutions_between_the_folds_each_satisfying_eqs_87_and_90_to_1e10
     for omega_bar in (lo + 0.05 * (hi - lo), 0.5 * (lo + hi), hi - 0.05 * (hi - lo)):
         on_curve = sorted(solved(folded.steady_states_at(omega_bar, LAW)), key=lambda s: s[1])
         assert len(on_curve) == 3
-        for abar_m, abar in on_curve:
-            r87, r90 = residual_linear(omega_bar, abar_m, abar, FOLDING, CHI0, ETA1, LAW)
-            assert abs(r87) < 1e-10 and abs(r90) < 1e-10, (omega_bar, abar_m, abar, r87, r90)
+        for abar_m, Abar in on_curve:
+            r87, r90 = residual_linear(omega_bar, abar_m, Abar, FOLDING, CHI0, ETA1, LAW)
+            assert abs(r87) < 1e-10 and abs(r90) < 1e-10, (omega_bar, abar_m, Abar, r87, r90)
         scanned = sorted(solved(solutions_by_scan(omega_bar, FOLDING, CHI0, ETA1, LAW, SCAN)), key=lambda s: s[1])
         assert len(scanned) == 3
         assert np.allclose(np.array(on_curve), np.array(scanned), rtol=1e-9, atol=0)
@@ -162,7 +162,7 @@ def test_the_records_of_the_compliant_level_are_sorted_and_say_where_there_is_no
         assert record.level == "refined" and record.status.tolist() == ["no_solution"] and record.message
         assert np.isnan(record.abar_m).all()
     assert np.isnan(below.Abar).all() and np.isnan(no_pulloff.pulloff_ratio).all()
-    diverged = newton_at_frequency(2.0, FOLDING, CHI0, ETA1, LAW, (static_abar_m(FOLDING, CHI0), 1e-100))
+    diverged = newton_at_frequency(2.0, FOLDING, CHI0, ETA1, LAW, (static_abar_0(FOLDING, CHI0), 1e-100))
     assert diverged.status == "not_converged" and np.isnan(diverged.Abar) and "Newton" in diverged.message
 
 
@@ -177,19 +177,19 @@ def test_zeta_zero_anti_resonance_splits_the_curve_into_two_pieces_ending_in_the
     lower, upper = folded.pieces
     for piece, side in ((lower, -1.0), (upper, 1.0)):
         end = piece.points[-1]
-        assert folded.a_over_am(end[None, :])[0] < NOTCH_FLOOR
+        assert folded.A_over_am(end[None, :])[0] < NOTCH_FLOOR
         assert side * end[0] > 0 and abs(end[0]) < 1e-2
-        assert abs(math.exp(end[1]) / static_abar_m(FOLDING, CHI0) - 1) < 1e-6
+        assert abs(math.exp(end[1]) / static_abar_0(FOLDING, CHI0) - 1) < 1e-6
 
 
 def test_zeta_zero_at_omega_bar_one_is_exact_and_nearby_solutions_tend_to_it() -> None:
     """Just off omega_bar = 1 (1 +- 1e-9) Newton from the static state converges to Abar < 1e-12 and
     abar_m within 1e-9 of the static root of Eq. (82); the Fig. 5 table carries the exact point.
     """
-    static = static_abar_m(FOLDING, CHI0)
+    static = static_abar_0(FOLDING, CHI0)
     for omega_bar in (1 - 1e-9, 1 + 1e-9):
-        (abar_m, abar), = solved(newton_at_frequency(omega_bar, FOLDING, CHI0, ETA1, LAW, (static, 1e-14)))
-        assert abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
+        (abar_m, Abar), = solved(newton_at_frequency(omega_bar, FOLDING, CHI0, ETA1, LAW, (static, 1e-14)))
+        assert Abar < 1e-12 and abs(abar_m / static - 1) < 1e-9
     curves, _, _ = fig5_tables([FOLDING], CHI0, ETA1, N_PUBLISHED, {}, (0.1, 50.0), 20)
     exact = curves[curves["branch"] == "anti-resonance"]
     assert len(exact) == 1 and exact["omega_bar"].iloc[0] == 1.0 and exact["Abar"].iloc[0] == 0.0
@@ -217,17 +217,17 @@ def test_amplitude_residual_at_a_cr_tends_to_half_the_log_of_printed_eq_67(kappa
     """
     nu0 = 1e-15
     p = Fixation.compliant(kappa, zeta, nu0, 0.0)
-    for abar in (0.01, 3.0, 1e4):
-        ours = amplitude_residual_on_closure(np.log([abar]), math.log(omega_bar), p, CHI0, ETA1, LAW, pulloff_closure)[0]
+    for Abar in (0.01, 3.0, 1e4):
+        ours = amplitude_residual_on_closure(np.log([Abar]), math.log(omega_bar), p, CHI0, ETA1, LAW, pulloff_closure)[0]
         with mp.workdps(30):
-            printed = printed_eq_67_log_excess(abar, kappa, omega_bar, zeta, ETA1, j_integrals_mp(abar, LAW.n)[:2])
-        assert abs(ours - 0.5 * printed) < 1e-12 + 10 * abar * nu0 / omega_bar
+            printed = printed_eq_67_log_excess(Abar, kappa, omega_bar, zeta, ETA1, j_integrals_mp(Abar, LAW.n)[:2])
+        assert abs(ours - 0.5 * printed) < 1e-12 + 10 * Abar * nu0 / omega_bar
 
 
 def test_static_contact_radius_solves_eq_82() -> None:
     """Eq. (82) in a_0/R (not the a_o-scaled Eq. 87 the code uses), mu = 1e-4, kappa = 0.01, in mpmath: 1e-12."""
     p = Fixation.compliant(kappa=0.01, zeta=0.0, nu0=NU0, mu=1e-4)
-    r = mp.mpf(static_abar_m(p, CHI0)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
+    r = mp.mpf(static_abar_0(p, CHI0)) * mp.mpf(2) ** (mp.mpf(1) / 3) * mp.mpf(3) ** (-mp.mpf(2) / 3) * mp.mpf(CHI0)
     lhs = r**2 * (mp.mpf(4) / 3 * r + mp.mpf(p.kappa)) - mp.sqrt(2) * mp.mpf(CHI0) ** 1.5 / 3 * mp.sqrt(r) * (2 * r + mp.mpf(p.kappa))
     assert abs(float(lhs / mp.mpf(p.mu) - 1)) < 1e-12
 
@@ -243,9 +243,9 @@ def test_stiff_fixation_reproduces_rigid_figs_6_and_7_to_1e6(omega_bar: float, z
     The differences are O(1/kappa): tolerance 1e-6.
     """
     p = Fixation.compliant(kappa=1e12, zeta=zeta, nu0=NU0, mu=0.0)
-    (abar_m, abar), = solved(solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN))
+    (abar_m, Abar), = solved(solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN))
     rigid = nominal_point_contact(ETA1, omega_bar / NU0, CHI0, LAW)
-    assert abs(abar / float(rigid.Abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
+    assert abs(Abar / float(rigid.Abar) - 1) < 1e-6 and abs(abar_m / float(rigid.abar_m) - 1) < 1e-6
     roots = pulloff_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN)
     assert roots.level == "refined" and roots.status.tolist() == ["ok"]
     abar_cr = float(roots.Abar_cr[0])
@@ -287,6 +287,6 @@ def test_soft_fixation_reproduces_the_free_indenter_eqs_57_to_59(beta: float) ->
     omega_bar = math.sqrt(beta / kappa)
     found = solved(solutions_by_scan(omega_bar, p, CHI0, ETA1, LAW, SCAN))
     assert len(found) == 1
-    abar_m, abar = found[0]
-    reference_am, reference_abar = free_indenter(beta, mu, N_PUBLISHED, (1.1 * abar_m, 0.9 * abar))
-    assert abs(abar_m / reference_am - 1) < 1e-6 and abs(abar / reference_abar - 1) < 1e-6, (found, reference_am, reference_abar)
+    abar_m, Abar = found[0]
+    reference_am, reference_Abar = free_indenter(beta, mu, N_PUBLISHED, (1.1 * abar_m, 0.9 * Abar))
+    assert abs(abar_m / reference_am - 1) < 1e-6 and abs(Abar / reference_Abar - 1) < 1e-6, (found, reference_am, reference_Abar)

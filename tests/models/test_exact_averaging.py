@@ -23,7 +23,8 @@ from conftest import C_O, CHI0, N_PUBLISHED, RADIUS
 from scipy.integrate import solve_ivp
 from scipy.optimize import minimize_scalar
 
-from vibroadhesion.core.groups import amplitude_in_contact_units, contact_radius_ratio
+from vibroadhesion.core import groups
+from vibroadhesion.core.groups import contact_radius_ratio
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.exact_averaging import (
     mean_state,
@@ -109,9 +110,9 @@ def test_alpha_star_matches_30_digit_mpmath_root(n: float) -> None:
     betas = CASES[n]
     cycle = frozen_radius_cycle(np.array(betas), GentSchultz(n))
     for k, beta in enumerate(betas):
-        alpha, abar, s_min = frozen_cycle_mp(beta, n, float(cycle.sqrt_w_min[k]))
+        alpha, Abar, s_min = frozen_cycle_mp(beta, n, float(cycle.sqrt_w_min[k]))
         assert abs(float(cycle.alpha[k]) / alpha - 1) < 1e-13, (beta, float(cycle.alpha[k]), alpha)
-        assert abs(float(cycle.abar[k]) / abar - 1) < 1e-12, (beta, float(cycle.abar[k]), abar)
+        assert abs(float(cycle.Abar[k]) / Abar - 1) < 1e-12, (beta, float(cycle.Abar[k]), Abar)
         assert abs(float(cycle.sqrt_w_min[k]) / s_min - 1) < 1e-12, (beta, float(cycle.sqrt_w_min[k]), s_min)
 
 
@@ -119,7 +120,7 @@ def test_beta_zero_is_the_static_state_exactly_and_shapes_are_kept() -> None:
     """beta = 0: s = 1 at all times, so alpha* = 1 and Abar = 0 exactly; output shape = input shape."""
     cycle = frozen_radius_cycle(np.zeros((2, 3)), GentSchultz(N_PUBLISHED))
     assert cycle.alpha.shape == (2, 3)
-    assert np.all(cycle.alpha == 1.0) and np.all(cycle.abar == 0.0) and np.all(cycle.sqrt_w_min == 1.0)
+    assert np.all(cycle.alpha == 1.0) and np.all(cycle.Abar == 0.0) and np.all(cycle.sqrt_w_min == 1.0)
 
 
 # ----------------------------------------------------------------- closed-form limits
@@ -188,7 +189,7 @@ def test_root_below_the_resolvable_floor_is_beta_and_n_above_4_without_steady_st
     closing integral stays finite as alpha -> beta and the opening one wins for large beta: no root.
     """
     cycle = frozen_radius_cycle(np.array([1e3]), GentSchultz(4.0))
-    assert float(cycle.alpha[0]) == 1e3 and float(cycle.sqrt_w_min[0]) == 0.0 and float(cycle.abar[0]) > 0
+    assert float(cycle.alpha[0]) == 1e3 and float(cycle.sqrt_w_min[0]) == 0.0 and float(cycle.Abar[0]) > 0
     assert float(frozen_radius_cycle(np.array([0.5]), GentSchultz(6.0)).alpha[0]) > 1.0
     with pytest.raises(NoSteadyStateError):
         frozen_radius_cycle(np.array([0.5, 10.0]), GentSchultz(6.0))
@@ -332,7 +333,7 @@ def test_force_minimum_equals_brent_minimisation_of_the_mean_force(n: float) -> 
     fast = pulloff_at_force_minimum(eta1, CHI0, law)
     for i, (e, eh) in enumerate(zip(eta1, etahat)):
         m = max(1.0, math.sqrt(eh))
-        opt = minimize_scalar(lambda z: float(mean_state(math.exp(z), e, CHI0, law).mean_force),
+        opt = minimize_scalar(lambda z: float(mean_state(math.exp(z), e, CHI0, law).phat_m),
                               bounds=(math.log(0.05 * m), math.log(20 * m)), method="bounded", options={"xatol": 1e-12})
         assert abs(float(fast.pulloff_ratio[i]) / (opt.fun / -0.75) - 1) < 1e-8
         assert abs(float(fast.abar_m[i]) / math.exp(opt.x) - 1) < 1e-4
@@ -352,7 +353,7 @@ def test_pulloff_criteria_are_consistent_and_reduce_to_jkr() -> None:
         assert abs(float(first.abar_m) ** 1.5 / (0.75 * float(first.sqrt_w_eff_ratio)) - 1) < 1e-13
         assert abs(float(first.pulloff_ratio) / float(first.sqrt_w_eff_ratio) ** 2 - 1) < 1e-14
         assert float(second.pulloff_ratio) >= float(first.pulloff_ratio)
-        around = mean_state(float(second.abar_m) * np.array([1 - 1e-3, 1.0, 1 + 1e-3]), eta1, CHI0, law).mean_force
+        around = mean_state(float(second.abar_m) * np.array([1 - 1e-3, 1.0, 1 + 1e-3]), eta1, CHI0, law).phat_m
         assert around[1] < around[0] and around[1] < around[2]
         assert abs(float(around[1]) / -0.75 / float(second.pulloff_ratio) - 1) < 1e-14
     tiny = 1e-4 * C_O**2
@@ -377,16 +378,16 @@ def test_pulloff_without_a_drift_free_cycle_is_the_status_no_solution(pulloff) -
 
 
 def test_mean_state_at_the_nominal_point_contact_has_zero_offset() -> None:
-    """deltabar0(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
+    """base_offset(abar_m) = abar_m^2 - alpha sqrt(abar_m) vanishes at the nominal point contact's abar_m
     (the defining equation of Sec. 3.5.4), to 1e-13; the scale helpers match their definitions.
     """
     law = GentSchultz(N_PUBLISHED)
     eta1 = 60e-6 / RADIUS
     sol = nominal_point_contact(eta1, 1e6, CHI0, law)
     state = mean_state(np.array([float(sol.abar_m)]), eta1, CHI0, law)
-    assert abs(float(state.deltabar0[0])) < 1e-13 * float(sol.abar_m) ** 2
+    assert abs(float(state.base_offset[0])) < 1e-13 * float(sol.abar_m) ** 2
     assert abs(contact_radius_ratio(CHI0) / C_O - 1) < 1e-15
-    assert abs(float(amplitude_in_contact_units(eta1, CHI0)) / (eta1 / C_O**2) - 1) < 1e-15
+    assert abs(float(groups.etahat(eta1, CHI0)) / (eta1 / C_O**2) - 1) < 1e-15
 
 
 @pytest.mark.parametrize("p", [0.25, 1.883, 20.0])

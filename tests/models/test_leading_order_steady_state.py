@@ -48,7 +48,7 @@ from vibroadhesion.models.leading_order import (
     scan_segments,
     steady_states,
 )
-from vibroadhesion.models.leading_pulloff import critical_abars, critical_log_excess, pulloff_leading
+from vibroadhesion.models.leading_pulloff import critical_internal_variables, critical_log_excess, pulloff_leading
 from vibroadhesion.models.refined import nominal_point_contact
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -115,17 +115,17 @@ def test_rigid_limit_equals_eqs_55_56_to_1e9(n: float, base_offset: float) -> No
     in Abar. The rigid fixation must agree with it to 1e-9, and kappa = 1e12 (omega_bar = 5, zeta = 0.05)
     with the rigid one to 1e-10: the O(1/kappa) terms are ~1e-12 (mu/kappa, 2 c_o abar_m/|d|). For base_offset >= 0 the root is
     unique (proof in steady_states' docstring); the tensile offset -0.2 also has one (no unstable branch
-    above abar_min, unlike the static case: vibration lifts deltabar_m near abar_m = 0). n = 0.05 (Abar ~ 1e35,
+    above abar_m_min, unlike the static case: vibration lifts deltabar_m near abar_m = 0). n = 0.05 (Abar ~ 1e35,
     slow in mpmath) and base_offset = 0 are covered by the nominal-point-contact test below.
     """
     law = GentSchultz(n)
 
-    def mean_radius(abar: float) -> mp.mpf:
-        return mp.mpf(ETA1) ** 2 / (2 * mp.pi * W0 * j_integrals_mp(abar, n)[1] ** 2)
+    def mean_radius(Abar: float) -> mp.mpf:
+        return mp.mpf(ETA1) ** 2 / (2 * mp.pi * W0 * j_integrals_mp(Abar, n)[1] ** 2)
 
-    def residual(abar: float) -> mp.mpf:
-        am = mean_radius(abar)
-        return am**2 - mp.sqrt(2 * mp.pi * W0 * am) * j_integrals_mp(abar, n)[0] - base_offset * A_O**2
+    def residual(Abar: float) -> mp.mpf:
+        am = mean_radius(Abar)
+        return am**2 - mp.sqrt(2 * mp.pi * W0 * am) * j_integrals_mp(Abar, n)[0] - base_offset * A_O**2
 
     rigid = solutions(steady_states(ETA1, Fixation.rigid(), CHI0, law, base_offset=base_offset))
     fixation, omega_check = spring(1e12, 5.0, 0.05, MU_SMALL)
@@ -149,12 +149,12 @@ def test_free_indenter_equals_eqs_57_59_to_1e9(n: float, beta: float) -> None:
     P_m/|P_JKR| = mu/((3/4)(a_o/R)^3) to 1e-10 (cancellation in Eq. 52).
     """
 
-    def mean_radius(abar: float) -> mp.mpf:
-        b = mp.sqrt(8 * mp.pi * W0) * j_integrals_mp(abar, n)[0]
+    def mean_radius(Abar: float) -> mp.mpf:
+        b = mp.sqrt(8 * mp.pi * W0) * j_integrals_mp(Abar, n)[0]
         return ((b + mp.sqrt(b**2 + mp.mpf(16) / 3 * MU_SMALL)) / (mp.mpf(8) / 3)) ** (mp.mpf(2) / 3)
 
-    def residual(abar: float) -> mp.mpf:
-        am, jc1 = mean_radius(abar), j_integrals_mp(abar, n)[1]
+    def residual(Abar: float) -> mp.mpf:
+        am, jc1 = mean_radius(Abar), j_integrals_mp(Abar, n)[1]
         xi_c = mp.sqrt(2 * mp.pi * W0 * am) * beta * jc1 - mp.sqrt(8 * mp.pi * W0 * am**3) * jc1
         return abs(xi_c) - beta * mp.mpf(ETA1)
 
@@ -166,7 +166,7 @@ def test_free_indenter_equals_eqs_57_59_to_1e9(n: float, beta: float) -> None:
 # ----------------------------------------------------------------- number of roots, counted along Abar
 
 
-def count_roots_along_abar(fixation_case: tuple[float, float, float], mu: float, n: float) -> tuple[int, np.ndarray]:
+def count_roots_along_Abar(fixation_case: tuple[float, float, float], mu: float, n: float) -> tuple[int, np.ndarray]:
     """Independent count: for each Abar on a grid of step 0.002 in ln Abar, Eq. (87) (h0 = hhat) gives
     one abar_m (one sign change in its coefficients for mu >= 0, Descartes; bisection in abar_m^(1/2)),
     and the sign changes of Eq. (43) with Eqs. (50)-(51) along that curve are the solutions. The grid
@@ -175,8 +175,8 @@ def count_roots_along_abar(fixation_case: tuple[float, float, float], mu: float,
     """
     k, m_omega2, c_omega = fixation_case
     chi = CHI0
-    abar = np.exp(np.arange(-25.0, 50.0 if n < 1 else 12.0, 0.002))
-    j0, jc1, _ = j_integrals(abar, n)
+    Abar = np.exp(np.arange(-25.0, 50.0 if n < 1 else 12.0, 0.002))
+    j0, jc1, _ = j_integrals(Abar, n)
     rhs = 3 ** (4 / 3) * mu / (2 ** (2 / 3) * chi**2)
 
     def eq87(s: np.ndarray) -> np.ndarray:
@@ -184,7 +184,7 @@ def count_roots_along_abar(fixation_case: tuple[float, float, float], mu: float,
         return (2 ** (7 / 3) * chi / 3 ** (5 / 3)) * x**3 + k * x**2 - j0 * (
             (2 ** (4 / 3) * chi / 3 ** (2 / 3)) * x**1.5 + k * np.sqrt(x)) - rhs
 
-    lo, hi = np.full_like(abar, 1e-6), 2.0 * (1.0 + np.cbrt(j0))
+    lo, hi = np.full_like(Abar, 1e-6), 2.0 * (1.0 + np.cbrt(j0))
     assert np.all(eq87(lo) < 0) and np.all(eq87(hi) > 0)
     for _ in range(80):
         mid = 0.5 * (lo + hi)
@@ -197,7 +197,7 @@ def count_roots_along_abar(fixation_case: tuple[float, float, float], mu: float,
     eq43 = xi_c**2 + xi_s**2 - ((k - m_omega2) ** 2 + c_omega**2) * ETA1**2
     assert eq43[0] < 0 < eq43[-1]
     changes = np.flatnonzero(np.sign(eq43[:-1]) != np.sign(eq43[1:]))
-    return len(changes), abar[changes]
+    return len(changes), Abar[changes]
 
 
 COUNT_CASES = [  # (n, (fixation with its mu, omega_check), (k, m omega^2, c omega)/(E* R), expected number of roots)
@@ -210,8 +210,8 @@ COUNT_CASES = [  # (n, (fixation with its mu, omega_check), (k, m omega^2, c ome
 
 
 @pytest.mark.parametrize(("n", "setting", "case", "expected"), COUNT_CASES)
-def test_number_of_roots_equals_independent_count_along_abar(n, setting, case, expected) -> None:
-    """All roots are returned: the count along Abar (see count_roots_along_abar) equals the solver's,
+def test_number_of_roots_equals_independent_count_along_Abar(n, setting, case, expected) -> None:
+    """All roots are returned: the count along Abar (see count_roots_along_Abar) equals the solver's,
     each returned Abar lies in a grid cell where the count found a sign change (cell width 0.2 %),
     and stability alternates from the largest root (stable) down. Cases: undamped above the fixation
     resonance (contact resonance at abar_m = 9.56, two extra roots), the same damped (no pole), free
@@ -220,7 +220,7 @@ def test_number_of_roots_equals_independent_count_along_abar(n, setting, case, e
     fixation, omega_check = setting
     assert fixation.d(omega_check) == pytest.approx(complex(case[0] - case[1], case[2]), rel=1e-14)
     sols = solutions(steady_states(ETA1, fixation, CHI0, GentSchultz(n), omega_check=omega_check))
-    count, cells = count_roots_along_abar(case, fixation.mu, n)
+    count, cells = count_roots_along_Abar(case, fixation.mu, n)
     assert len(sols) == count == expected
     for sol, cell in zip(sorted(sols, key=lambda s: s.Abar), cells):
         assert cell <= sol.Abar <= cell * math.exp(0.002) * (1 + 1e-12)
@@ -390,8 +390,8 @@ def test_amplitude_equation_at_a_cr_reproduces_eqs_67_69_and_72(kappa: float, om
     n = 0.531
     fixation, omega_check = spring(kappa, omega_bar, zeta)
     chi = mp.mpf(CHI0)
-    for abar in (0.01, 3.0, 1e4):
-        j0, jc1, _ = j_integrals_mp(abar, n)
+    for Abar in (0.01, 3.0, 1e4):
+        j0, jc1, _ = j_integrals_mp(Abar, n)
         abar_cr = float(mp.cbrt(mp.mpf(9) / 16) * mp.cbrt(j0) ** 2)
         amplitude = float(indentation_amplitude(abar_cr, float(jc1), CHI0))
         xi_c = chi**2 / 3 * mp.cbrt(j0) * (1 - omega_bar**2) * jc1 + chi**3 / (3 * kappa) * j0 * jc1
@@ -402,7 +402,7 @@ def test_amplitude_equation_at_a_cr_reproduces_eqs_67_69_and_72(kappa: float, om
         assert abs(amplitude / float(chi**2 / 3 * mp.cbrt(j0) * abs(jc1)) - 1) < 1e-13
 
 
-def printed_eq_67_log_excess(abar: float, kappa: float, omega_bar: float, zeta: float, eta1: float, j) -> float:
+def printed_eq_67_log_excess(Abar: float, kappa: float, omega_bar: float, zeta: float, eta1: float, j) -> float:
     """ln of the left-hand side of the printed Eq. (67), with Eqs. (68)-(69), over eta1^2, at J's ``j`` = (J0, Jc1)."""
     j0, jc1 = j
     chi = mp.mpf(CHI0)
@@ -421,18 +421,18 @@ def test_critical_log_excess_is_half_the_log_of_printed_eq_67(kappa: float, omeg
     n = 0.531
     law = GentSchultz(n)
     fixation, omega_check = spring(kappa, omega_bar, zeta)
-    for abar in (0.01, 3.0, 1e4, 1e7):
-        j0, jc1, _ = j_integrals_mp(abar, n)
-        ours = critical_log_excess(np.array([math.log(abar)]), ETA1, fixation, CHI0, law, omega_check)[0]
-        assert abs(2 * ours - printed_eq_67_log_excess(abar, kappa, omega_bar, zeta, ETA1, (j0, jc1))) < 1e-12
-        rigid = critical_log_excess(np.array([math.log(abar)]), ETA1, Fixation.rigid(), CHI0, law, math.inf)[0]
+    for Abar in (0.01, 3.0, 1e4, 1e7):
+        j0, jc1, _ = j_integrals_mp(Abar, n)
+        ours = critical_log_excess(np.array([math.log(Abar)]), ETA1, fixation, CHI0, law, omega_check)[0]
+        assert abs(2 * ours - printed_eq_67_log_excess(Abar, kappa, omega_bar, zeta, ETA1, (j0, jc1))) < 1e-12
+        rigid = critical_log_excess(np.array([math.log(Abar)]), ETA1, Fixation.rigid(), CHI0, law, math.inf)[0]
         assert abs(rigid - float(mp.log(mp.cbrt(j0) * abs(jc1) / (3 * mp.mpf(ETA1) / mp.mpf(CHI0) ** 2)))) < 1e-12
 
 
 @pytest.mark.parametrize(("kappa", "omega_bar", "zeta", "count"),
                          [(1e-3, 17.85, 0.01, 3), (1e-3, 17.85, 0.0, 3), (1e-2, 0.5, 0.05, 1), (1e-2, 3.0, 0.0, 3)])
 def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, omega_bar, zeta, count) -> None:
-    """Every root returned by critical_abars is a root of the printed Eqs. (67)-(69): the printed residual,
+    """Every root returned by critical_internal_variables is a root of the printed Eqs. (67)-(69): the printed residual,
     with 30-digit mpmath J's, changes sign between Abar (1 -+ 1e-9). Their number equals the sign changes of the
     printed residual on an independent grid (8001 points in ln Abar over [-40, 40], J's from the quadrature,
     which test_integrals checks against mpmath to 1e-12). Above the fixation's resonance a pair of roots
@@ -442,12 +442,12 @@ def test_compliant_pulloff_roots_are_the_roots_of_printed_eqs_67_to_69(kappa, om
     """
     n = 0.531
     fixation, omega_check = spring(kappa, omega_bar, zeta)
-    roots = critical_abars(ETA1, fixation, CHI0, GentSchultz(n), omega_check)
+    roots = critical_internal_variables(ETA1, fixation, CHI0, GentSchultz(n), omega_check)
     assert len(roots) == count and roots == sorted(roots)
-    for abar in roots:
-        lo, hi = (printed_eq_67_log_excess(abar * f, kappa, omega_bar, zeta, ETA1, j_integrals_mp(abar * f, n)[:2])
+    for Abar in roots:
+        lo, hi = (printed_eq_67_log_excess(Abar * f, kappa, omega_bar, zeta, ETA1, j_integrals_mp(Abar * f, n)[:2])
                   for f in (1 - 1e-9, 1 + 1e-9))
-        assert lo * hi < 0, (abar, lo, hi)
+        assert lo * hi < 0, (Abar, lo, hi)
     grid = np.exp(np.linspace(-40.0, 40.0, 8001))
     j0, jc1, _ = j_integrals(grid, n)
     excess = [printed_eq_67_log_excess(a, kappa, omega_bar, zeta, ETA1, (mp.mpf(float(x)), mp.mpf(float(y))))
@@ -491,7 +491,7 @@ def test_refined_compliant_pulloff_tends_to_the_leading_order_one_as_omega_check
     """
     law = GentSchultz(0.531)
     fixation, omega_check = spring(kappa, omega_bar, zeta)
-    leading = critical_abars(ETA1, fixation, CHI0, law, omega_check)
+    leading = critical_internal_variables(ETA1, fixation, CHI0, law, omega_check)
     roots = pulloff_by_scan(omega_bar, Fixation.compliant(kappa, zeta, nu0), CHI0, ETA1, law,
                             np.linspace(-40.0, 40.0, 4001))
     assert roots.level == "refined" and roots.found.all()
@@ -560,8 +560,8 @@ def test_balance_state_solves_printed_eq_43_and_returns_the_printed_eq_87_residu
     fixation, omega_check = spring(kappa, omega_bar, zeta, MU_SMALL)
     balance = MeanBalance(ETA1, fixation, CHI0, GentSchultz(n), omega_check, 0.0)
     for abar_m in (0.3, 1.0, 4.0):
-        f, abar, j0 = balance_state(math.log(abar_m), balance)
-        j0_mp, jc1_mp, _ = j_integrals_mp(abar, n)
+        f, Abar, j0 = balance_state(math.log(abar_m), balance)
+        j0_mp, jc1_mp, _ = j_integrals_mp(Abar, n)
         assert abs(printed_eq_43_ratio(abar_m, jc1_mp, kappa, omega_bar, zeta) - 1) < 1e-12
         assert abs(j0 / j0_mp - 1) < 1e-12
         terms = printed_eq_87_terms(abar_m, j0_mp, kappa, MU_SMALL)
@@ -570,14 +570,14 @@ def test_balance_state_solves_printed_eq_43_and_returns_the_printed_eq_87_residu
 
 def test_balance_state_for_rigid_fixation_is_eq_55_and_eq_56() -> None:
     """Rigid fixation: Abar solves Eq. (55), c_o^2 abar_m^(1/2) |Jc1(Abar)| = eta1 (a_o/R = c_o, Eq. 86), and F is
-    Eq. (56) as a residual, deltabar_m - deltabar_base = abar_m^2 - J0 abar_m^(1/2) - base_offset; 30-digit J's,
+    Eq. (56) as a residual, deltabar_m - base_offset = abar_m^2 - J0 abar_m^(1/2) - base_offset; 30-digit J's,
     tolerance 1e-12 as above.
     """
     n, base_offset = 4.0, 0.2
     balance = MeanBalance(ETA1, Fixation.rigid(), CHI0, GentSchultz(n), math.inf, base_offset)
     for abar_m in (0.3, 1.0, 4.0):
-        f, abar, j0 = balance_state(math.log(abar_m), balance)
-        j0_mp, jc1_mp, _ = j_integrals_mp(abar, n)
+        f, Abar, j0 = balance_state(math.log(abar_m), balance)
+        j0_mp, jc1_mp, _ = j_integrals_mp(Abar, n)
         assert abs(A_O**2 * mp.sqrt(abar_m) * abs(jc1_mp) / ETA1 - 1) < 1e-12
         assert abs(f - (abar_m**2 - j0_mp * mp.sqrt(abar_m) - base_offset)) < 1e-12 * abar_m**2
 
@@ -601,7 +601,7 @@ def test_monotone_tail_start_and_criterion_follow_the_closed_forms() -> None:
 
 @pytest.mark.parametrize("setting", [RIGID, free(0.3, MU_SMALL), spring(0.1, 2.0, 0.05, MU_SMALL)])
 def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_tail(setting) -> None:
-    """The scan of F in ln abar_m starts at ln abar_min in steps of SCAN_STEP; for the free indenter it is split
+    """The scan of F in ln abar_m starts at ln abar_m_min in steps of SCAN_STEP; for the free indenter it is split
     at the pole of Eq. (43), abar_m = beta/(2 c_o) (closed form, c_o = a_o/R), with F < 0 at the nodes next to
     it on both sides; it ends at the first node of the grid (past the refinement towards the pole) where abar_m > abar_turn and abar_m^(3/2) >= (3/4) J0, J0 from
     30-digit mpmath at the node's Abar (relative 1e-12 as above, far from the switch at these nodes).
@@ -627,10 +627,10 @@ def test_scan_segments_split_at_the_contact_resonance_and_end_at_the_monotone_ta
 
 
 @pytest.mark.parametrize(
-    "kwargs", [{"chi0": -1.0}, {"base_offset": math.inf}, {"abar_min": 0.0}, {"omega_check": 0.0}]
+    "kwargs", [{"chi0": -1.0}, {"base_offset": math.inf}, {"abar_m_min": 0.0}, {"omega_check": 0.0}]
 )
 def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
-    """chi0 > 0 (Eq. 64), a finite base offset, abar_min > 0 and omega_check > 0 (Eq. 105): ValueError; a rate
+    """chi0 > 0 (Eq. 64), a finite base offset, abar_m_min > 0 and omega_check > 0 (Eq. 105): ValueError; a rate
     law other than Gent-Schultz: TypeError (the proof that ends the scan needs it). mu >= 0 (Eq. 81) is the
     fixation's rule (tests/core/test_fixation.py).
     """
@@ -646,7 +646,7 @@ def test_steady_states_rejects_inputs_outside_its_domain(kwargs) -> None:
 
 
 def test_tensile_load_beyond_pulloff_has_no_solution() -> None:
-    """No steady state for a base pulled far from the indenter (rigid: deltabar_base = -10 is below
+    """No steady state for a base pulled far from the indenter (rigid: base_offset = -10 is below
     min deltabar_m; compliant: the same offset): one element of status no_solution, every number NaN,
     the reason in the message -- not a number.
     """

@@ -17,7 +17,6 @@ import pytest
 from conftest import AMPLITUDES_UM, CHI0, N_PUBLISHED, RADIUS, V0, W0
 from mpmath_reference import j_integrals_mp
 
-from vibroadhesion.core import levels
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
@@ -165,7 +164,7 @@ def test_fig7_high_frequency_limit_equals_fig4_leading_order_to_1e9(n: float) ->
     fig7 = fig7_table(AMPLITUDES_UM, np.array([HIGH_OMEGA_CHECK[n], math.inf]), chi0=CHI0, radius=RADIUS, n=n)
     w0 = W0  # J/m^2, Fig. 4 caption; E* chosen so that Eq. (64) gives chi0 = CHI0
     params = GentSchultzParameters(w0=w0, n=n, v0=V0)
-    fig4 = fig4_table(dict.fromkeys(levels.fig4_names(), params), [200.0], np.array(AMPLITUDES_UM),
+    fig4 = fig4_table(params, [200.0], np.array(AMPLITUDES_UM),
                               radius=RADIUS, reduced_modulus=9 * math.pi * w0 / (RADIUS * CHI0**3))
     leading = fig4[fig4["model"] == "leading"].set_index("h1_um")["pulloff_ratio"]
     for omega_check, rows in fig7.groupby("omega_check"):

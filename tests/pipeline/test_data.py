@@ -164,12 +164,12 @@ def test_columns_in_other_order_and_crlf(tmp_path: Path) -> None:
 
 
 def test_main_writes_canonical_csv_with_repr_floats(tmp_path: Path) -> None:
-    pulloff = _csv(tmp_path, "# c\n" + HEADER + "\n200,40,0.1,\"a, b\"\n400,60.5,1e3,lab\n")
+    pulloff = _csv(tmp_path, "# c\n" + HEADER + "\n200,40,20.1,\"a, b\"\n400,60.5,1e3,lab\n")
     out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
     assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n200.0,40.0,0.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    assert out_csv.read_text() == HEADER + "\n200.0,40.0,20.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
     back = data.read_canonical_pulloff(out_csv)
-    assert back["pulloff_mN"].tolist() == [0.1, 1000.0]
+    assert back["pulloff_mN"].tolist() == [20.1, 1000.0]
 
 
 # ----------------------------------------------------------------------------- pulloff.csv: bad input
@@ -190,10 +190,10 @@ BAD_CSV = [
     ("nan", HEADER + "\nnan,40,250,lab\n", 2, "frequency_hz", "not a finite number"),
     ("inf", HEADER + "\n200,40,inf,lab\n", 2, "pulloff_mN", "not a finite number"),
     ("empty-numeric", HEADER + "\n200,,250,lab\n", 2, "h1_um", "empty value"),
-    ("zero-frequency", HEADER + "\n0,40,250,lab\n", 2, "frequency_hz", "must be > 0"),
     ("negative-frequency", HEADER + "\n-200,40,250,lab\n", 2, "frequency_hz", "must be > 0"),
-    ("zero-amplitude", HEADER + "\n200,0,250,lab\n", 2, "h1_um", "must be > 0"),
-    ("negative-amplitude", HEADER + "\n200,-40,250,lab\n", 2, "h1_um", "must be > 0"),
+    ("negative-amplitude", HEADER + "\n200,-40,250,lab\n", 2, "h1_um", "must be >= 0 um (0: a static JKR test)"),
+    ("zero-frequency-with-vibration", HEADER + "\n0,40,250,lab\n", 2, "frequency_hz", "only for a static test"),
+    ("empty-frequency-with-vibration", HEADER + "\n,40,250,lab\n", 2, "frequency_hz", "empty value"),
     ("zero-force", HEADER + "\n200,40,0,lab\n", 2, "pulloff_mN", "must be > 0"),
     ("negative-force", HEADER + "\n200,40,-250,lab\n", 2, "pulloff_mN", "must be > 0"),
     ("amplitude-in-mm", HEADER + "\n200,0.04,250,lab\n", 2, "h1_um", "expected micrometres; looks like mm/m"),
@@ -201,7 +201,6 @@ BAD_CSV = [
     ("force-too-large", HEADER + "\n200,40,250000,lab\n", 2, "pulloff_mN", "above 1e5 mN"),
     ("empty-source", HEADER + "\n200,40,250,\n", 2, "source", "empty source"),
     ("blank-source", HEADER + "\n200,40,250,   \n", 2, "source", "empty source"),
-    ("duplicate-row", HEADER + "\n" + ROW + "\n# c\n200.0,40,2.5e2,lab\n", 4, "(all columns)", "repeats row 2"),
 ]
 
 
@@ -233,6 +232,58 @@ def test_missing_pulloff_file(tmp_path: Path) -> None:
 def test_rows_differing_only_in_source_are_not_duplicates(tmp_path: Path) -> None:
     rows = load_pulloff(_csv(tmp_path, HEADER + "\n200,40,250,run 1\n200,40,250,run 2\n"))
     assert rows["line"].tolist() == [2, 3]
+
+
+def test_replicate_rows_are_measurements_and_are_kept(tmp_path: Path) -> None:
+    """A test run twice gives the same row twice (a lab records replicates): both are read and both written."""
+    path = _csv(tmp_path, HEADER + "\n" + ROW + "\n# c\n200.0,40,2.5e2,lab\n")
+    rows = load_pulloff(path)
+    assert rows["line"].tolist() == [2, 4]
+    assert rows["pulloff_mN"].tolist() == [250.0, 250.0]
+    out_json, out_csv = tmp_path / "setup.json", tmp_path / "canonical.csv"
+    assert main([str(SETUP_YAML), str(path), str(out_json), str(out_csv)]) == 0
+    assert len(data.read_canonical_pulloff(out_csv)) == 2
+
+
+# Forces on the scale of newtons typed in the millinewton column. |P_JKR| = (3 pi/2) R w0 = 57.27 mN at the
+# published R = 51.5 mm and w0 = 0.236 J/m^2; the floor is 0.3 of it, 17.18 mN.
+JKR_MN = 1.5 * math.pi * RADIUS * W0 * 1e3
+
+
+def test_static_jkr_rows_need_no_frequency(tmp_path: Path) -> None:
+    """h1_um = 0 is a static JKR test: its frequency may be empty (read as 0, written as 0.0) or given."""
+    path = _csv(tmp_path, HEADER + "\n,0,60.0,static test\n200,0,61.0,static at the rig\n" + ROW + "\n")
+    rows = load_pulloff(path)
+    assert rows["frequency_hz"].tolist() == [0.0, 200.0, 200.0]
+    assert rows["h1_um"].tolist() == [0.0, 0.0, 40.0]
+    out_json, out_csv = tmp_path / "setup.json", tmp_path / "canonical.csv"
+    assert main([str(SETUP_YAML), str(path), str(out_json), str(out_csv)]) == 0
+    assert out_csv.read_text().splitlines()[1] == "0.0,0.0,60.0,static test"
+    assert data.read_canonical_pulloff(out_csv)["h1_um"].tolist() == [0.0, 0.0, 40.0]
+
+
+@pytest.mark.parametrize("force_mN", [0.165, 1.25, 0.299 * JKR_MN])
+def test_pulloff_in_newtons_is_refused_against_the_setup(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                                                         force_mN: float) -> None:
+    path = _csv(tmp_path, HEADER + "\n" + ROW + f"\n300,60,{force_mN!r},lab\n")
+    with pytest.raises(DataError) as info:
+        data.check_inputs(SETUP_YAML, path)
+    _assert_located(info.value, path, 3, "pulloff_mN", "looks like N, expected mN", "17.2 mN")
+    _assert_main_fails(tmp_path, SETUP_YAML, path, capsys, str(info.value))
+
+
+def test_pulloff_just_above_the_floor_is_accepted(tmp_path: Path) -> None:
+    path = _csv(tmp_path, HEADER + f"\n300,60,{0.301 * JKR_MN!r},lab\n")
+    assert len(data.check_inputs(SETUP_YAML, path)[2]) == 1
+
+
+def test_force_floor_uses_the_jkr_force_of_the_package() -> None:
+    """input_checks computes |P_JKR| without numpy; it is core.jkr.pulloff_force (Eq. 70) in mN."""
+    from vibroadhesion.core.jkr import pulloff_force
+    from vibroadhesion.pipeline.input_checks import jkr_pulloff_mN
+
+    assert jkr_pulloff_mN(RADIUS, W0) == pytest.approx(-1e3 * float(pulloff_force(W0, RADIUS)), rel=1e-15)
+    assert jkr_pulloff_mN(RADIUS, W0) == pytest.approx(57.2744, rel=1e-5)  # (3 pi/2)(0.0515 m)(0.236 J/m^2)
 
 
 # ----------------------------------------------------------------------------- setup.yaml: bad input
@@ -270,6 +321,35 @@ BAD_SETUP = [
     ("duplicate-key", "  thickness:\n", "  density:\n    value: 1.0\n  thickness:\n", ("density:", 1), "sample.density",
      "duplicate key (first given at row"),
     ("yaml-syntax", "    unit: kg/m^3\n", "    unit: [kg/m^3\n", ("[kg/m^3", 0), "(document)", "YAML syntax error"),
+    # unit slips: a value outside the physical range of the stated unit
+    ("radius-in-mm", "value: 51.5e-3", "value: 51.5", ("value: 51.5", 0), "indenter.radius.value", "looks like mm"),
+    ("modulus-in-MPa", "value: 2.8e6", "value: 2.8", ("value: 2.8", 0), "sample.youngs_modulus.value",
+     "looks like MPa"),
+    ("density-in-g-per-cm3", "value: 965.0", "value: 0.965", ("value: 0.965", 0), "sample.density.value",
+     "looks like g/cm^3"),
+    ("thickness-in-mm", "value: 0.02", "value: 20.0", ("value: 20.0", 0), "sample.thickness.value", "looks like mm"),
+    ("w0-in-mJ", "value: 0.236", "value: 236.0", ("value: 236.0", 0), "gent_schultz_published.w0.value",
+     "looks like mJ/m^2"),
+    ("v0-in-um-per-s", "value: 44.5e-6", "value: 44.5", ("value: 44.5", 0), "gent_schultz_published.v0.value",
+     "looks like um/s"),
+    ("amplitude-in-nm", "value: [20.0, 40.0, 60.0, 80.0, 100.0]", "value: [20.0, 40000.0]", ("40000.0", 0),
+     "test_conditions.amplitudes.value[1]", "looks like nm"),
+    # the range of n in which the model levels are validated
+    ("n-above-validated", "value: 0.531", "value: 10", ("value: 10", 0), "gent_schultz_published.n.value",
+     "outside the range in which the model levels are validated"),
+    ("n-below-validated", "value: 0.531", "value: 0.01", ("value: 0.01", 0), "gent_schultz_published.n.value",
+     "outside the range in which the model levels are validated"),
+    ("negative-kappa", "value: [0.001, 0.01]", "value: [0.001, -0.01]", ("-0.01", 0),
+     "fixation.stiffness_ratio_kappa.value[1]", "kappa must be >= 0"),
+    ("negative-zeta", "value: [0.0, 0.01, 0.05]", "value: -0.05", ("value: -0.05", 0), "fixation.damping_ratio_zeta.value",
+     "zeta must be >= 0"),
+    # YAML 1.1 reads these in another base: 020 is 16, 0x20 is 32, 1:20 is 80
+    ("octal", "    value: 20.0\n", "    value: 020\n", ("value: 020", 0), "test_conditions.fig5_amplitude.value",
+     '"020" is not a plain decimal number'),
+    ("hexadecimal", "    value: 20.0\n", "    value: 0x20\n", ("value: 0x20", 0), "test_conditions.fig5_amplitude.value",
+     '"0x20" is not a plain decimal number'),
+    ("sexagesimal", "    value: 20.0\n", "    value: 1:20\n", ("value: 1:20", 0), "test_conditions.fig5_amplitude.value",
+     '"1:20" is not a plain decimal number'),
 ]
 
 

@@ -27,7 +27,6 @@ import pandas as pd
 import pytest
 from conftest import AMPLITUDES_UM, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
-from vibroadhesion.core import levels
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline.artefacts import write_csv
@@ -139,6 +138,34 @@ def test_data_edit_reruns_fit_figures_and_report_only(pipeline_run: Path) -> Non
     assert planned == DATA_RULES, planned ^ DATA_RULES
 
 
+def _snapshot(results: Path) -> dict[str, tuple[bytes, int]]:
+    """Every file under ``results`` with its bytes and its modification time (ns)."""
+    return {str(p.relative_to(results)): (p.read_bytes(), p.stat().st_mtime_ns) for p in sorted(results.rglob("*"))
+            if p.is_file()}
+
+
+@pytest.mark.pipeline
+@pytest.mark.parametrize("bad_row,column", [("200,40,0.165,lab", "pulloff_mN"), ("200,abc,120.0,lab", "h1_um")],
+                         ids=["newtons-for-millinewtons", "not-a-number"])
+def test_rejected_edit_changes_nothing_and_restoring_it_reruns_nothing(pipeline_run: Path, bad_row: str,
+                                                                        column: str) -> None:
+    """A rejected edit stops Snakemake before it plans a job (one line naming file, row and column): results/ keeps
+    every byte and every modification time, and putting the file back plans nothing."""
+    pulloff = pipeline_run / "data/pulloff.csv"
+    original = pulloff.read_text()
+    before = _snapshot(pipeline_run / "results")
+    try:
+        pulloff.write_text(original + bad_row + "\n")
+        out = _snakemake(pipeline_run)
+    finally:
+        pulloff.write_text(original)
+    assert out.returncode != 0
+    lines = [ln for ln in (out.stdout + out.stderr).splitlines() if "pulloff.csv, row" in ln]
+    assert len(lines) == 1 and f"column {column}" in lines[0], out.stderr[-3000:]
+    assert _snapshot(pipeline_run / "results") == before
+    assert _planned_rules(pipeline_run) == set()
+
+
 @pytest.mark.pipeline
 def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
     planned = _planned_after_edit(pipeline_run, "src/vibroadhesion/models/stiffness.py")
@@ -172,7 +199,7 @@ def test_every_notebook_has_exactly_one_parameters_cell() -> None:
 
 
 def test_figure_artefacts_are_byte_identical_when_rebuilt(tmp_path: Path) -> None:
-    params = dict.fromkeys(levels.fig4_names(), GentSchultzParameters(W0, N_PUBLISHED, V0))
+    params = GentSchultzParameters(W0, N_PUBLISHED, V0)
     geometry = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
     measured = pd.DataFrame({"frequency_hz": [200.0], "h1_um": [40.0], "pulloff_mN": [250.0], "source": ["simulated"]})
     digests = []
@@ -335,8 +362,8 @@ def test_rules_run_with_project_and_interpreter_under_paths_with_spaces(tmp_path
 
 
 def test_building_the_dag_imports_no_numerics() -> None:
-    """The modules the Snakefile imports (pages, import closure) load none of the numerics stack."""
-    code = ("import sys, vibroadhesion.pipeline.imports, vibroadhesion.pipeline.pages; "
+    """The modules the Snakefile imports (pages, import closure, the input checks) load none of the numerics stack."""
+    code = ("import sys, vibroadhesion.pipeline.imports, vibroadhesion.pipeline.pages, vibroadhesion.pipeline.data; "
             "print(' '.join(m for m in ('numpy', 'pandas', 'scipy', 'matplotlib') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == ""

@@ -329,7 +329,7 @@ def test_contact_survives_at_high_frequency_with_a_over_am_below_one() -> None:
 
 @pytest.mark.parametrize("omega_check, periods", [(1e4, 6), (1e5, 40)])
 def test_shooting_equals_brute_force_transient(omega_check: float, periods: int) -> None:
-    """Reference: transient() from the static state (LSODA, period after period). The transient
+    """Reference: transient() from the static state (period after period, no Newton). The transient
     approaches the orbit like multiplier^k (7.9e-6 and 0.18 per period), so after 6 and 40 periods
     its abar(2 pi k) equals the shooting start to 1e-9 relative (integration error of the two
     integrators dominates).
@@ -345,7 +345,7 @@ def test_shooting_equals_brute_force_transient(omega_check: float, periods: int)
 def test_second_integrator_gives_the_same_orbit(integrator: str) -> None:
     """Reference: the whole shooting with another integrator (ODEPACK LSODA; Radau IIA at
     rtol 1e-10 to keep it short) at h1 = 40 um, omega_check = 1e6: a_m, Abar, w_eff, Pm and the
-    multiplier agree with the default (Fortran DOP853) to 1e-8 relative.
+    multiplier agree with the default (the compiled DOP853) to 1e-8 relative.
     """
     ex = excitation(40, 1e6)
     a = sim.steady_state(ex)

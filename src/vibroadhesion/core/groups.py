@@ -36,7 +36,7 @@ def contact_radius_ratio(chi0: float) -> float:
     return 2.0 ** (1 / 3) * 3.0 ** (-2 / 3) * chi0
 
 
-def amplitude_in_contact_units(eta1: ArrayLike, chi0: float) -> NDArray[np.float64]:
+def etahat(eta1: ArrayLike, chi0: float) -> NDArray[np.float64]:
     """etahat = h1 R / a_o^2 = eta1 / c_o^2: the base amplitude on the indentation scale a_o^2/R (Eq. 86)."""
     eta1 = np.asarray(eta1, dtype=float)
     if np.any(~np.isfinite(eta1)) or np.any(eta1 < 0):
@@ -44,7 +44,7 @@ def amplitude_in_contact_units(eta1: ArrayLike, chi0: float) -> NDArray[np.float
     return eta1 / contact_radius_ratio(chi0) ** 2
 
 
-def contact_radius_amplitude_ratio(
+def A_over_am(
     Abar: ArrayLike, abar_m: ArrayLike, chi0: float, omega_check: ArrayLike
 ) -> NDArray[np.float64]:
     """A / a_m = 3^(2/3) Abar / (2^(1/3) chi0 abar_m omega_check) = Abar / (c_o abar_m omega_check).

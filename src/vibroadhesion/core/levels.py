@@ -42,7 +42,7 @@ if TYPE_CHECKING:
     from vibroadhesion.core.fixation import FixationKind
 
 Cost = Literal["algebraic", "quadrature", "simulation"]
-Role = Literal["validation_rigid", "virtual_pulloff", "fit", "figures", "fig4"]
+Role = Literal["validation_rigid", "virtual_pulloff", "fit", "fig4"]
 Function = Literal["steady_state", "pulloff"]
 
 
@@ -55,7 +55,8 @@ class ModelLevel:
     ``algebraic`` ~0.25 ms per point, ``quadrature`` ~10-30 ms, ``simulation`` ~30 ms and more; the
     speed-against-error figure marks each level by its class and names it by its ``label``
     (benchmarks/speed_vs_error.py; the CSVs keep ``name``).
-    ``figures``: the level may supply the parameters of Figs. 3, 6-8 (``fit.figures_use`` of the config).
+    ``fit``: the level is fitted to the measured rows, and its fit may supply the parameters of the figures
+    (``fit.figures_use`` of the config names one of them).
     """
 
     name: str  # CSV value of ``model``; never renamed (artefacts)
@@ -89,11 +90,11 @@ LEVELS: tuple[ModelLevel, ...] = (
     ModelLevel("leading", "leading order, Eqs. (55), (71)-(72)",
                "vibroadhesion.models.refined:leading_nominal_point_contact",
                "vibroadhesion.models.leading_pulloff:pulloff_leading", frozenset({"rigid", "compliant", "free"}),
-               False, "algebraic", _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "figures", "fig4"}),
+               False, "algebraic", _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "fig4"}),
     ModelLevel("refined", "refined, Eqs. (106), (122)-(123)",
                "vibroadhesion.models.refined:nominal_point_contact",
                "vibroadhesion.models.refined:pulloff_refined", _RIGID_AND_COMPLIANT, True, "algebraic",
-               _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "figures", "fig4"}),
+               _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit", "fig4"}),
     ModelLevel("exact_hb", "exact harmonic balance, Eqs. (125)-(126)",
                "vibroadhesion.models.exact_harmonic_balance:rigid_fixation", None, _RIGID, True, "quadrature",
                frozenset({"validation_rigid"})),

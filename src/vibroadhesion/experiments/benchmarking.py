@@ -9,6 +9,10 @@ Two methods are measured on the same machine in one run:
 Throughput is the number of Abar values for which all three integrals are returned per
 second; the error is the largest relative error (absolute where the reference is 0) of any of
 the three against a high-precision reference passed in by the caller.
+
+:func:`compare_j_integrals` times two or more versions of the rule (e.g. this checkout's and
+the one a change starts from) in turn, repeat after repeat, so that the machine's load hits
+them alike, and gives the minimum and median of each and their ratios to the first.
 """
 
 from __future__ import annotations
@@ -16,18 +20,21 @@ from __future__ import annotations
 import math
 import os
 import platform
+import statistics
 import time
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 
 import numpy as np
 import pandas as pd
 from scipy.integrate import IntegrationWarning, quad
 
-from vibroadhesion.core.integrals import j_integrals
+from vibroadhesion.core.integrals import Triple, folded_rule, j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
 
 Reference = Callable[[float, float], Sequence[float]]
+#: A version of :func:`vibroadhesion.core.integrals.j_integrals`: (Abar array, n) -> (J0, Jc1, J1).
+Rule = Callable[[np.ndarray, float], Triple]
 
 
 def j_integrals_quad(Abar: float, n: float) -> tuple[float, float, float]:
@@ -85,11 +92,67 @@ def benchmark_j_integrals(
         for a in quad_abar:
             j_integrals_quad(float(a), n)
         quad_rate = quad_size / (time.perf_counter() - start)
-        rows.append({"method": "fixed rule (198 nodes)", "n": n, "evaluations_per_s": fast_rate,
+        rows.append({"method": f"fixed rule ({len(folded_rule()[0])} nodes)", "n": n, "evaluations_per_s": fast_rate,
                      "max_relative_error": _max_error(fast, ref), "speedup_vs_quad": fast_rate / quad_rate})
         rows.append({"method": "scipy quad (epsrel 1e-12)", "n": n, "evaluations_per_s": quad_rate,
                      "max_relative_error": _max_error(slow, ref), "speedup_vs_quad": 1.0})
     return pd.DataFrame(rows)
+
+
+def _timed_seconds(rule: Rule, Abar: np.ndarray, n: float) -> float:
+    """Wall seconds of one call of ``rule`` on the whole array."""
+    start = time.perf_counter()
+    rule(Abar, n)
+    return time.perf_counter() - start
+
+
+def compare_j_integrals(
+    rules: Mapping[str, Rule],
+    reference: Reference,
+    exponents: Sequence[float] = (0.05, 0.531, 4.0),
+    error_Abar: Sequence[float] = (1e-12, 1e-3, 0.3, 1.0, 3.0, 30.0, 114.27, 1e3, 1e5, 1e7, 1e10),
+    size: int = 200_000,
+    repeats: int = 7,
+) -> pd.DataFrame:
+    """Throughput (minimum and median time of ``repeats``) and maximal error of J-integral rules (Eqs. 28, 29, 36).
+
+    The speed-ups are the first rule's time over each rule's (minimum over minimum, median over
+    median).
+
+    Per n and repeat every rule evaluates the same ``size`` log-spaced Abar in [1e-3, 1e10] once,
+    the rules in turn (after one untimed call each); the error is taken against ``reference``
+    at ``error_Abar`` (relative, absolute where the reference is 0).
+    """
+    timing_abar = np.logspace(-3, 10, size)
+    error_points = np.asarray(error_Abar, dtype=float)
+    rows = []
+    for n in exponents:
+        ref = np.array([[float(v) for v in reference(float(a), n)] for a in error_points])
+        seconds: dict[str, list[float]] = {label: [] for label in rules}
+        for rule in rules.values():
+            rule(timing_abar[:1000], n)
+        for _ in range(repeats):
+            for label, rule in rules.items():
+                seconds[label].append(_timed_seconds(rule, timing_abar, n))
+        first = next(iter(rules))
+        for label, rule in rules.items():
+            rows.append({"rule": label, "n": n, "evaluations_per_s_min_time": size / min(seconds[label]),
+                         "evaluations_per_s_median_time": size / statistics.median(seconds[label]),
+                         "max_relative_error": _max_error(np.stack(rule(error_points, n), axis=1), ref),
+                         "speedup_min": min(seconds[first]) / min(seconds[label]),
+                         "speedup_median": statistics.median(seconds[first]) / statistics.median(seconds[label])})
+    return pd.DataFrame(rows)
+
+
+def format_comparison(table: pd.DataFrame, repeats: int) -> str:
+    """Plain-text table of :func:`compare_j_integrals`."""
+    lines = [f"J-integral rules side by side on {machine_description()}, {repeats} repeats in turn", "",
+             f"{'rule':<40}{'n':>7}{'evals/s, min t':>16}{'median t':>10}{'max rel err':>13}"
+             f"{'speed-up min':>14}{'median':>8}"]
+    for row in table.itertuples():
+        lines.append(f"{row.rule:<40}{row.n:>7g}{row.evaluations_per_s_min_time:>16.4g}{row.evaluations_per_s_median_time:>10.4g}"
+                     f"{row.max_relative_error:>13.2e}{row.speedup_min:>14.2f}{row.speedup_median:>8.2f}")
+    return "\n".join(lines) + "\n"
 
 
 def format_table(table: pd.DataFrame) -> str:

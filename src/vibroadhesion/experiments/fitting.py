@@ -21,7 +21,15 @@ means the model cannot represent them, not that the bound is the answer. The cov
 parameters inside the box is s^2 (J^T J)^-1 with s^2 = RSS/(m - p), mapped back to natural units
 by the delta method. For the identifiability test the relative residual scale is floored at
 ``noise_floor``, so that noise-free (synthetic) rows do not make any parameter look identifiable.
-A trial point at which the model has no solution stops the fit with :class:`FitError`.
+Every fit ends in a status, never in an exception that takes the other levels down: ``published``
+(no rows: the published values pass through); ``fitted``;
+``at_bound``; ``not_identifiable`` (fewer rows than parameters, or a Jacobian of lower rank than the
+free parameters: no standard errors, the published values kept where nothing was fitted); ``failed``
+(the model has no solution at a trial point, or the search does not converge), with the reason.
+
+Rows. The model is evaluated once per distinct (frequency, amplitude) pair, so replicate rows cost
+nothing. A static JKR test (``h1_um`` = 0, no vibration) has the pull-off |P_cr^JKR| = (3 pi/2) R w0
+(Eq. 70) at every level (Abar = 0, J0 = 1): it pins w0 and carries no frequency.
 """
 
 from __future__ import annotations
@@ -36,6 +44,7 @@ import pandas as pd
 from scipy.optimize import least_squares
 
 from vibroadhesion.core import levels
+from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -59,6 +68,32 @@ ResidualFunction = Callable[[np.ndarray], np.ndarray]
 ParameterMap = Callable[[np.ndarray], GentSchultzParameters]
 
 
+def distinct_conditions(frequency_hz: np.ndarray, h1_um: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The distinct (frequency, amplitude) pairs in order of first appearance, and each row's index into them."""
+    first: dict[tuple[float, float], int] = {}
+    index = np.array([first.setdefault((float(f), float(h)), len(first)) for f, h in zip(frequency_hz, h1_um,
+                                                                                          strict=True)], dtype=int)
+    pairs = np.array(list(first), dtype=float).reshape(-1, 2)
+    return pairs[:, 0], pairs[:, 1], index
+
+
+def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: np.ndarray,
+              geometry: dict[str, float]) -> np.ndarray:
+    """Pull-off (mN) of ``model`` at each row: Eq. (70) for static rows (h1 = 0), the level's estimate otherwise.
+
+    The level is solved once per distinct (frequency, amplitude) pair; :class:`FitError` where it has no solution.
+    """
+    out = np.full(h1.shape, -pulloff_force(params.w0, geometry["radius"]) * 1e3)
+    dynamic = h1 > 0
+    if np.any(dynamic):
+        f_u, h_u, index = distinct_conditions(freq[dynamic], h1[dynamic])
+        pulloff = predict_pulloff(model, params, f_u, h_u, **geometry)
+        if not np.all(pulloff.found):
+            raise FitError(f"{model}: the model has no solution at a trial point ({params})")
+        out[dynamic] = pulloff_mN(pulloff, params.w0, geometry["radius"])[index]
+    return out
+
+
 def _residual_function(
     rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
 ) -> tuple[ResidualFunction, ParameterMap]:
@@ -69,11 +104,7 @@ def _residual_function(
         return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values, strict=True)})
 
     def residuals(log_values: np.ndarray) -> np.ndarray:
-        params = params_of(log_values)
-        pulloff = predict_pulloff(model, params, freq, h1, **geometry)
-        if not np.all(pulloff.found):
-            raise FitError(f"{model} fit of {free}: the model has no solution at a trial point ({params})")
-        return pulloff_mN(pulloff, params.w0, geometry["radius"]) / observed - 1.0
+        return _model_mN(model, params_of(log_values), freq, h1, geometry) / observed - 1.0
 
     return residuals, params_of
 
@@ -90,6 +121,8 @@ def _least_squares(
                                xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=300)
     except NoRootError as exc:
         raise FitError(f"{model} fit of {free}: the model has no solution at a trial point ({exc})") from exc
+    except FitError as exc:
+        raise FitError(f"{model} fit of {free}: {exc}") from exc
     if result.status <= 0:
         raise FitError(f"{model} fit of {free} did not converge: {result.message}")
     on_bound = (result.x - lo < _ON_BOUND) | (hi - result.x < _ON_BOUND)
@@ -144,22 +177,36 @@ def fit_gent_schultz(
     if model not in levels.names("fit"):
         raise ValueError(f"unknown model {model!r}; expected one of {levels.names('fit')}")
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
-    frequencies = sorted(set(rows["frequency_hz"].tolist()))
+    frequencies = sorted(set(rows.loc[rows["h1_um"] > 0, "frequency_hz"].tolist()))
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
-
-    free: tuple[str, ...] = ("w0", "n")
     v0_note = _v0_note_before_fit(model, len(frequencies), len(rows))
+    if rows.empty:
+        return summary | _unfitted(published, "published", "no rows: published values kept", v0_note)
     if len(rows) <= 2:
-        summary.update(status="published", note=f"{len(rows)} rows cannot determine w0 and n: published values kept",
-                       parameters=_parameter_table(published, (), (), None), v0_identifiable=False,
-                       v0_note=v0_note or "no fit")
-        return summary
-    if model == "simulation":  # the full model: its own search (envelope Jacobian, warm-started families)
-        from vibroadhesion.experiments.simulation_fit import fit_simulation  # imports this module: no cycle at load
+        return summary | _unfitted(published, "not_identifiable",
+                                   f"{len(rows)} rows cannot determine w0 and n: published values kept", v0_note)
+    try:
+        if model == "simulation":  # the full model: its own search (envelope Jacobian, warm-started families)
+            from vibroadhesion.experiments.simulation_fit import fit_simulation  # imports this module: no cycle
 
-        return summary | fit_simulation(rows, published, **geometry, max_relative_se_v0=max_relative_se_v0,
-                                        noise_floor=noise_floor)
+            return summary | fit_simulation(rows, published, **geometry, max_relative_se_v0=max_relative_se_v0,
+                                            noise_floor=noise_floor)
+        return summary | _fit_and_summarise(rows, model, published, geometry, v0_note, max_relative_se_v0,
+                                            noise_floor)
+    except FitError as exc:
+        return summary | _unfitted(published, "failed", f"{exc}: published values kept", v0_note)
 
+
+def _unfitted(published: GentSchultzParameters, status: str, note: str, v0_note: str) -> dict[str, Any]:
+    """The summary of a level that fitted nothing: its status, why, and the published values (not estimates)."""
+    return {"status": status, "note": note, "parameters": _parameter_table(published, (), (), None),
+            "v0_identifiable": False, "v0_note": v0_note or "no fit"}
+
+
+def _fit_and_summarise(rows: pd.DataFrame, model: str, published: GentSchultzParameters, geometry: dict[str, float],
+                       v0_note: str, max_relative_se_v0: float, noise_floor: float) -> dict[str, Any]:
+    """Fit (w0, n), then v0 as well where it is identifiable; the summary (:func:`_fitted_summary`)."""
+    free: tuple[str, ...] = ("w0", "n")
     fit = _least_squares(rows, model, published, free, geometry)
     if not v0_note:
         identifiable, v0_note = _v0_identifiability(rows, model, fit, geometry, max_relative_se_v0, noise_floor)
@@ -169,9 +216,7 @@ def fit_gent_schultz(
                 v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
             else:
                 free, fit = ("w0", "n", "v0"), with_v0
-
-    summary.update(_fitted_summary(rows, fit, free, v0_note))
-    return summary
+    return _fitted_summary(rows, fit, free, v0_note)
 
 
 def _v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
@@ -194,17 +239,22 @@ def _fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ..
     inside = tuple(name for name in free if name not in fit["at_bound"])
     columns = [free.index(name) for name in inside]
     theta = np.array([getattr(fit["params"], name) for name in inside])
-    jac = fit["jac"][:, columns]
-    cov = fit["s2"] * np.linalg.inv(jac.T @ jac) * np.outer(theta, theta)
-    bound_note = "; ".join(f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
-                           f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"])
+    cov = _covariance(fit["jac"][:, columns], fit["s2"], theta)
+    notes = [f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
+             f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"]]
+    status = "at_bound" if fit["at_bound"] else "fitted"
+    if cov is None:
+        status = "not_identifiable"
+        notes.append(f"the Jacobian has lower rank than the {len(inside)} free parameters inside the box: the rows "
+                     f"do not determine {', '.join(inside)} separately (no standard errors)")
+        inside = ()
     return {
-        "status": "at_bound" if fit["at_bound"] else "fitted",
-        "note": bound_note,
+        "status": status,
+        "note": "; ".join(notes),
         "free_parameters": list(free),
         "at_bound": fit["at_bound"],
         "parameters": _parameter_table(fit["params"], free, inside, cov),
-        "covariance": {"parameters": list(inside), "matrix": cov.tolist()},
+        "covariance": {"parameters": list(inside), "matrix": [] if cov is None else cov.tolist()},
         "residuals_mN": [{"line": int(line), "residual": float(r * obs)}
                          for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"], strict=True)],
         "rms_relative_residual": float(np.sqrt(np.mean(fit["residuals"] ** 2))),
@@ -213,6 +263,23 @@ def _fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ..
         "function_evaluations": fit["nfev"],
         "optimizer_message": fit["message"],
     }
+
+
+def _covariance(jac: np.ndarray, s2: float, theta: np.ndarray) -> np.ndarray | None:
+    """Gauss-Newton covariance s^2 (J^T J)^-1 in ln theta mapped to theta (delta method).
+
+    None where J (in the logarithms of the parameters inside the box) has a lower numerical rank than its
+    columns (numpy's tolerance: largest singular value times max(J.shape) times the machine epsilon).
+    """
+    if jac.shape[1] == 0:
+        return np.zeros((0, 0))
+    if np.linalg.matrix_rank(jac) < jac.shape[1]:
+        return None
+    try:
+        cov = s2 * np.linalg.inv(jac.T @ jac) * np.outer(theta, theta)
+    except np.linalg.LinAlgError:
+        return None
+    return cov if np.all(np.isfinite(cov)) else None
 
 
 def _parameter_table(params: GentSchultzParameters, free: tuple[str, ...], inside: tuple[str, ...],

@@ -3,7 +3,8 @@
 Forward model. A row (frequency f, base amplitude h1, |P_cr| in mN) is predicted by the virtual pull-off
 of the rigidly fixed indenter (:func:`vibroadhesion.experiments.virtual_pulloff.traced_pulloff`: the
 quasi-static family of periodic steady states of Eqs. 4-11 in the base offset, the pull-off at its most
-tensile mean force), solved once per distinct (f, h1) pair and scattered back to the rows. After the
+tensile mean force), solved once per distinct (f, h1) pair and scattered back to the rows; a static JKR
+test (h1 = 0) is |P_cr^JKR| = (3 pi/2) R w0 (Eq. 70), d ln P/d ln w0 = 1. After the
 first evaluation every family starts warm, from its pair's last most tensile orbit, WARM_MARGIN steps on
 the compressive side of it (the extremum moves little between the trial points of the search); a warm
 start past the new extremum is traced again from the cold start.
@@ -69,6 +70,9 @@ WARM_ITERATIONS = 15
 WARM_MARGIN = 2
 _FAMILY_STEP = 0.2
 
+#: The key of the static JKR rows (h1 = 0, no frequency): their pull-off is |P_cr^JKR| (Eq. 70).
+STATIC = (0.0, 0.0)
+
 #: The most tensile orbit of a pair's family: (base offset d*, orbit there).
 Extremum = tuple[float, SteadyState]
 
@@ -133,8 +137,15 @@ class _Families:
         key = tuple(round(math.log(getattr(params, name)), 12) for name in ("w0", "n", "v0"))
         if key == self.key:
             return self.last
-        statuses, forces, extrema = [], np.full(len(self.pairs), math.nan), []
+        statuses: list[str] = []
+        extrema: list[Extremum | None] = []
+        forces = np.full(len(self.pairs), math.nan)
         for i, pair in enumerate(self.pairs):
+            if pair == STATIC:  # Eq. (70): the static JKR test
+                statuses.append("static_jkr")
+                extrema.append(None)
+                forces[i] = jkr_mN(params.w0, self.geometry["radius"])
+                continue
             problem = pulloff_problem(params, *pair, **self.geometry)
             warm = self.warm.get(pair)
             start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, _start_state(warm[1]))
@@ -153,10 +164,16 @@ class _Families:
         _, _, extrema = self.evaluate(params)
         if name not in self.derivatives:
             self.derivatives[name] = np.array([
-                0.0 if at is None else float(np.nan_to_num(envelope_log_derivatives(
-                    params, *pair, at, (name,), **self.geometry)[0]))
+                float(name == "w0") if pair == STATIC else 0.0 if at is None else float(np.nan_to_num(
+                    envelope_log_derivatives(params, *pair, at, (name,), **self.geometry)[0]))
                 for pair, at in zip(self.pairs, extrema, strict=True)])
         return self.derivatives[name]
+
+
+def _pair_keys(rows: pd.DataFrame) -> list[tuple[float, float]]:
+    """Each row's (frequency, amplitude) pair; :data:`STATIC` for a static JKR test (h1 = 0, frequency empty)."""
+    return [STATIC if float(h) == 0.0 else (float(f), float(h))
+            for f, h in zip(rows["frequency_hz"], rows["h1_um"], strict=True)]
 
 
 def _start_state(orbit: SteadyState) -> np.ndarray:
@@ -175,7 +192,7 @@ class _Objective:
         self.base, self.free, self.families = base, free, families
         self.observed = rows["pulloff_mN"].to_numpy(float)
         index = {pair: i for i, pair in enumerate(families.pairs)}
-        self.row_pair = np.array([index[(f, h)] for f, h in zip(rows["frequency_hz"], rows["h1_um"], strict=True)])
+        self.row_pair = np.array([index[pair] for pair in _pair_keys(rows)])
 
     def params_of(self, log_values: np.ndarray) -> GentSchultzParameters:
         """The parameter set at ln(free) = ``log_values``."""
@@ -249,11 +266,11 @@ def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radi
     standard error at the (w0, n) fit is below ``max_relative_se_v0`` (residual scale floored at
     ``noise_floor``). Adds ``row_status`` (status and model force per row at the fit) and ``families_traced``.
     """
-    pairs = sorted(set(zip(rows["frequency_hz"].astype(float), rows["h1_um"].astype(float), strict=True)))
+    pairs = sorted(set(_pair_keys(rows)))
     families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus})
     free: tuple[str, ...] = ("w0", "n")
     fit = _least_squares(rows, published, free, families)
-    v0_note = _v0_note_before_fit("simulation", len({f for f, _ in pairs}), len(rows))
+    v0_note = _v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))
     if not v0_note:
         rel_se = _v0_relative_se(rows, fit, families, noise_floor)
         if rel_se > max_relative_se_v0:
@@ -277,8 +294,8 @@ def _row_statuses(rows: pd.DataFrame, params: GentSchultzParameters, families: _
     statuses, forces, _ = families.evaluate(params)
     index = {pair: i for i, pair in enumerate(families.pairs)}
     table = []
-    for line, f, h in zip(rows["line"], rows["frequency_hz"], rows["h1_um"], strict=True):
-        i = index[(float(f), float(h))]
+    for line, f, h, pair in zip(rows["line"], rows["frequency_hz"], rows["h1_um"], _pair_keys(rows), strict=True):
+        i = index[pair]
         table.append({"line": int(line), "frequency_hz": float(f), "h1_um": float(h), "status": statuses[i],
                       "model_mN": None if math.isnan(forces[i]) else float(forces[i])})
     lost = [f"line {r['line']} ({r['frequency_hz']:g} Hz, {r['h1_um']:g} um): {r['status']}"

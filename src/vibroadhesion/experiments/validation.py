@@ -18,7 +18,7 @@ Every row carries a ``status``: ``ok`` for a solution, the simulation's own stat
 state there. Numbers of rows without a solution are NaN, never a fill-in value.
 
 Mean force of the J-integral levels: Eq. (52), P_m/|P_JKR| = (4/3) [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)]
-(:func:`vibroadhesion.models.leading_order.mean_force_over_pulloff`).
+(:func:`vibroadhesion.models.leading_order.pm_over_abs_pjkr`).
 """
 
 from __future__ import annotations

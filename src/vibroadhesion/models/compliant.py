@@ -13,16 +13,16 @@ a_m/R = c_o abar_m, c_o = a_o/R = 2^(1/3) 3^(-2/3) chi0, dividing by c_o^2 and u
 Harmonic balance, Eq. (90) with Eqs. (91)–(92):
 
     xi_c^2 + xi_s^2 = eta1^2 [(1 - omega_bar^2)^2 + 4 zeta^2 omega_bar^2],
-    xi_c = (1 - omega_bar^2) delta_c + 2 zeta omega_bar delta_s + P_c,
-    xi_s = (1 - omega_bar^2) delta_s - 2 zeta omega_bar delta_c + P_s,
+    xi_c = (1 - omega_bar^2) delta_check_c + 2 zeta omega_bar delta_check_s + p_check_c,
+    xi_s = (1 - omega_bar^2) delta_check_s - 2 zeta omega_bar delta_check_c + p_check_s,
 
 with the refined coefficients divided by R (delta) and by kR (P), Eqs. (93)–(96); omega_check =
 omega_bar/nu0 (Eq. 105), so nu0/omega_bar = 1/omega_check:
 
-    delta_c = -(2^(2/3)/3^(4/3)) chi0^2 abar_m^(1/2) Jc1                                   (93)
-    delta_s = (2^(4/3)/3^(2/3)) chi0 (nu0/omega_bar) Abar abar_m (1 - J1/(4 abar_m^(3/2)))  (94)
-    P_c     = -(4 chi0^3/(9 kappa)) abar_m^(3/2) Jc1                                       (95)
-    P_s     = (2^(8/3)/3^(4/3)) chi0^2 (nu0/(kappa omega_bar)) Abar abar_m^2 (1 - 3 J1/(4 abar_m^(3/2)))  (96)
+    delta_check_c = -(2^(2/3)/3^(4/3)) chi0^2 abar_m^(1/2) Jc1                                   (93)
+    delta_check_s = (2^(4/3)/3^(2/3)) chi0 (nu0/omega_bar) Abar abar_m (1 - J1/(4 abar_m^(3/2)))  (94)
+    p_check_c     = -(4 chi0^3/(9 kappa)) abar_m^(3/2) Jc1                                       (95)
+    p_check_s     = (2^(8/3)/3^(4/3)) chi0^2 (nu0/(kappa omega_bar)) Abar abar_m^2 (1 - 3 J1/(4 abar_m^(3/2)))  (96)
 
 (re-derived from Eqs. 32–35 in docs/errata.md; Eq. 96 prints sigma_bar for abar_m). The
 contact-radius amplitude is A/a_m = 3^(2/3) nu0 Abar / (2^(1/3) chi0 abar_m omega_bar), the
@@ -50,13 +50,13 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
+from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff, SteadyState, stacked
-from vibroadhesion.models.leading_order import mean_force_over_pulloff, mean_indentation
-from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_abar
+from vibroadhesion.models.leading_order import mean_indentation, pm_over_abs_pjkr
+from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.models.refined import displacement_harmonics
 from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
 from vibroadhesion.numerics.roots import NoRootError
@@ -82,13 +82,13 @@ def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi
 def mean_balance_excess(log_abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float) -> Array:
     """positive/negative - 1 of Eq. (87) (:func:`mean_balance_parts`) at abar_m = exp(``log_abar_m``).
 
-    Zero on the mean balance, increasing with abar_m (see :func:`static_abar_m`).
+    Zero on the mean balance, increasing with abar_m (see :func:`static_abar_0`).
     """
     positive, negative = mean_balance_parts(np.exp(log_abar_m), j0, fixation, chi0)
     return positive / negative - 1.0
 
 
-def static_abar_m(fixation: Fixation, chi0: float) -> float:
+def static_abar_0(fixation: Fixation, chi0: float) -> float:
     """Static contact radius a_0/a_o: Eq. (87) with J0 = 1, i.e. Eq. (82) (unique root, see below).
 
     Dividing both parts by abar^(3/2): positive/negative = (c1 abar^(3/2) + kappa abar^(1/2) - M abar^(-3/2))
@@ -100,19 +100,19 @@ def static_abar_m(fixation: Fixation, chi0: float) -> float:
 
 
 def harmonic_coefficients(
-    omega_bar: ArrayLike, abar_m: ArrayLike, abar: ArrayLike, fixation: Fixation, chi0: float, law: RateLaw
+    omega_bar: ArrayLike, abar_m: ArrayLike, Abar: ArrayLike, fixation: Fixation, chi0: float, law: RateLaw
 ) -> tuple[Array, Array, Array, Array, Array]:
-    """(J0, delta_c, delta_s, P_c, P_s) of Eqs. (93)–(96), broadcast over the inputs."""
-    omega_bar, abar_m, abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, abar)))
-    j0, jc1, j1 = j_integrals_for_law(abar.ravel(), law)
-    j0, jc1, j1 = (v.reshape(abar.shape) for v in (j0, jc1, j1))
-    delta_c, delta_s = displacement_harmonics(abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
-    p_c = -(4.0 * chi0**3 / (9.0 * fixation.kappa)) * abar_m**1.5 * jc1
+    """(J0, delta_check_c, delta_check_s, p_check_c, p_check_s) of Eqs. (93)–(96), broadcast over the inputs."""
+    omega_bar, abar_m, Abar = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (omega_bar, abar_m, Abar)))
+    j0, jc1, j1 = j_integrals_for_law(Abar.ravel(), law)
+    j0, jc1, j1 = (v.reshape(Abar.shape) for v in (j0, jc1, j1))
+    delta_check_c, delta_check_s = displacement_harmonics(Abar, abar_m, jc1, j1, chi0, omega_bar / fixation.nu0)
+    p_check_c = -(4.0 * chi0**3 / (9.0 * fixation.kappa)) * abar_m**1.5 * jc1
     kappa, nu0 = fixation.kappa, fixation.nu0
-    p_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * abar * abar_m**2 * (
+    p_check_s = (2.0 ** (8 / 3) / 3.0 ** (4 / 3)) * chi0**2 * (nu0 / (kappa * omega_bar)) * Abar * abar_m**2 * (
         1.0 - 3.0 * j1 / (4.0 * abar_m**1.5)
     )
-    return j0, delta_c, delta_s, p_c, p_s
+    return j0, delta_check_c, delta_check_s, p_check_c, p_check_s
 
 
 def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
@@ -126,14 +126,14 @@ def forcing_modulus(log_omega_bar: ArrayLike, zeta: float) -> Array:
     return np.hypot(np.expm1(2.0 * s), 2.0 * zeta * np.exp(s))
 
 
-def amplitude_log_residual(log_omega_bar: Array, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
-                           zeta: float, eta1: float) -> Array:
+def amplitude_log_residual(log_omega_bar: Array, delta_check_c: Array, delta_check_s: Array, p_check_c: Array,
+                           p_check_s: Array, zeta: float, eta1: float) -> Array:
     """Eq. (90) in logarithms, ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
 
     From the harmonic coefficients of any model level (Eqs. 93-96 here, Eqs. 125-126 in
     exact_harmonic_balance).
     """
-    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_c, delta_s, p_c, p_s, zeta)
+    xi_c, xi_s = xi_coefficients(log_omega_bar, delta_check_c, delta_check_s, p_check_c, p_check_s, zeta)
     return np.log(np.hypot(xi_c, xi_s)) - math.log(eta1) - np.log(forcing_modulus(log_omega_bar, zeta))
 
 
@@ -143,37 +143,39 @@ def residual(x: ArrayLike, fixation: Fixation, chi0: float, eta1: float, law: Ra
     Column 0: positive/negative - 1 of Eq. (87); column 1: ln|xi| - ln(eta1 |1 - omega_bar^2 + 2i zeta omega_bar|).
     """
     x = np.atleast_2d(np.asarray(x, dtype=float))
-    omega_bar, abar_m, abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, fixation, chi0, law)
-    amplitude = amplitude_log_residual(x[:, 0], delta_c, delta_s, p_c, p_s, fixation.zeta, eta1)
+    omega_bar, abar_m, Abar = np.exp(x[:, 0]), np.exp(x[:, 1]), np.exp(x[:, 2])
+    j0, delta_check_c, delta_check_s, p_check_c, p_check_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation,
+                                                                                   chi0, law)
+    amplitude = amplitude_log_residual(x[:, 0], delta_check_c, delta_check_s, p_check_c, p_check_s, fixation.zeta, eta1)
     return np.stack([mean_balance_excess(x[:, 1], j0, fixation, chi0), amplitude], axis=1)
 
 
-def xi_coefficients(log_omega_bar: ArrayLike, delta_c: Array, delta_s: Array, p_c: Array, p_s: Array,
-                    zeta: float) -> tuple[Array, Array]:
+def xi_coefficients(log_omega_bar: ArrayLike, delta_check_c: Array, delta_check_s: Array, p_check_c: Array,
+                    p_check_s: Array, zeta: float) -> tuple[Array, Array]:
     """xi_c, xi_s of Eqs. (91)-(92) from the harmonic coefficients (any model level that provides them)."""
     log_omega_bar = np.asarray(log_omega_bar, dtype=float)
     omega_bar, stiffness = np.exp(log_omega_bar), -np.expm1(2.0 * log_omega_bar)  # stiffness = 1 - omega_bar^2
-    return (stiffness * delta_c + 2.0 * zeta * omega_bar * delta_s + p_c,
-            stiffness * delta_s - 2.0 * zeta * omega_bar * delta_c + p_s)
+    return (stiffness * delta_check_c + 2.0 * zeta * omega_bar * delta_check_s + p_check_c,
+            stiffness * delta_check_s - 2.0 * zeta * omega_bar * delta_check_c + p_check_s)
 
 
 def residual_linear(
-    omega_bar: float, abar_m: float, abar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw
+    omega_bar: float, abar_m: float, Abar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw
 ) -> tuple[float, float]:
     """Eqs. (87) and (90) in their printed (polynomial) form, relative: for checking a solution.
 
     Returns ((positive - negative)/negative, (xi_c^2 + xi_s^2 - rhs)/rhs) of Eqs. (87) and (90).
     """
-    j0, delta_c, delta_s, p_c, p_s = harmonic_coefficients(omega_bar, abar_m, abar, fixation, chi0, law)
+    j0, delta_check_c, delta_check_s, p_check_c, p_check_s = harmonic_coefficients(omega_bar, abar_m, Abar, fixation,
+                                                                                   chi0, law)
     positive, negative = mean_balance_parts(abar_m, j0, fixation, chi0)
-    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_c, delta_s, p_c, p_s, fixation.zeta)
+    xi_c, xi_s = xi_coefficients(math.log(omega_bar), delta_check_c, delta_check_s, p_check_c, p_check_s, fixation.zeta)
     rhs = (eta1 * forcing_modulus(math.log(omega_bar), fixation.zeta)) ** 2
     return float((positive - negative) / negative), float((xi_c**2 + xi_s**2 - rhs) / rhs)
 
 
 def abar_m_from_mean_balance(j0: ArrayLike, fixation: Fixation, chi0: float) -> Array:
-    """abar_m solving Eq. (87) for given J0(Abar), vectorised (unique root, see :func:`static_abar_m`).
+    """abar_m solving Eq. (87) for given J0(Abar), vectorised (unique root, see :func:`static_abar_0`).
 
     Bisection in ln abar_m on [ln J0^(2/3) - 1, ln J0^(2/3) + 1] (widened upwards while needed): at
     abar_m = lambda J0^(2/3) the ratio of the parts of Eq. (87) lies between (2/3) lambda^(3/2) and
@@ -199,18 +201,18 @@ def abar_m_from_mean_balance(j0: ArrayLike, fixation: Fixation, chi0: float) -> 
     return np.exp(0.5 * (lo + hi))
 
 
-def refined_steady_state(omega_bar: float, abar_m: ArrayLike, abar: ArrayLike, fixation: Fixation, chi0: float,
+def refined_steady_state(omega_bar: float, abar_m: ArrayLike, Abar: ArrayLike, fixation: Fixation, chi0: float,
                          law: RateLaw) -> SteadyState:
     """The record of level ``refined`` at solutions (abar_m, Abar) of Eqs. (87), (90) at ``omega_bar`` (any shape).
 
     w_eff/w0 = J0^2 (Eq. 49), A/a_m at omega_check = omega_bar/nu0 (corrected Eq. 98), P_m/|P_JKR|
     (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); the averaged model gives no stability (``stable`` None).
     """
-    abar_m, abar = np.asarray(abar_m, dtype=float), np.asarray(abar, dtype=float)
-    j0 = j_integrals_for_law(abar, law)[0]
-    return SteadyState("refined", np.full(abar.shape, "ok"), abar, abar_m, j0**2,
-                       contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_bar / fixation.nu0),
-                       mean_force_over_pulloff(abar_m, j0), mean_indentation(abar_m, j0))
+    abar_m, Abar = np.asarray(abar_m, dtype=float), np.asarray(Abar, dtype=float)
+    j0 = j_integrals_for_law(Abar, law)[0]
+    return SteadyState("refined", np.full(Abar.shape, "ok"), Abar, abar_m, j0**2,
+                       groups.A_over_am(Abar, abar_m, chi0, omega_bar / fixation.nu0),
+                       pm_over_abs_pjkr(abar_m, j0), mean_indentation(abar_m, j0))
 
 
 def newton_at_frequency(
@@ -222,10 +224,10 @@ def newton_at_frequency(
     converge (:func:`_newton`), the status ``not_converged`` with NaN numbers and the reason in ``message``.
     """
     try:
-        abar_m, abar = _newton(omega_bar, fixation, chi0, eta1, law, guess)
+        abar_m, Abar = _newton(omega_bar, fixation, chi0, eta1, law, guess)
     except NoRootError as error:
         return SteadyState.unsolved("refined", "not_converged", str(error))
-    return refined_steady_state(omega_bar, abar_m, abar, fixation, chi0, law)
+    return refined_steady_state(omega_bar, abar_m, Abar, fixation, chi0, law)
 
 
 def _newton(
@@ -255,39 +257,39 @@ def residual_at_frequency(
 
 
 def amplitude_residual_on_closure(
-    log_abar: Array, log_omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
+    log_Abar: Array, log_omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
     abar_m_of_j0: Callable[[Array], Array]
 ) -> Array:
     """Eq. (90) in logarithms (column 1 of :func:`residual`) along abar_m = abar_m_of_j0(J0(Abar)).
 
     Vectorised over ln Abar; the closure is Eq. (87) (:func:`abar_m_from_mean_balance`) or a_m = a_cr (Eq. 61).
     """
-    abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_abar), law)[0])
-    x = np.column_stack([np.full(len(log_abar), log_omega_bar), np.log(abar_m), log_abar])
+    abar_m = abar_m_of_j0(j_integrals_for_law(np.exp(log_Abar), law)[0])
+    x = np.column_stack([np.full(len(log_Abar), log_omega_bar), np.log(abar_m), log_Abar])
     return residual(x, fixation, chi0, eta1, law)[:, 1]
 
 
 def _roots_by_scan(
-    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array,
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_Abar: Array,
     abar_m_of_j0: Callable[[Array], Array]
 ) -> list[tuple[float, float]]:
     """Roots (abar_m, Abar) of Eq. (90) along abar_m = abar_m_of_j0(J0(Abar)).
 
-    Sign changes on the grid ``log_abar`` polished by Brent's method. Roots closer than the grid
+    Sign changes on the grid ``log_Abar`` polished by Brent's method. Roots closer than the grid
     spacing can be missed.
     """
     g = partial(amplitude_residual_on_closure, log_omega_bar=math.log(omega_bar), fixation=fixation, chi0=chi0,
                 eta1=eta1, law=law, abar_m_of_j0=abar_m_of_j0)
-    values = g(log_abar)
+    values = g(log_Abar)
     roots = []
     for k in np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0):
-        z = brentq(lambda y: float(g(np.array([y]))[0]), log_abar[k], log_abar[k + 1], xtol=1e-14, rtol=1e-15)
+        z = brentq(lambda y: float(g(np.array([y]))[0]), log_Abar[k], log_Abar[k + 1], xtol=1e-14, rtol=1e-15)
         roots.append((float(abar_m_of_j0(j_integrals_for_law(np.array([math.exp(z)]), law)[0])[0]), math.exp(z)))
     return roots
 
 
 def solutions_by_scan(
-    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_Abar: Array
 ) -> SteadyState:
     """All solutions of Eqs. (87), (90) at one omega_bar with Abar in the scanned range: one record.
 
@@ -296,16 +298,16 @@ def solutions_by_scan(
     element per solution, by increasing Abar; without any, one element of status ``no_solution``.
     """
     closure = partial(abar_m_from_mean_balance, fixation=fixation, chi0=chi0)
-    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, closure)
+    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_Abar, closure)
     if not roots:
-        return SteadyState.unsolved("refined", "no_solution", _no_root(omega_bar, "Eqs. (87), (90)", log_abar),
+        return SteadyState.unsolved("refined", "no_solution", _no_root(omega_bar, "Eqs. (87), (90)", log_Abar),
                                     shape=(1,))
-    return refined_steady_state(omega_bar, [abar_m for abar_m, _ in roots], [abar for _, abar in roots], fixation,
+    return refined_steady_state(omega_bar, [abar_m for abar_m, _ in roots], [Abar for _, Abar in roots], fixation,
                                 chi0, law)
 
 
 def pulloff_by_scan(
-    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_abar: Array
+    omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw, log_Abar: Array
 ) -> Pulloff:
     """Refined pull-off of the compliantly fixed indenter: Eq. (90) at a_m = a_cr (Eq. 61), all roots.
 
@@ -314,22 +316,22 @@ def pulloff_by_scan(
     increasing Abar_cr, with P_cr/P_cr^JKR = J0(Abar_cr)^2 (Eq. 71) each (a_m = a_cr: ``abar_m`` is not
     solved for, NaN); without any root, one element of status ``no_solution``.
     """
-    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_abar, pulloff_closure)
+    roots = _roots_by_scan(omega_bar, fixation, chi0, eta1, law, log_Abar, pulloff_closure)
     if not roots:
-        return Pulloff.unsolved("refined", "no_solution", _no_root(omega_bar, "Eq. (90) at a_m = a_cr", log_abar),
+        return Pulloff.unsolved("refined", "no_solution", _no_root(omega_bar, "Eq. (90) at a_m = a_cr", log_Abar),
                                 shape=(1,))
-    return stacked([pulloff_from_abar("refined", np.asarray(abar), law) for _, abar in roots])
+    return stacked([pulloff_from_internal_variable("refined", np.asarray(Abar), law) for _, Abar in roots])
 
 
-def _no_root(omega_bar: float, equations: str, log_abar: Array) -> str:
-    """The message of a scan without a sign change (the grid ``log_abar`` in ln Abar, Eqs. 87, 90)."""
+def _no_root(omega_bar: float, equations: str, log_Abar: Array) -> str:
+    """The message of a scan without a sign change (the grid ``log_Abar`` in ln Abar, Eqs. 87, 90)."""
     return (f"{equations}: no root at omega_bar = {omega_bar:.6g} for Abar in "
-            f"[{math.exp(log_abar[0]):.3g}, {math.exp(log_abar[-1]):.3g}]")
+            f"[{math.exp(log_Abar[0]):.3g}, {math.exp(log_Abar[-1]):.3g}]")
 
 
-def _a_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
+def _A_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
     """A/a_m at points x = (ln omega_bar, ln abar_m, ln Abar) (corrected Eq. 98, omega_check = omega_bar/nu0)."""
-    return contact_radius_amplitude_ratio(np.exp(x[:, 2]), np.exp(x[:, 1]), chi0, np.exp(x[:, 0]) / fixation.nu0)
+    return groups.A_over_am(np.exp(x[:, 2]), np.exp(x[:, 1]), chi0, np.exp(x[:, 0]) / fixation.nu0)
 
 
 # --- The response curve, Fig. 5 --------------------------------------------------------------
@@ -345,9 +347,9 @@ class ResponseCurve:
     pieces: tuple[Curve, ...]  # points x = (ln omega_bar, ln abar_m, ln Abar) in trace order
     folds: Array  # (k, 3) fold points in x
 
-    def a_over_am(self, x: Array) -> Array:
+    def A_over_am(self, x: Array) -> Array:
         """A/a_m along points x (corrected Eq. 98)."""
-        return _a_over_am(x, self.fixation, self.chi0)
+        return _A_over_am(x, self.fixation, self.chi0)
 
     def count_at(self, omega_bar: float) -> int:
         """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
@@ -367,10 +369,10 @@ class ResponseCurve:
         if not states:
             return SteadyState.unsolved("refined", "no_solution", f"the traced curve does not reach omega_bar = "
                                         f"{omega_bar:.6g}", shape=(1,))
-        return stacked(sorted(states, key=_solutions_first_by_abar))
+        return stacked(sorted(states, key=_solutions_first_by_Abar))
 
 
-def _solutions_first_by_abar(state: SteadyState) -> tuple[bool, float]:
+def _solutions_first_by_Abar(state: SteadyState) -> tuple[bool, float]:
     """Sort key of the elements of a record: the solutions by increasing Abar, then the unsolved ones."""
     return not bool(state.ok), float(state.Abar)
 
@@ -420,7 +422,7 @@ def _into_notch(x: Array, fixation: Fixation, chi0: float) -> bool:
     A branch approaching the anti-resonance omega_bar = 1, where Eq. (90) has the exact solution
     Abar = 0 for zeta = 0 (Appendix B).
     """
-    return _a_over_am(x[None, :], fixation, chi0)[0] < NOTCH_FLOOR
+    return _A_over_am(x[None, :], fixation, chi0)[0] < NOTCH_FLOOR
 
 
 def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
@@ -432,7 +434,7 @@ def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateL
         return curve
     edge = hi if last[0] > hi else lo
     guess = (math.exp(last[1]), math.exp(last[2]))
-    abar_m, abar = _newton(math.exp(edge), fixation, chi0, eta1, law, guess)
+    abar_m, Abar = _newton(math.exp(edge), fixation, chi0, eta1, law, guess)
     points = curve.points.copy()
-    points[-1] = [edge, math.log(abar_m), math.log(abar)]
+    points[-1] = [edge, math.log(abar_m), math.log(Abar)]
     return Curve(points, curve.tangents, curve.residuals)

@@ -6,7 +6,7 @@ effective work of adhesion is the mean of s squared, exactly, and at a mean radi
 (beta = etahat/sqrt(abar_m))
 
     w_eff/w0 = alpha*^2,   Phat_m = mean Phat = (4/3) abar_m^3 - 2 alpha* abar_m^(3/2),
-    deltabar0 = abar_m^2 - alpha* sqrt(abar_m).
+    base_offset = abar_m^2 - alpha* sqrt(abar_m).
 
 Relation to the paper's first-harmonic (J-integral) model, Eqs. (25)–(29), (47), (49), (55). Its
 leading order for rigid fixation imposes the same two conditions on s: the mean of s is abar_m^(3/2)
@@ -17,7 +17,7 @@ which has zero mean, so the drift condition is automatic), obtains s = sqrt(f(Ab
 has higher harmonics that the prescribed deltabar(tau) of Eq. (5) cannot balance -- and so replaces
 alpha*(beta) by J0(Abar) on |Jc1(Abar)| = beta. The exact cycle keeps s affine in sin tau and lets the
 speed x(tau) = X(s(tau)) take whatever (non-sinusoidal) shape makes the drift vanish. For small beta
-(Eqs. 28, 29 expanded as in :func:`vibroadhesion.core.integrals.j_integrals_small_abar`)
+(Eqs. 28, 29 expanded as in :func:`vibroadhesion.core.integrals.j_integrals_small_Abar`)
 
     J0 - 1 = pi W(2n) beta^2/(16 W(n+1)^2) + o(beta^2)   against   alpha* - 1 = beta^2/(2(1+n)),
     Abar_J = (pi beta/(2 W(n+1)))^(1/n)                  against   Abar   = (2 beta)^(1/n) W(1/n),
@@ -36,7 +36,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import elementwise
 
-from vibroadhesion.core.groups import PHAT_JKR, amplitude_in_contact_units, contact_radius_amplitude_ratio
+from vibroadhesion.core import groups
+from vibroadhesion.core.groups import PHAT_JKR
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import Pulloff, SteadyState
 from vibroadhesion.models.frozen_radius import alpha_star, frozen_radius_cycle
@@ -51,21 +52,21 @@ class MeanState(NamedTuple):
     """High-frequency mean state at a given abar_m (rigid fixation), Eqs. (16)–(18) exact."""
 
     abar_m: Array
-    deltabar0: Array  # (hhat - h0) R/a_o^2 that holds this abar_m: abar_m^2 - alpha sqrt(abar_m)
-    mean_force: Array  # Phat_m = (4/3) abar_m^3 - 2 alpha abar_m^(3/2)
+    base_offset: Array  # (hhat - h0) R/a_o^2 that holds this abar_m: abar_m^2 - alpha sqrt(abar_m)
+    phat_m: Array  # Phat_m = (4/3) abar_m^3 - 2 alpha abar_m^(3/2)
     alpha: Array  # mean sqrt(w/w0); w_eff/w0 = alpha^2
-    abar: Array  # internal variable omega A/v0
+    Abar: Array  # internal variable omega A/v0
 
 
 def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz) -> MeanState:
     """Mean state at given abar_m for base amplitude eta1 = h1/R: beta = etahat/sqrt(abar_m), alpha = alpha*(beta).
 
     ``abar_m`` and ``eta1`` broadcast against each other. Parametrising by abar_m (instead of
-    deltabar0) makes a quasi-static sweep of h0 explicit: every abar_m > 0 has exactly one state
-    (for n <= 4), while a given deltabar0 may have two or none.
+    base_offset) makes a quasi-static sweep of h0 explicit: every abar_m > 0 has exactly one state
+    (for n <= 4), while a given base_offset may have two or none.
     """
     abar_m, etahat = np.broadcast_arrays(np.asarray(abar_m, dtype=float),
-                                         amplitude_in_contact_units(np.asarray(eta1, dtype=float), chi0))
+                                         groups.etahat(np.asarray(eta1, dtype=float), chi0))
     if np.any(~(abar_m > 0)) or np.any(~np.isfinite(abar_m)):
         raise ValueError("abar_m must be positive and finite")
     cycle = frozen_radius_cycle(etahat / np.sqrt(abar_m), law)
@@ -75,7 +76,7 @@ def mean_state(abar_m: ArrayLike, eta1: ArrayLike, chi0: float, law: GentSchultz
         abar_m**2 - cycle.alpha * root,
         (4.0 / 3.0) * abar_m**3 - 2.0 * cycle.alpha * abar_m * root,
         cycle.alpha,
-        cycle.abar,
+        cycle.Abar,
     )
 
 
@@ -101,7 +102,7 @@ def _radius_where_alpha_is(etahat: Array, law: GentSchultz, c: float) -> Array:
 def _log_alpha_excess(u: Array, etahat: Array, law: GentSchultz, c: float) -> Array:
     """ln alpha*(etahat/u) - ln(c u^3), u = sqrt(abar_m) (Eq. * of :mod:`vibroadhesion.models.frozen_radius`).
 
-    Zero where the drift-free cycle meets the closure abar_m^(3/2) = alpha*/c (deltabar0 = 0,
+    Zero where the drift-free cycle meets the closure abar_m^(3/2) = alpha*/c (base_offset = 0,
     Eqs. 99, 123, for c = 1; a_m = a_cr, Eqs. 60–61, for c = 4/3).
     """
     return np.log(alpha_star(etahat / u, law)) - np.log(c * u**3)
@@ -110,35 +111,35 @@ def _log_alpha_excess(u: Array, etahat: Array, law: GentSchultz, c: float) -> Ar
 def nominal_point_contact(eta1: ArrayLike, omega_check: ArrayLike, chi0: float, law: GentSchultz) -> SteadyState:
     """Exact high-frequency nominal point contact (Sec. 3.5.4), broadcast over eta1 and omega_check.
 
-    The record of level ``exact_averaging``: deltabar0 = 0 gives alpha = abar_m^(3/2), so abar_m solves
+    The record of level ``exact_averaging``: base_offset = 0 gives alpha = abar_m^(3/2), so abar_m solves
     alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2) (unique root, see :func:`_radius_where_alpha_is`);
     Abar is the exact half peak-to-peak of the contact-radius oscillation, w_eff/w0 = alpha*^2,
     A/a_m = Abar/(omega_check c_o abar_m), P_m/|P_JKR| = Phat_m/(3/4) with Phat_m = (4/3 - 2) abar_m^3
-    (negative: tensile) and deltabar_m = deltabar0 = 0. omega_check enters A/a_m only. Where the root
+    (negative: tensile) and deltabar_m = base_offset = 0. omega_check enters A/a_m only. Where the root
     search fails the status is ``no_solution`` (every number NaN).
     """
     eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
     try:
-        abar_m, abar, alpha = _nominal_point_contact_state(eta1, chi0, law)
+        abar_m, Abar, alpha = _nominal_point_contact_state(eta1, chi0, law)
     except NoRootError as error:  # includes NoSteadyStateError
         return SteadyState.unsolved("exact_averaging", "no_solution", str(error), shape=eta1.shape)
     return SteadyState(
-        "exact_averaging", np.full(eta1.shape, "ok"), abar, abar_m, alpha**2,
-        contact_radius_amplitude_ratio(abar, abar_m, chi0, omega_check),
+        "exact_averaging", np.full(eta1.shape, "ok"), Abar, abar_m, alpha**2,
+        groups.A_over_am(Abar, abar_m, chi0, omega_check),
         ((4.0 / 3.0 - 2.0) * abar_m**3) / -PHAT_JKR, np.zeros(eta1.shape),
     )
 
 
 def _nominal_point_contact_state(eta1: Array, chi0: float, law: GentSchultz) -> tuple[Array, Array, Array]:
     """(abar_m, Abar, alpha*) of the nominal point contact, alpha*(etahat/sqrt(abar_m)) = abar_m^(3/2)."""
-    etahat = amplitude_in_contact_units(eta1, chi0).ravel()
+    etahat = groups.etahat(eta1, chi0).ravel()
     flat_abar_m = np.ones_like(etahat)
     moving = etahat > 0
     if np.any(moving):
         flat_abar_m[moving] = _radius_where_alpha_is(etahat[moving], law, 1.0)
     cycle = frozen_radius_cycle(etahat / np.sqrt(flat_abar_m), law)
-    abar_m, abar, alpha = (v.reshape(eta1.shape) for v in (flat_abar_m, cycle.abar, cycle.alpha))
-    return abar_m, abar, alpha
+    abar_m, Abar, alpha = (v.reshape(eta1.shape) for v in (flat_abar_m, cycle.Abar, cycle.alpha))
+    return abar_m, Abar, alpha
 
 
 # --- Quasi-static pull-off in the high-frequency limit -------------------------------------
@@ -157,7 +158,7 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
     every number NaN, the reason in ``message``: the exception becomes a status here, at the level boundary.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    etahat = amplitude_in_contact_units(eta1, chi0).ravel()
+    etahat = groups.etahat(eta1, chi0).ravel()
     abar_m = np.full_like(etahat, (9.0 / 16.0) ** (1.0 / 3.0))
     moving = etahat > 0
     try:
@@ -167,9 +168,9 @@ def pulloff_at_critical_radius(eta1: ArrayLike, chi0: float, law: GentSchultz) -
     except NoRootError as error:  # includes NoSteadyStateError
         return Pulloff.unsolved("exact_averaging", "no_solution", str(error), eta1.shape)
     shape = eta1.shape
-    ratio = (cycle.alpha**2).reshape(shape)
-    return Pulloff.from_ratio("exact_averaging", "ok", ratio, Abar_cr=cycle.abar.reshape(shape),
-                              sqrt_w_eff_ratio=cycle.alpha.reshape(shape), w_eff_ratio=ratio,
+    pulloff_ratio = (cycle.alpha**2).reshape(shape)
+    return Pulloff.from_ratio("exact_averaging", "ok", pulloff_ratio, Abar_cr=cycle.Abar.reshape(shape),
+                              sqrt_w_eff_ratio=cycle.alpha.reshape(shape), w_eff_ratio=pulloff_ratio,
                               abar_m=abar_m.reshape(shape))
 
 
@@ -186,11 +187,11 @@ def _smallest_mean_force(z: Array, eta1: Array, chi0: float, law: GentSchultz) -
     Phat_m = (4/3) abar_m^3 - 2 alpha* abar_m^(3/2) (Eqs. 16–18, :func:`mean_state`). Raises
     :class:`NoRootError` when the smallest value of a row sits at an end of its scan.
     """
-    force = mean_state(np.exp(z), eta1, chi0, law).mean_force
+    force = mean_state(np.exp(z), eta1, chi0, law).phat_m
     k = np.argmin(force, axis=1)
     at_end = (k == 0) | (k == z.shape[1] - 1)
     if np.any(at_end):
-        etahat = amplitude_in_contact_units(eta1[:, 0], chi0)
+        etahat = groups.etahat(eta1[:, 0], chi0)
         raise NoRootError(f"mean force has no interior minimum on the scan for etahat = {etahat[at_end][0]:.6g}")
     return force, k
 
@@ -218,10 +219,10 @@ def pulloff_at_force_minimum(eta1: ArrayLike, chi0: float, law: GentSchultz) -> 
         state = _force_minimum_state(eta1, chi0, law)
     except NoRootError as error:  # includes NoSteadyStateError
         return Pulloff.unsolved("exact_averaging_force_minimum", "no_solution", str(error), eta1.shape)
-    abar_m, alpha, abar, ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.abar,
-                                                                     state.mean_force / PHAT_JKR))
-    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", ratio, Abar_cr=abar, sqrt_w_eff_ratio=alpha,
-                              w_eff_ratio=alpha**2, abar_m=abar_m)
+    abar_m, alpha, Abar, pulloff_ratio = (np.reshape(v, eta1.shape) for v in (state.abar_m, state.alpha, state.Abar,
+                                                                              state.phat_m / PHAT_JKR))
+    return Pulloff.from_ratio("exact_averaging_force_minimum", "ok", pulloff_ratio, Abar_cr=Abar,
+                              sqrt_w_eff_ratio=alpha, w_eff_ratio=alpha**2, abar_m=abar_m)
 
 
 def _force_minimum_state(eta1: Array, chi0: float, law: GentSchultz) -> MeanState:
@@ -231,7 +232,7 @@ def _force_minimum_state(eta1: Array, chi0: float, law: GentSchultz) -> MeanStat
     :class:`NoRootError` when a minimum sits at an end of a scan.
     """
     column = eta1.reshape(-1, 1)
-    etahat = amplitude_in_contact_units(column, chi0)[:, 0]
+    etahat = groups.etahat(column, chi0)[:, 0]
     scale = np.maximum(1.0, np.sqrt(etahat))
     rows = np.arange(etahat.size)
     z = np.linspace(np.log(0.05 * scale), np.log(20.0 * scale), _SCAN_POINTS, axis=-1)

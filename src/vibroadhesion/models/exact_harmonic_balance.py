@@ -108,14 +108,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
+from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.core.groups import (
-    PHAT_JKR,
-    amplitude_in_contact_units,
-    contact_radius_amplitude_ratio,
-    contact_radius_ratio,
-)
-from vibroadhesion.core.integrals import folded_rule
+from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
+from vibroadhesion.core.integrals import folded_rule, gent_schultz_u
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
 from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models.compliant import amplitude_log_residual
@@ -142,13 +138,11 @@ class ExactHarmonics(NamedTuple, Generic[Value]):
 
 def _even_odd_parts(Abar: Array, law: RateLaw) -> tuple[Array, Array]:
     """S = s(v) + s(-v) and D = s(v) - s(-v) at the rule's nodes, v = Abar sin t (rows: Abar values)."""
-    t, log_sin_t, _ = folded_rule()
     if isinstance(law, GentSchultz):  # S = (2 + u)/sqrt(1 + u), D = -u/sqrt(1 + u), u = v^n: no cancellation
-        with np.errstate(divide="ignore"):
-            u = np.exp(law.n * (np.log(Abar)[:, None] + log_sin_t[None, :]))
+        u = gent_schultz_u(Abar, law.n)
         r = 1.0 / np.sqrt(1.0 + u)
         return (2.0 + u) * r, -u * r
-    v = np.multiply.outer(Abar, np.sin(t))
+    v = np.multiply.outer(Abar, folded_rule()[1])
     closing, opening = np.sqrt(law.f(v)), np.sqrt(law.f(-v))
     return closing + opening, closing - opening
 
@@ -355,7 +349,7 @@ def solve_rigid_fixation(
         raise ValueError(f"omega_check must be positive and finite, got {omega_check}")
     what = (f"exact harmonic balance (eta1 = {eta1:.6g}, omega_check = {omega_check:.6g}, "
             f"base_offset = {base_offset:.6g})")
-    etahat = float(amplitude_in_contact_units(eta1, chi0))
+    etahat = float(groups.etahat(eta1, chi0))
     c_o = contact_radius_ratio(chi0)
     if etahat == 0:
         static = _AtAmplitude(0.0, 0.0, law)
@@ -378,7 +372,7 @@ def solve_rigid_fixation(
     if max(abs(r) for r in residuals) > RESIDUAL_TOLERANCE:
         raise NoRootError(f"{what}: not converged, relative residuals {residuals} at Abar = {Abar:.6g}")
     return _rigid_record(Abar, abar_m, h.sqrt_w_eff_ratio**2,
-                         float(contact_radius_amplitude_ratio(Abar, abar_m, chi0, omega_check)),
+                         float(groups.A_over_am(Abar, abar_m, chi0, omega_check)),
                          h.phat_m / -PHAT_JKR, base_offset)
 
 

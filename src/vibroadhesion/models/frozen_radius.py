@@ -254,7 +254,7 @@ class FrozenRadiusCycle(NamedTuple):
     """The periodic state of the frozen contact radius for s = alpha + beta sin tau."""
 
     alpha: Array  # alpha*(beta) = mean of sqrt(w/w0); w_eff/w0 = alpha^2 (Eq. 18)
-    abar: Array  # omega A/v0: half peak-to-peak of int X d tau (Eq. 45 with the exact a(t))
+    Abar: Array  # omega A/v0: half peak-to-peak of int X d tau (Eq. 45 with the exact a(t))
     sqrt_w_min: Array  # alpha - beta: minimum of sqrt(w/w0) over the cycle (> 0: contact kept)
 
 

@@ -39,12 +39,12 @@ Mean balance. Eq. (15) times k, k (hhat - h0) + m g = P_m + k delta_m, with P_m,
 Eqs. (52)–(53). Divided by E* R^2 c_o^2, using P_m/(E* R^2) = c_o^3 [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)]
 and R delta_m/a_o^2 = abar_m^2 - J0 abar_m^(1/2) =: deltabar_m (Eq. 86):
 
-    c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] + kappa deltabar_m = mu/c_o^2 + kappa deltabar_base,   (III)
+    c_o [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)] + kappa deltabar_m = mu/c_o^2 + kappa base_offset,   (III)
 
-with deltabar_base = (hhat - h0) R/a_o^2; the load group of the right-hand side, times c_o^2,
+with base_offset = (hhat - h0) R/a_o^2; the load group of the right-hand side, times c_o^2,
 is lambda = mu + kappa (hhat - h0)/R. With h0 = hhat, (III) is Eq. (87) term by term; with J0 = 1
 and a_m/R = c_o abar_m it is Eq. (82). Limits: kappa -> inf (d -> inf) gives Eq. (55) from (II)
-and deltabar_m = deltabar_base, Eq. (56); kappa = 0 with d = -m omega^2/(E* R) gives Eq. (57)–(58)
+and deltabar_m = base_offset, Eq. (56); kappa = 0 with d = -m omega^2/(E* R) gives Eq. (57)–(58)
 from (II) and P_m = m g, Eq. (59).
 """
 
@@ -57,8 +57,9 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.core.groups import contact_radius_amplitude_ratio, contact_radius_ratio
+from vibroadhesion.core.groups import contact_radius_ratio
 from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState, stacked
@@ -77,7 +78,7 @@ def indentation_amplitude(abar_m: ArrayLike, jc1: ArrayLike, chi0: float) -> NDA
     return contact_radius_ratio(chi0) ** 2 * np.sqrt(np.asarray(abar_m, dtype=float)) * np.abs(jc1)
 
 
-def mean_force_over_pulloff(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
+def pm_over_abs_pjkr(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
     """P_m / |P_JKR| = (4/3) [(4/3) abar_m^3 - 2 J0 abar_m^(3/2)], tensile negative (Eqs. 52, 71).
 
     From Eq. (52) with sqrt(8 pi w0 E* a_m^3) = 2 E* a_o^(3/2) a_m^(3/2)/R and
@@ -126,7 +127,7 @@ def internal_variable(
 
 
 def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: float, base_offset: float) -> float:
-    """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - deltabar_base (Eq. 56).
+    """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - base_offset (Eq. 56).
 
     ``base_offset`` = (hhat - h0) R / a_o^2 (positive: base pushed towards the indenter); for a
     rigid fixation it is the imposed mean indentation. The weight mu is the fixation's (Eq. 81).
@@ -135,13 +136,13 @@ def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: fl
     if fixation.is_rigid:
         return deltabar_m - base_offset
     c_o = contact_radius_ratio(chi0)
-    force = 0.75 * float(mean_force_over_pulloff(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
+    force = 0.75 * float(pm_over_abs_pjkr(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
     load = load_group(fixation.mu, base_offset, fixation.kappa, chi0)
     return c_o * force + fixation.kappa * deltabar_m - load / c_o**2
 
 
 def load_group(mu: float, base_offset: float, kappa: float, chi0: float) -> float:
-    """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 deltabar_base: right-hand side of (III) times c_o^2."""
+    """lambda = mu + kappa (hhat - h0)/R = mu + kappa c_o^2 base_offset: right-hand side of (III) times c_o^2."""
     return mu + kappa * contact_radius_ratio(chi0) ** 2 * base_offset
 
 
@@ -158,9 +159,9 @@ def steady_states(
     *,
     base_offset: float = 0.0,
     omega_check: float = math.inf,
-    abar_min: float = 1e-4,
+    abar_m_min: float = 1e-4,
 ) -> SteadyState:
-    """All leading-order steady states with abar_m >= ``abar_min``, sorted by abar_m (Sec. 3.1).
+    """All leading-order steady states with abar_m >= ``abar_m_min``, sorted by abar_m (Sec. 3.1).
 
     Solves the amplitude equation (II) and the mean balance (III) (derivation in the module
     docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation (with
@@ -191,7 +192,7 @@ def steady_states(
     a condition that, x^(3/2)/J0 rising, persists. So F increases strictly beyond the first grid
     point past abar_turn where x^(3/2) >= (3/4) J0, and from there at most one root remains; it
     exists iff F < 0 there and is bracketed by doubling the step (:func:`monotone_tail_start`,
-    :func:`in_monotone_tail`). Below ``abar_min`` (a_m far
+    :func:`in_monotone_tail`). Below ``abar_m_min`` (a_m far
     below the JKR scale a_o, where with vibration Abar -> infinity) roots are not sought.
 
     Multiplicity and stability. In the static limit (J0 = 1) (III) is, in s = abar_m^(1/2),
@@ -204,22 +205,22 @@ def steady_states(
     criterion under a compliant machine, dP_m/da_m + k d delta_m/da_m > 0, which is dP_m/da_m > 0 under
     load control (kappa = 0) and d delta_m/da_m > 0 under displacement control (rigid).
     """
-    _check_steady_state_inputs(law, chi0, base_offset, abar_min, omega_check)
+    _check_steady_state_inputs(law, chi0, base_offset, abar_m_min, omega_check)
     balance = MeanBalance(eta1, fixation, chi0, law, omega_check, base_offset)
     what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
     try:
-        roots = mean_balance_roots(balance, abar_min, what)
+        roots = mean_balance_roots(balance, abar_m_min, what)
         if roots:
             return stacked([steady_state_at(abar_m, stable, balance, omega_check) for abar_m, stable in sorted(roots)])
     except NoRootError as error:
         return SteadyState.unsolved("leading", "no_solution", str(error), shape=(1,))
     return SteadyState.unsolved(
-        "leading", "no_solution", f"{what}: no steady state with abar_m >= {abar_min:.3g} (base offset = "
+        "leading", "no_solution", f"{what}: no steady state with abar_m >= {abar_m_min:.3g} (base offset = "
         f"{base_offset:.6g}); a tensile load beyond the vibroadhesive pull-off has none", shape=(1,))
 
 
-def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list[tuple[float, bool]]:
-    """Every root (abar_m, stable) >= ``abar_min`` of the mean balance (III) along (II) (Eqs. 43, 54), unsorted.
+def mean_balance_roots(balance: MeanBalance, abar_m_min: float, what: str) -> list[tuple[float, bool]]:
+    """Every root (abar_m, stable) >= ``abar_m_min`` of the mean balance (III) along (II) (Eqs. 43, 54), unsorted.
 
     The scan of :func:`steady_states` (method and end in its docstring): the segments of
     :func:`scan_segments`, each sign change and interior extremum polished, and the one root of the
@@ -229,8 +230,8 @@ def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list
     vibrating = balance.eta1 > 0 and fixation.d(omega_check) != 0  # else Abar = 0, J0 = 1 throughout
     resonance = fixation.contact_resonance(chi0, omega_check) if vibrating else None
     abar_turn = monotone_tail_start(fixation, chi0, omega_check) if vibrating else 0.0
-    z_res = math.log(resonance) if resonance is not None and resonance > abar_min else None
-    segments = scan_segments(balance, math.log(abar_min), z_res, abar_turn, what)
+    z_res = math.log(resonance) if resonance is not None and resonance > abar_m_min else None
+    segments = scan_segments(balance, math.log(abar_m_min), z_res, abar_turn, what)
     residual = partial(balance_residual, balance=balance)
     tail_root_bracket = bracket_increasing_root(residual, *segments[-1][-1], SCAN_STEP, what)
     roots = [root for nodes in segments for root in roots_on_nodes(residual, nodes, what)]
@@ -240,7 +241,7 @@ def mean_balance_roots(balance: MeanBalance, abar_min: float, what: str) -> list
 
 
 def _check_steady_state_inputs(
-    law: GentSchultz, chi0: float, base_offset: float, abar_min: float, omega_check: float
+    law: GentSchultz, chi0: float, base_offset: float, abar_m_min: float, omega_check: float
 ) -> None:
     """Reject inputs outside the domain of :func:`steady_states` (Eqs. 43, 54, 64, 105); the fixation checks itself.
 
@@ -252,8 +253,8 @@ def _check_steady_state_inputs(
         raise ValueError(f"chi0 must be a positive number, got {chi0!r}")
     if not math.isfinite(base_offset):
         raise ValueError(f"need a finite base offset, got base_offset = {base_offset!r}")
-    if not (math.isfinite(abar_min) and abar_min > 0):
-        raise ValueError(f"abar_min must be a positive number, got {abar_min!r}")
+    if not (math.isfinite(abar_m_min) and abar_m_min > 0):
+        raise ValueError(f"abar_m_min must be a positive number, got {abar_m_min!r}")
     if not omega_check > 0:
         raise ValueError(f"omega_check must be positive, got {omega_check!r}")
 
@@ -276,9 +277,9 @@ def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
     mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`).
     """
     abar_m = math.exp(z)
-    abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check)
-    j0 = float(j_integrals_for_law(abar, balance.law)[0])
-    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), abar, j0
+    Abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check)
+    j0 = float(j_integrals_for_law(Abar, balance.law)[0])
+    return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), Abar, j0
 
 
 def balance_residual(z: float, balance: MeanBalance) -> float:
@@ -347,15 +348,15 @@ def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_che
     omega_check = inf), P_m/|P_JKR| (Eqs. 52, 71) and deltabar_m (Eqs. 53, 86); ``stable`` as in
     :func:`steady_states`.
     """
-    _, abar, j0 = balance_state(math.log(abar_m), balance)
+    _, Abar, j0 = balance_state(math.log(abar_m), balance)
     return SteadyState(
         level="leading",
         status=np.asarray("ok"),
-        Abar=np.asarray(abar),
+        Abar=np.asarray(Abar),
         abar_m=np.asarray(abar_m),
         w_eff_ratio=np.asarray(j0**2),
-        A_over_am=np.asarray(float(contact_radius_amplitude_ratio(abar, abar_m, balance.chi0, omega_check))),
-        pm_over_abs_pjkr=np.asarray(float(mean_force_over_pulloff(abar_m, j0))),
+        A_over_am=np.asarray(float(groups.A_over_am(Abar, abar_m, balance.chi0, omega_check))),
+        pm_over_abs_pjkr=np.asarray(float(pm_over_abs_pjkr(abar_m, j0))),
         deltabar_m=np.asarray(float(mean_indentation(abar_m, j0))),
         stable=np.asarray(stable),
     )

@@ -26,7 +26,7 @@ Eqs. (67)–(69) as printed (they follow from Eqs. 43, 47–48, 50–51 and 62�
 k - m omega^2 = k (1 - omega_bar^2) and c omega/k = 2 zeta omega_bar; docs/errata.md, checked).
 As d -> infinity (kappa -> infinity, rigid) (IV) becomes Eq. (72).
 
-Roots of (IV) (:func:`critical_abars`). In z = ln Abar, g(z) = ln[(chi0^2/3) J0^(1/3) |Jc1|] -
+Roots of (IV) (:func:`critical_internal_variables`). In z = ln Abar, g(z) = ln[(chi0^2/3) J0^(1/3) |Jc1|] -
 ln[eta1 T(abar_cr)] with the transmissibility T(a) = |d|/|d + 2 c_o a| (Eq. I). g -> -infinity as
 Abar -> 0 (the left term -> -infinity, T(abar_cr(0)) = |d|/|d + chi0| > 0) and g -> +infinity as
 Abar -> infinity (J0 |Jc1| -> infinity while T J0^(2/3) stays bounded). Below the fixation's resonance
@@ -45,7 +45,7 @@ so Abar and a_cr -> infinity) and F > 0 as a_m -> infinity (T -> 0). Further roo
 towards the contact resonance, where the amplified oscillation makes F < 0 again; a withdrawal
 that starts attached below them reaches the smallest root first, and that root is reported as the
 pull-off. (A start above the contact resonance would meet the resonance first; this estimate does
-not cover it, and :func:`critical_abars` returns every root for a caller who needs the others.)
+not cover it, and :func:`critical_internal_variables` returns every root for a caller who needs the others.)
 
 
 Uniqueness of Eq. (72) (Gent–Schultz law). J0 and |Jc1| are strictly increasing in Abar
@@ -70,21 +70,21 @@ from vibroadhesion.models.leading_order import indentation_amplitude
 from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
 
 
-def pulloff_from_abar(level: str, abar_cr: NDArray[np.float64], law: RateLaw) -> Pulloff:
+def pulloff_from_internal_variable(level: str, Abar_cr: NDArray[np.float64], law: RateLaw) -> Pulloff:
     """The pull-off record at Abar_cr: J0 there (Eq. 28) and the ratio J0^2 (Eq. 71).
 
     A NaN Abar_cr (no root) gives the status ``no_solution`` and NaN numbers.
     """
-    found = ~np.isnan(abar_cr)
-    j0 = np.where(found, j_integrals_for_law(np.where(found, abar_cr, 0.0), law)[0], np.nan)
-    ratio = j0**2
-    return Pulloff.from_ratio(level, np.where(found, "ok", "no_solution"), ratio, Abar_cr=abar_cr,
-                              sqrt_w_eff_ratio=j0, w_eff_ratio=ratio)
+    found = ~np.isnan(Abar_cr)
+    j0 = np.where(found, j_integrals_for_law(np.where(found, Abar_cr, 0.0), law)[0], np.nan)
+    pulloff_ratio = j0**2
+    return Pulloff.from_ratio(level, np.where(found, "ok", "no_solution"), pulloff_ratio, Abar_cr=Abar_cr,
+                              sqrt_w_eff_ratio=j0, w_eff_ratio=pulloff_ratio)
 
 
-def pulloff_lhs_leading(abar: ArrayLike, law: RateLaw) -> NDArray[np.float64]:
+def pulloff_lhs_leading(Abar: ArrayLike, law: RateLaw) -> NDArray[np.float64]:
     """Left-hand side of Eq. (72), J0^(1/3) |Jc1|."""
-    j0, jc1, _ = j_integrals_for_law(abar, law)
+    j0, jc1, _ = j_integrals_for_law(Abar, law)
     return np.cbrt(j0) * np.abs(jc1)
 
 
@@ -93,20 +93,20 @@ def pulloff_closure(j0: ArrayLike) -> NDArray[np.float64]:
     return (9.0 / 16.0) ** (1.0 / 3.0) * np.cbrt(j0) ** 2
 
 
-def critical_abar_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
+def critical_internal_variable_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
                           omega_check: float = math.inf) -> float:
     """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 (0 gives 0).
 
     Rigid fixation (the default): the unique root of Eq. (72). Any other fixation, with its d at
     ``omega_check`` = omega R/v0 (Eq. 105): the smallest root of Eqs. (67)–(69), (IV) of the module
-    docstring (:func:`critical_abars`), the first reached as the base is withdrawn (module docstring).
+    docstring (:func:`critical_internal_variables`), the first reached as the base is withdrawn (module docstring).
     """
     if eta1 < 0 or not np.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
     if eta1 == 0:
         return 0.0
     if not fixation.is_rigid:
-        return critical_abars(eta1, fixation, chi0, law, omega_check)[0]
+        return critical_internal_variables(eta1, fixation, chi0, law, omega_check)[0]
     log_target = np.log(3.0 * eta1 / chi0**2)
     return solve_log_increasing(
         lambda z: float(np.log(pulloff_lhs_leading(np.exp(z), law))) - log_target,
@@ -119,32 +119,34 @@ def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixati
     """Leading-order pull-off, vectorised over eta1 (Eqs. 67–72): the record of level ``leading``.
 
     Eqs. (71)–(72) for rigid fixation (the default), Eqs. (67)–(69) and (71) for any other, with its d
-    at ``omega_check`` (:func:`critical_abar_leading`). An amplitude without a root has the status
+    at ``omega_check`` (:func:`critical_internal_variable_leading`). An amplitude without a root has the status
     ``no_solution``.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    abar = np.vectorize(lambda e: critical_abar_or_nan(e, chi0, law, fixation, omega_check), otypes=[float])(eta1)
-    return pulloff_from_abar("leading", abar, law)
+    Abar = np.vectorize(lambda e: critical_internal_variable_or_nan(e, chi0, law, fixation, omega_check),
+                        otypes=[float])(eta1)
+    return pulloff_from_internal_variable("leading", Abar, law)
 
 
-def critical_abar_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation, omega_check: float) -> float:
-    """:func:`critical_abar_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
+def critical_internal_variable_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation,
+                                      omega_check: float) -> float:
+    """:func:`critical_internal_variable_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
     try:
-        return critical_abar_leading(eta1, chi0, law, fixation, omega_check)
+        return critical_internal_variable_leading(eta1, chi0, law, fixation, omega_check)
     except NoRootError:
         return math.nan
 
 
-#: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_abars`).
+#: Grid in z = ln Abar on which Eqs. (67)-(69) are scanned for sign changes (:func:`critical_internal_variables`).
 PULLOFF_SCAN = np.linspace(-40.0, 40.0, 1601)
 
 
-def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
-                   log_abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
+def critical_internal_variables(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
+                   log_Abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
     """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending; d at ``omega_check``.
 
     g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)] with abar_cr = :func:`pulloff_closure` (J0),
-    i.e. (IV) of the module docstring in logarithms, is evaluated on the grid ``log_abar``; each sign
+    i.e. (IV) of the module docstring in logarithms, is evaluated on the grid ``log_Abar``; each sign
     change is polished by Brent's method (roots closer than the grid spacing can be missed). A contact
     resonance is no sign change (g -> -infinity on both sides). d = 0 (anti-resonance) gives [0.0].
     Raises :class:`NoRootError` when g is not negative at the left end of the grid (the smallest root
@@ -154,21 +156,21 @@ def critical_abars(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, o
         raise ValueError(f"eta1 must be a positive number, got {eta1!r}")
     if fixation.d(omega_check) == 0:
         return [0.0]
-    values = critical_log_excess(np.asarray(log_abar, dtype=float), eta1, fixation, chi0, law, omega_check)
+    values = critical_log_excess(np.asarray(log_Abar, dtype=float), eta1, fixation, chi0, law, omega_check)
     what = f"Eqs. (67)-(69) at eta1 = {eta1:.6g}, {fixation}"
     if not values[0] < 0:
-        raise NoRootError(f"{what}: the left-hand side reaches the target below Abar = {math.exp(log_abar[0]):.3g}")
+        raise NoRootError(f"{what}: the left-hand side reaches the target below Abar = {math.exp(log_Abar[0]):.3g}")
     crossings = np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)
     if crossings.size == 0:
-        raise NoRootError(f"{what}: no root for Abar up to {math.exp(log_abar[-1]):.3g}")
+        raise NoRootError(f"{what}: no root for Abar up to {math.exp(log_Abar[-1]):.3g}")
     excess = partial(critical_log_excess, eta1=eta1, fixation=fixation, chi0=chi0, law=law, omega_check=omega_check)
     return [math.exp(brentq(lambda z: float(excess(np.array([z]))[0]),
-                            log_abar[k], log_abar[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps))
+                            log_Abar[k], log_Abar[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps))
             for k in crossings]
 
 
 def critical_log_excess(
-    log_abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float
+    log_Abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float
 ) -> NDArray[np.float64]:
     """g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)], z = ln Abar (Eqs. 67–69, 72).
 
@@ -176,9 +178,9 @@ def critical_log_excess(
     Eqs. 68–69) over eta1^2; for a rigid fixation (T = 1) ln of the left-hand side of Eq. (72) over its
     right-hand side.
 
-    abar_cr = :func:`pulloff_closure` (J0) (Eqs. 61, 86). Vectorised over ``log_abar`` (1-d).
+    abar_cr = :func:`pulloff_closure` (J0) (Eqs. 61, 86). Vectorised over ``log_Abar`` (1-d).
     """
-    j0, jc1, _ = j_integrals_for_law(np.exp(log_abar), law)
+    j0, jc1, _ = j_integrals_for_law(np.exp(log_Abar), law)
     abar_cr = pulloff_closure(j0)
     transmissibility = np.array([fixation.transmissibility(float(a), chi0, omega_check) for a in abar_cr])
     return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(eta1 * transmissibility)

@@ -28,21 +28,25 @@ from collections.abc import Callable, Iterator, Sequence
 from contextlib import ExitStack
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import pandas as pd
 import yaml
 
 from vibroadhesion.pipeline.atomic import atomic_path
 from vibroadhesion.pipeline.input_checks import (
     KEYWORD_ORDER,
     DataError,
+    check_force_scale,
     dotted,
     kind_of,
     read_text,
     schema_message,
     schema_validator,
+    yaml_node_lines,
 )
+
+if TYPE_CHECKING:  # pandas is imported where a frame is built: checking the inputs (the Snakefile) needs none
+    import pandas as pd
 
 PULLOFF_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN", "source")
 NUMERIC_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN")
@@ -107,34 +111,6 @@ _Loader.add_implicit_resolver(
     re.compile(r"^[-+]?(?:\d[\d_]*)?(?:\.\d*)?[eE][-+]?\d+$"),
     list("-+0123456789."),
 )
-
-
-def _node_lines(path: str | Path, node: yaml.Node) -> dict[tuple[Any, ...], tuple[int, int]]:
-    """Map each key path to (line of its key, line of its value); reject duplicate/non-text keys."""
-    lines: dict[tuple[Any, ...], tuple[int, int]] = {(): (node.start_mark.line + 1, node.start_mark.line + 1)}
-
-    def walk(n: yaml.Node, prefix: tuple[Any, ...]) -> None:
-        if isinstance(n, yaml.MappingNode):
-            seen: dict[str, int] = {}
-            for key_node, value_node in n.value:
-                row = key_node.start_mark.line + 1
-                if not isinstance(key_node, yaml.ScalarNode) or key_node.tag != "tag:yaml.org,2002:str":
-                    raise DataError(path, row, dotted(prefix), "keys must be plain text names")
-                key = key_node.value
-                if key in seen:
-                    raise DataError(path, row, dotted(prefix + (key,)),
-                                    f"duplicate key (first given at row {seen[key]})")
-                seen[key] = row
-                lines[prefix + (key,)] = (row, value_node.start_mark.line + 1)
-                walk(value_node, prefix + (key,))
-        elif isinstance(n, yaml.SequenceNode):
-            for i, item in enumerate(n.value):
-                row = item.start_mark.line + 1
-                lines[prefix + (i,)] = (row, row)
-                walk(item, prefix + (i,))
-
-    walk(node, ())
-    return lines
 
 
 def _iter_nonfinite(value: Any, prefix: tuple[Any, ...] = ()) -> Iterator[tuple[Any, ...]]:
@@ -209,7 +185,7 @@ def _parse_setup(path: str | Path) -> tuple[Setup, dict[str, Any]]:
                 doc: Any = None
                 lines: dict[tuple[Any, ...], tuple[int, int]] = {}
             else:
-                lines = _node_lines(path, node)
+                lines = yaml_node_lines(path, node)
                 doc = loader.construct_document(node)
         finally:
             loader.dispose()
@@ -264,11 +240,9 @@ def read_canonical_setup(path: str | Path) -> Setup:
 # ----------------------------------------------------------------------------- pulloff.csv
 
 
-def _empty_pulloff() -> pd.DataFrame:
-    return _pulloff_frame([])
-
-
 def _pulloff_frame(records: list[dict[str, Any]]) -> pd.DataFrame:
+    import pandas as pd
+
     return pd.DataFrame({
         "frequency_hz": pd.Series([r["frequency_hz"] for r in records], dtype="float64"),
         "h1_um": pd.Series([r["h1_um"] for r in records], dtype="float64"),
@@ -301,13 +275,39 @@ def _number(path: Path, line_no: int, column: str, cell: str) -> float:
     return value
 
 
+def _row_numbers(path: Path, line_no: int, row: dict[str, str]) -> dict[str, Any]:
+    """The numeric columns of one row.
+
+    A static JKR test (h1_um = 0) has no excitation: its frequency may be empty (read as 0); any other row
+    needs a frequency > 0.
+    """
+    h1 = _number(path, line_no, "h1_um", row["h1_um"])
+    if h1 == 0 and not row["frequency_hz"].strip():
+        frequency = 0.0
+    else:
+        frequency = _number(path, line_no, "frequency_hz", row["frequency_hz"])
+        if frequency == 0 and h1 != 0:
+            raise DataError(path, line_no, "frequency_hz", "frequency must be > 0 Hz (0 or empty only for a static "
+                            f"test, h1_um = 0), got {frequency!r}")
+    return {"frequency_hz": frequency, "h1_um": h1, "pulloff_mN": _number(path, line_no, "pulloff_mN",
+                                                                          row["pulloff_mN"])}
+
+
 def load_pulloff(path: str | Path) -> pd.DataFrame:
-    """Read and validate ``data/pulloff.csv``.
+    """Read and validate ``data/pulloff.csv`` (:func:`pulloff_records`) as a frame.
+
+    Columns ``frequency_hz``, ``h1_um``, ``pulloff_mN`` (float64), ``source`` (str) and ``line``
+    (int64, 1-based line in the file); zero data rows give an empty frame with those columns and dtypes.
+    """
+    return _pulloff_frame(pulloff_records(path))
+
+
+def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
+    """Read and validate ``data/pulloff.csv``: one dict per row, the columns and its ``line``.
 
     Lines whose first non-blank character is ``#`` and blank lines are skipped; the first other
-    line is the header (the four columns, in any order). Returns columns ``frequency_hz``,
-    ``h1_um``, ``pulloff_mN`` (float64), ``source`` (str) and ``line`` (int64, 1-based line in
-    the file); zero data rows give an empty frame with those columns and dtypes.
+    line is the header (the four columns, in any order). Rows that repeat another are replicates
+    (a test run twice): they are kept.
     """
     path = Path(path)
     text = read_text(path)
@@ -316,7 +316,6 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
         raise DataError(path, 1, "header", f"file is empty; expected the header line {','.join(PULLOFF_COLUMNS)}")
     header: list[str] | None = None
     records: list[dict[str, Any]] = []
-    seen: dict[tuple[Any, ...], int] = {}
     row_validator = schema_validator("pulloff")
     for line_no, line in enumerate(lines, start=1):
         stripped = line.strip()
@@ -330,7 +329,7 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
         if len(cells) != len(header):
             _field_count_error(path, line_no, header, cells)
         row = dict(zip(header, cells, strict=True))
-        record: dict[str, Any] = {c: _number(path, line_no, c, row[c]) for c in NUMERIC_COLUMNS}
+        record = _row_numbers(path, line_no, row)
         record["source"] = row["source"].strip()
         errors = []
         for error in row_validator.iter_errors(record):
@@ -341,16 +340,12 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
         if errors:
             _, _, column, message = min(errors)
             raise DataError(path, line_no, column, message)
-        key = tuple(record[c] for c in PULLOFF_COLUMNS)
-        if key in seen:
-            raise DataError(path, line_no, "(all columns)", f"duplicate row: repeats row {seen[key]}")
-        seen[key] = line_no
         record["line"] = line_no
         records.append(record)
     if header is None:
         raise DataError(path, len(lines), "header",
                         f"no header line (only comments or blank lines); expected {','.join(PULLOFF_COLUMNS)}")
-    return _pulloff_frame(records)
+    return records
 
 
 def _check_header(path: Path, line_no: int, header: list[str]) -> None:
@@ -394,13 +389,13 @@ def read_canonical_pulloff(path: str | Path) -> pd.DataFrame:
 # ----------------------------------------------------------------------------- CLI
 
 
-def _pulloff_csv_text(frame: pd.DataFrame) -> str:
+def _pulloff_csv_text(records: list[dict[str, Any]]) -> str:
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
     writer.writerow(PULLOFF_COLUMNS)
-    for rec in frame.itertuples(index=False):
-        writer.writerow([repr(float(rec.frequency_hz)), repr(float(rec.h1_um)), repr(float(rec.pulloff_mN)),
-                         str(rec.source)])
+    for rec in records:
+        writer.writerow([repr(float(rec["frequency_hz"])), repr(float(rec["h1_um"])), repr(float(rec["pulloff_mN"])),
+                         str(rec["source"])])
     return buf.getvalue()
 
 
@@ -412,18 +407,29 @@ def _write_atomically(outputs: list[tuple[Path, str]]) -> None:
             tmp.write_text(text, encoding="utf-8", newline="")
 
 
+def check_inputs(setup_yaml: str | Path, pulloff_csv: str | Path) -> tuple[Setup, dict[str, Any], list[dict[str, Any]]]:
+    """Validate both inputs, each alone and against each other (:func:`check_force_scale`); no numerics imported.
+
+    Returns the setup, its YAML document and the pull-off rows; raises :class:`DataError` on the first problem.
+    The Snakefile calls it before it plans any job, so that a rejected edit changes nothing in ``results/``.
+    """
+    setup, doc = _parse_setup(setup_yaml)
+    records = pulloff_records(pulloff_csv)
+    check_force_scale(setup.radius, setup.w0, records, pulloff_csv)
+    return setup, doc, records
+
+
 def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path, out_csv: str | Path) -> str:
-    """Validate both inputs and write their canonical copies atomically (rule ``ingest``).
+    """Validate both inputs (:func:`check_inputs`) and write their canonical copies atomically (rule ``ingest``).
 
     The canonical setup JSON keeps values, units and sources; the canonical pull-off CSV has no
     comments, the columns frequency_hz, h1_um, pulloff_mN, source and floats written with repr.
     Raises :class:`DataError` (nothing written) on a bad input; returns a one-line summary.
     """
-    setup, doc = _parse_setup(setup_yaml)
-    rows = load_pulloff(pulloff_csv)
+    setup, doc, records = check_inputs(setup_yaml, pulloff_csv)
     setup_text = json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
-    _write_atomically([(Path(out_json), setup_text), (Path(out_csv), _pulloff_csv_text(rows))])
-    return f"validated {setup_yaml} ({len(setup.sources)} entries) and {pulloff_csv} ({len(rows)} rows)"
+    _write_atomically([(Path(out_json), setup_text), (Path(out_csv), _pulloff_csv_text(records))])
+    return f"validated {setup_yaml} ({len(setup.sources)} entries) and {pulloff_csv} ({len(records)} rows)"
 
 
 def main(argv: Sequence[str] | None = None) -> int:

@@ -21,7 +21,7 @@ from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
 from matplotlib.patches import Rectangle  # noqa: E402
 
-from vibroadhesion.core.integrals import j_integrals_large_abar  # noqa: E402
+from vibroadhesion.core.integrals import j_integrals_large_Abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
 from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
@@ -44,6 +44,12 @@ _PDF_METADATA = {"CreationDate": None, "Creator": None, "Producer": None}
 _PNG_METADATA = {"Software": None}
 
 
+#: ω̌ = ωR/v0 (Eq. 105) as text: omega with a combining caron. Matplotlib's mathtext sets the accent of
+#: ``\check{\omega}`` beside the letter, not on it, in every math font it ships.
+OMEGA_CHECK = "\u03c9\u030c"
+OMEGA_CHECK_AXIS = f"{OMEGA_CHECK} = " + r"$\omega R / v_0$"
+OMEGA_CHECK_LABEL_INF_EXACT = f"exact averaging ({OMEGA_CHECK} " + r"$\to \infty$), $a_m = a_{cr}$"
+
 def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
     """Save ``fig`` as PDF and PNG without time stamps, then close it."""
     with atomic_path(pdf) as tmp:
@@ -61,7 +67,7 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     rows = table[np.isclose(table["n"], n_fitted)]
     Abar = rows["Abar"].to_numpy()
-    asym = j_integrals_large_abar(Abar, n_fitted)
+    asym = j_integrals_large_Abar(Abar, n_fitted)
     for (label, column, sign), a, color in zip(
         [(r"$\mathcal{J}_0$", "J0", 1), (r"$-\mathcal{J}_{c1}$", "Jc1", -1), (r"$\mathcal{J}_1$", "J1", 1)],
         asym,
@@ -97,13 +103,14 @@ def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
 
 
 def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
-              virtual: pd.DataFrame | None = None) -> Figure:
-    """Fig. 4: P_cr/P_JKR against h1.
+              virtual: pd.DataFrame | None = None, parameter_label: str = "") -> Figure:
+    """Fig. 4: P_cr/P_JKR against h1, every curve and the measured rows at one parameter set (``parameter_label``).
 
-    Leading-order, refined and exact-averaging curves, measured rows by source,
-    and the simulated pull-off of the rigidly fixed virtual experiment (its own, labelled series: not measurements).
+    Leading-order, refined and exact-averaging curves, the simulated pull-off of the rigidly fixed virtual
+    experiment (its own, labelled series: not measurements), and the measured rows scaled by the same
+    ``jkr_pulloff_mN``: coloured by frequency as the refined curve of that frequency, marked by source.
     """
-    fig, ax = plt.subplots(figsize=(5.4, 3.9), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7.8, 3.9), constrained_layout=True)
     lead = table[table["model"] == "leading"]
     ax.plot(lead["h1_um"], lead["pulloff_ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
     refined = table[table["model"] == "refined"]
@@ -112,22 +119,35 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
                 label=f"refined, Eq. (106), {f:g} Hz")
     exact = table[table["model"] == "exact_averaging"]
     ax.plot(exact["h1_um"], exact["pulloff_ratio"], "k:", lw=1.4,
-            label=r"exact averaging ($\check\omega\to\infty$), $a_m = a_{cr}$")
+            label=OMEGA_CHECK_LABEL_INF_EXACT)
     if virtual is not None:
         sim = _simulated_rigid_pulloff(virtual)
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
                     label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
-    markers = "osD^v<>p"
-    for k, (source, rows) in enumerate(measurements.groupby("source", sort=True)):
-        ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
-                color=f"C{k + 3}", label=str(source))
+    _plot_measured(ax, measurements, jkr_pulloff_mN, sorted(refined["frequency_hz"].unique()))
+    if parameter_label:
+        ax.set_title(parameter_label, fontsize=7.5)
     if measurements.empty:
         ax.text(0.03, 0.97, "no measured rows in data/pulloff.csv\n(published fit shown)", transform=ax.transAxes,
                 va="top", fontsize=7.5, color="0.35")
     ax.set(xlabel=r"base amplitude $h_1$ (µm)", ylabel=r"$P_{cr}/P^{JKR}_{cr}$", xlim=(0, None), ylim=(0, None))
-    ax.legend(loc="lower right")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data, not on it
     return fig
+
+
+def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, frequencies: Sequence[float]) -> None:
+    """Measured rows over P_JKR: one marker per source, the colour of the refined curve of their frequency.
+
+    Grey for a frequency without a curve or for a static test (h1 = 0).
+    """
+    markers = "osD^v<>p"
+    for k, (source, by_source) in enumerate(measurements.groupby("source", sort=True)):
+        for f, rows in by_source.groupby("frequency_hz", sort=True):
+            known = [j for j, test in enumerate(frequencies) if np.isclose(test, f)]
+            where = "static, $h_1$ = 0" if f == 0 else f"{f:g} Hz"
+            ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
+                    color=f"C{known[0]}" if known else "0.4", label=f"{source}, {where}")
 
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
@@ -137,8 +157,10 @@ def _by_amplitude(table: pd.DataFrame) -> Any:
 
 
 def _mark_frequencies(ax: Axes, experiment_omega_check: Mapping[float, float]) -> None:
+    """A dotted vertical line at the omega_check of each test frequency of the rig, labelled once with all of them."""
+    label = "test frequencies " + "/".join(f"{f:g}" for f in sorted(experiment_omega_check)) + " Hz"
     for k, (_f, w) in enumerate(sorted(experiment_omega_check.items())):
-        ax.axvline(w, color="0.5", lw=0.7, ls=(0, (1, 2)), label="test frequencies 200/300/400 Hz" if k == 0 else None)
+        ax.axvline(w, color="0.5", lw=0.7, ls=(0, (1, 2)), label=label if k == 0 else None)
 
 
 def shade_amplitude_regions(ax: Axes) -> None:
@@ -174,7 +196,7 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
     ax_d = axes.flat[3]
     shade_amplitude_regions(ax_d)
     for ax in axes[1]:
-        ax.set_xlabel(r"$\check{\omega} = \omega R / v_0$")
+        ax.set_xlabel(OMEGA_CHECK_AXIS)
     axes.flat[0].legend()
     ax_d.legend(loc="lower left")
     return fig
@@ -205,9 +227,10 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
                       ms=4, label="simulated pull-off (virtual experiment)" if k == 0 else None)
     for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):
         _mark_frequencies(ax, experiment_omega_check)
-        ax.set(xscale="log", xlabel=r"$\check{\omega} = \omega R / v_0$", ylabel=label,
-               title=f"({letter}) dashed: Eq. (72); dotted: exact averaging")
+        ax.set(xscale="log", xlabel=OMEGA_CHECK_AXIS, ylabel=label, title=f"({letter})")
     ax_a.set_yscale("log")
+    ax_b.plot([], [], "k--", lw=0.8, label=f"Eq. (72) ({OMEGA_CHECK} " + r"$\to \infty$)")
+    ax_b.plot([], [], "k:", lw=1.0, label="exact averaging, $a_m = a_{cr}$")
     ax_b.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return fig
 
@@ -221,7 +244,7 @@ def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
         for k, (h1, rows) in enumerate(_by_amplitude(table)):
             ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
         _mark_frequencies(ax, experiment_omega_check)
-        ax.set(xscale="log", xlabel=r"$\check{\omega}$", ylabel=label, title=f"({letter})")
+        ax.set(xscale="log", xlabel=OMEGA_CHECK_AXIS, ylabel=label, title=f"({letter})")
     axes[0].axhline(1.0, color="k", lw=0.6, ls="--")
     axes[0].axhline(1.0 / 3.0, color="k", lw=0.6, ls=":")
     axes[0].legend()
@@ -289,7 +312,7 @@ def plot_validation_maps(
                 ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
         ax.set_xticks(range(len(omegas)), [f"{w:.2g}" for w in omegas], rotation=90, fontsize=7)
         ax.set_yticks(range(len(amplitudes)), [f"{h:g}" for h in amplitudes])
-        ax.set(title=model, xlabel=r"$\check{\omega}$")
+        ax.set(title=model, xlabel=OMEGA_CHECK_AXIS)
     np.atleast_1d(axes)[0].set_ylabel(r"$h_1$ (µm)")
     fig.colorbar(image, ax=axes, label="log10 max relative error vs simulation", shrink=0.9)
     fig.suptitle("Error against the direct simulation (hatched: refined A/a_m > 0.1; blank: no steady state); "

@@ -3,19 +3,24 @@
 :mod:`vibroadhesion.pipeline.data` reads ``data/setup.yaml`` and ``data/pulloff.csv``; this module
 holds what both readers share: :class:`DataError` (``"<file>, row <r>, column <c>: <what is wrong>"``),
 the packaged JSON schemas (draft 2020-12, ``vibroadhesion/pipeline/schemas/``) with their validators,
-the translation of a schema violation into that one-line message, and the UTF-8 file reader.
+the translation of a schema violation into that one-line message, the UTF-8 file reader, the line of
+each YAML node (with the refusal of numbers that YAML 1.1 reads in another base), and the check of
+the two files against each other (a pull-off force on the scale of the setup's JKR force).
 """
 
 from __future__ import annotations
 
 import difflib
 import json
+import math
+import re
 from collections.abc import Sequence
 from functools import cache
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
+import yaml
 from jsonschema import Draft202012Validator
 from jsonschema.exceptions import ValidationError
 
@@ -134,3 +139,78 @@ def read_text(path: Path) -> str:
     except UnicodeDecodeError as exc:
         row = raw[: exc.start].count(b"\n") + 1
         raise DataError(path, row, "(file)", "file is not UTF-8 text") from None
+
+
+#: A YAML integer as a person writes it in decimal. YAML 1.1, which PyYAML follows, also reads ``020`` as
+#: octal 16, ``0x20`` as 32, ``0b10`` as 2 and ``1:20`` (base 60) as 80: such a number is refused, not read.
+_DECIMAL_INT = re.compile(r"^[-+]?(?:0|[1-9][0-9]*)$")
+_INT_TAG, _FLOAT_TAG = "tag:yaml.org,2002:int", "tag:yaml.org,2002:float"
+
+
+def _check_number_text(path: str | Path, node: yaml.ScalarNode, prefix: tuple[Any, ...]) -> None:
+    """Refuse a YAML number whose text is not plain decimal (the base-changing spellings of YAML 1.1)."""
+    text = node.value
+    plain = _DECIMAL_INT.match(text) if node.tag == _INT_TAG else (":" not in text and "_" not in text)
+    if not plain:
+        raise DataError(path, node.start_mark.line + 1, dotted(prefix),
+                        f'"{text}" is not a plain decimal number (YAML reads a leading 0, 0x, 0b, ":" or "_" '
+                        "in another base or as a separator): write it in decimal")
+
+
+def _walk_nodes(path: str | Path, n: yaml.Node, prefix: tuple[Any, ...],
+                lines: dict[tuple[Any, ...], tuple[int, int]]) -> None:
+    """Record the lines of the nodes under ``n`` (key path ``prefix``) in ``lines``; check keys and numbers."""
+    if isinstance(n, yaml.MappingNode):
+        seen: dict[str, int] = {}
+        for key_node, value_node in n.value:
+            row = key_node.start_mark.line + 1
+            if not isinstance(key_node, yaml.ScalarNode) or key_node.tag != "tag:yaml.org,2002:str":
+                raise DataError(path, row, dotted(prefix), "keys must be plain text names")
+            key = key_node.value
+            if key in seen:
+                raise DataError(path, row, dotted(prefix + (key,)), f"duplicate key (first given at row {seen[key]})")
+            seen[key] = row
+            lines[prefix + (key,)] = (row, value_node.start_mark.line + 1)
+            _walk_nodes(path, value_node, prefix + (key,), lines)
+    elif isinstance(n, yaml.SequenceNode):
+        for i, item in enumerate(n.value):
+            row = item.start_mark.line + 1
+            lines[prefix + (i,)] = (row, row)
+            _walk_nodes(path, item, prefix + (i,), lines)
+    elif isinstance(n, yaml.ScalarNode) and n.tag in (_INT_TAG, _FLOAT_TAG):
+        _check_number_text(path, n, prefix)
+
+
+def yaml_node_lines(path: str | Path, node: yaml.Node) -> dict[tuple[Any, ...], tuple[int, int]]:
+    """Map each key path to (line of its key, line of its value).
+
+    Rejects duplicate or non-text keys and numbers that YAML 1.1 reads in another base (:func:`_check_number_text`).
+    """
+    lines: dict[tuple[Any, ...], tuple[int, int]] = {(): (node.start_mark.line + 1, node.start_mark.line + 1)}
+    _walk_nodes(path, node, (), lines)
+    return lines
+
+
+#: A measured pull-off force below this fraction of |P_cr^JKR| (Eq. 70) at the setup's w0 and R is refused as a
+#: unit slip. Vibration only raises the work of adhesion (w >= w0, Eq. 6), so every model level and the simulation
+#: give at least |P_cr^JKR|; a force below 0.3 of it is far more likely newtons typed in the millinewton column.
+MIN_PULLOFF_OVER_JKR = 0.3
+
+
+def jkr_pulloff_mN(radius: float, w0: float) -> float:
+    """|P_cr^JKR| = (3 pi / 2) R w0 (Eq. 70) in mN, R in m, w0 in J/m^2 (core.jkr.pulloff_force without numpy)."""
+    return 1.5 * math.pi * radius * w0 * 1e3
+
+
+def check_force_scale(radius: float, w0: float, records: Sequence[dict[str, Any]], pulloff_csv: str | Path) -> None:
+    """Refuse the first row whose ``pulloff_mN`` is below :data:`MIN_PULLOFF_OVER_JKR` |P_cr^JKR| (a unit slip).
+
+    ``radius`` (m) and ``w0`` (J/m^2) of data/setup.yaml; ``records`` the rows, each with its ``line`` in the file.
+    """
+    floor = MIN_PULLOFF_OVER_JKR * jkr_pulloff_mN(radius, w0)
+    for rec in records:
+        if rec["pulloff_mN"] < floor:
+            raise DataError(pulloff_csv, rec["line"], "pulloff_mN",
+                            f"pull-off force {rec['pulloff_mN']!r} mN is below {MIN_PULLOFF_OVER_JKR} |P_JKR| = "
+                            f"{floor:.3g} mN of the setup's w0 and R (vibration only raises it): looks like N, "
+                            "expected mN (for a weaker adhesive, set gent_schultz_published.w0 in the setup)")

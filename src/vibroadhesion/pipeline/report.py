@@ -84,13 +84,13 @@ def virtual_pulloff_tables(virtual_csv: str | Path) -> list[tuple[str, pd.DataFr
         case = ("" if fixation == "rigid" else
                 f" (kappa = {rows['kappa'].iloc[0]:g}, zeta = {rows['zeta'].iloc[0]:g}; "
                 "leading: Eqs. (67)-(69), refined: Eq. (90) at a_m = a_cr)")
-        ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
-        ratio = ratio[[m for m in levels.names("virtual_pulloff") if m in ratio.columns]]
-        for model in ratio.columns.drop("simulation"):
-            ratio[f"{model} error"] = ratio[model] / ratio["simulation"] - 1
-        ratio = ratio.rename(columns={"simulation": "SIMULATED"})
+        pulloff_ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
+        pulloff_ratio = pulloff_ratio[[m for m in levels.names("virtual_pulloff") if m in pulloff_ratio.columns]]
+        for model in pulloff_ratio.columns.drop("simulation"):
+            pulloff_ratio[f"{model} error"] = pulloff_ratio[model] / pulloff_ratio["simulation"] - 1
+        pulloff_ratio = pulloff_ratio.rename(columns={"simulation": "SIMULATED"})
         sim = rows[rows["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
-        ratio["status"], ratio["steady states"] = sim["status"], sim["steady_states"]
+        pulloff_ratio["status"], pulloff_ratio["steady states"] = sim["status"], sim["steady_states"]
         share = sim["abar_m"] / sim["abar_cr"]
         heading = (f"{fixation.upper()} fixation{case}. P_cr/P_JKR: the SIMULATED pull-off (a simulation, not a "
                    "measurement) and the predictions; \"error\" columns: prediction / simulation - 1.")
@@ -98,7 +98,7 @@ def virtual_pulloff_tables(virtual_csv: str | Path) -> list[tuple[str, pd.DataFr
                   f"{100 * share.min():.0f}–{100 * share.max():.0f} % of the JKR critical radius a_cr of Eq. (61) "
                   "(with the simulated w_eff): the paper's detachment criterion a_m = a_cr (Eq. 60) is not where "
                   "the mean force peaks.")
-        out.append((heading, ratio, remark))
+        out.append((heading, pulloff_ratio, remark))
     return out
 
 

@@ -6,8 +6,10 @@ Modules, each importing only from those before it:
 
 * :mod:`~vibroadhesion.simulation.model`: the nondimensional model (derivation), the constants of a
   :class:`vibroadhesion.core.problem.Problem`, the contact kernel and the static state;
+* :mod:`~vibroadhesion.simulation.kernel`: the right-hand sides and DOP853 compiled with numba;
 * :mod:`~vibroadhesion.simulation.integrators`: one period in scaled variables (right-hand sides,
-  Jacobians) and the choice between the Fortran DOP853 and :func:`scipy.integrate.solve_ivp`;
+  Jacobians) and the choice between the compiled DOP853, the Fortran DOP853 and
+  :func:`scipy.integrate.solve_ivp`;
 * :mod:`~vibroadhesion.simulation.orbits`: a period as a :class:`~vibroadhesion.core.records.SteadyState`
   with its :class:`~vibroadhesion.core.records.OrbitDiagnostics` (means, harmonics, extremes), the
   frozen-contact start of the shooting, and :func:`transient`;

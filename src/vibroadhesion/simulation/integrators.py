@@ -17,11 +17,15 @@ core the full problem carries Psi = M - I of the one-period map (its variational
 :mod:`vibroadhesion.simulation.shooting`) and the quadratures of the orbit's means and harmonics
 (:mod:`vibroadhesion.simulation.orbits`).
 
-Integrators. "auto": the first period with LSODA (ODEPACK), the periods near the orbit, not stiff
-for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode` (a period costs
-~100 steps, ~25 us each: the Python loop of solve_ivp would cost 4 times more), a period DOP853
-gives up on repeated with Radau (analytic Jacobian). The extremes of a and of Phi are located
-between accepted steps by Brent's method on re-integrated states.
+Integrators. "auto": a period with the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`
+(a period costs ~100-300 steps of 12 right-hand sides; ~0.1-0.4 ms compiled, ~20 times less than
+with the Python right-hand side), the first period from the static state too if rigid with n <= 1
+(:class:`Integrators`); otherwise,
+and where the compiled run gives up, the first period with LSODA (ODEPACK), the periods near the
+orbit, not stiff for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode`
+(~25 us a step: the Python loop of solve_ivp would cost 4 times more), a period DOP853 gives up on
+repeated with Radau (analytic Jacobian). The extremes of a and of Phi are located between accepted
+steps by Brent's method on re-integrated states.
 
 Known limitation: for n > 1 in the quasi-static regime (omega_check c_o << etahat^(1/n - 1)) the
 contact tracks Phi - 1 ~ x^n ~ 1e-9..1e-16, where the speed (Phi - 1)^(1/n) has a relative
@@ -40,16 +44,20 @@ from typing import Literal, NamedTuple
 import numpy as np
 from scipy.integrate import BDF, DOP853, LSODA, RK45, Radau, ode
 
+from vibroadhesion.simulation import kernel
 from vibroadhesion.simulation.model import SPEED_CAP, TWO_PI, Array, Model, contact_kernel
 
 Integrator = Literal["auto", "fortran-dop853", "Radau", "BDF", "LSODA", "DOP853", "RK45"]
 #: A right-hand side f(tau, y) of the scaled problem, and the Jacobian df/dy of one.
-RightHandSide = Callable[[float, Array], list[float]]
+RightHandSide = Callable[[float, Array], list[float] | Array]
 Jacobian = Callable[[float, Array], Array]
+#: A number, or numbers at several points.
+Values = float | Array
 #: Called after every accepted step with (tau, y); True stops the integration.
 StepCallback = Callable[[float, Array], bool]
 
 _FORTRAN = "fortran-dop853"
+_COMPILED = "numba-dop853"
 _IVP_SOLVERS = {"Radau": Radau, "BDF": BDF, "LSODA": LSODA, "DOP853": DOP853, "RK45": RK45}
 _IMPLICIT = ("Radau", "BDF", "LSODA")
 #: Steps allowed per call: to the Fortran DOP853 (then "auto" repeats the call with Radau) and
@@ -68,12 +76,22 @@ _N_QUAD_RIGID = 7
 _N_QUAD_COMPLIANT = 10
 
 
+def compiled_rhs(constants: Array, size: int, tau: float, y: Array) -> Array:
+    """The rates of Eqs. (3'), (6') of the core or of the full state (``size`` components) for scipy's integrators.
+
+    :func:`vibroadhesion.simulation.kernel.state_rates` with the period's ``constants``, into a new array.
+    """
+    out = np.empty(size)
+    kernel.state_rates(tau, y, out, constants)
+    return out
+
+
 class Period:
     """The one-period problem from a start state, in scaled variables.
 
     Scaled core: u = v/V (rigid) or (xi, eta, u) = (xbar/S, xbar'/S, v/V) (compliant), with
     v = speed_scale (abar - abar(0)); the map coordinate of abar is beta = speed_scale abar / V. The
-    right-hand sides are closures over the constants (speed: they run ~1e4 times per period).
+    right-hand sides are the compiled ones of :mod:`vibroadhesion.simulation.kernel`.
     """
 
     def __init__(self, model: Model, start: Array, v_scale: float, x_scale: float):
@@ -85,7 +103,22 @@ class Period:
         self.x_scale = x_scale
         self.dim = model.dim
         self.n_var = self.dim * self.dim
-        self.core_rhs, self.full_rhs = (self._compliant_rhs() if model.compliant else self._rigid_rhs())
+        #: The constants of the compiled period (kernel.CONSTANTS).
+        self.kernel_constants = np.array([
+            self.b0, v_scale, 1.0 / model.speed_scale, 1.0 / v_scale, model.base_offset, model.etahat, model.inv_n,
+            model.log_cap, 1.0 if model.variational else 0.0, 1.0 if model.compliant else 0.0,
+            *self._spring_constants()])
+        full_size = kernel.COMPLIANT_FULL_SIZE if model.compliant else kernel.FULL_SIZE
+        self.core_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, self.dim)
+        self.full_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, full_size)
+
+    def _spring_constants(self) -> list[float]:
+        """S, mu/(kappa c_o^2)/S, (c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (Eq. 3'); zeros if rigid."""
+        m = self.m
+        if not m.compliant:
+            return [0.0] * 6
+        return [self.x_scale, m.force_offset / self.x_scale, m.compliance / self.x_scale, 1.0 / m.omega_bar**2,
+                2.0 * m.zeta * m.omega_bar, m.compliance]
 
     # -- conversions
 
@@ -119,9 +152,9 @@ class Period:
             d += core[0] * self.x_scale
         return abar, d, contact_kernel(abar, d, m.inv_n, m.log_cap)
 
-    def deltabar_rate(self, tau: float, core: Sequence[float]) -> float:
-        """d deltabar / d tau."""
-        rate = -self.m.etahat * math.cos(tau)
+    def deltabar_rate(self, tau: Values, core: Sequence[Values]) -> Values:
+        """d deltabar / d tau at a point (floats) or at points (arrays: ``core`` the components' arrays)."""
+        rate = -self.m.etahat * np.cos(tau)
         return rate + core[1] * self.x_scale if self.m.compliant else rate
 
     # -- Jacobians (for the implicit integrators)
@@ -171,67 +204,6 @@ class Period:
         return jac
 
     # -- right-hand sides
-
-    def _rigid_rhs(self) -> tuple[RightHandSide, RightHandSide]:
-        b0, v_scale, m = self.b0, self.v_scale, self.m
-        inv_speed_scale, inv_v, d0, etahat = 1.0 / m.speed_scale, 1.0 / v_scale, m.base_offset, m.etahat
-        inv_n, log_cap = m.inv_n, m.log_cap
-        sin, cos, contact = math.sin, math.cos, contact_kernel
-
-        def core(tau: float, y: Array) -> list[float]:
-            abar = (b0 + v_scale * y.item(0)) * inv_speed_scale
-            return [contact(abar, d0 - etahat * sin(tau), inv_n, log_cap)[0] * inv_v]
-
-        variational = m.variational
-
-        def full(tau: float, y: Array) -> list[float]:
-            u = y.item(0)
-            abar = (b0 + v_scale * u) * inv_speed_scale
-            s, c = sin(tau), cos(tau)
-            x, x_a, _, p, w = contact(abar, d0 - etahat * s, inv_n, log_cap)
-            return [x * inv_v, x_a * inv_speed_scale if variational else 0.0, u, u * c, u * s, w, p, p * c, p * s]
-
-        return core, full
-
-    def _compliant_rhs(self) -> tuple[RightHandSide, RightHandSide]:
-        b0, v_scale, x_scale, m = self.b0, self.v_scale, self.x_scale, self.m
-        inv_speed_scale, inv_v, d0, etahat = 1.0 / m.speed_scale, 1.0 / v_scale, m.base_offset, m.etahat
-        inv_n, log_cap = m.inv_n, m.log_cap
-        # eta' = (offset - compliance Phat - S xi - 2 zeta omega_bar S eta) / (omega_bar^2 S), Eq. (3')
-        offset, compliance = m.force_offset / x_scale, m.compliance / x_scale
-        inv_w2, damp = 1.0 / m.omega_bar**2, 2.0 * m.zeta * m.omega_bar
-        sin, cos, contact, entries = math.sin, math.cos, contact_kernel, self._jacobian_entries
-        variational = m.variational
-        no_variation = [0.0] * 9
-
-        def core(tau: float, y: Array) -> list[float]:
-            xi, eta, u = y.item(0), y.item(1), y.item(2)
-            abar = (b0 + v_scale * u) * inv_speed_scale
-            x, _, _, p, _ = contact(abar, x_scale * xi + d0 - etahat * sin(tau), inv_n, log_cap)
-            return [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
-
-        def full(tau: float, y: Array) -> list[float]:
-            xi, eta, u = y.item(0), y.item(1), y.item(2)
-            abar = (b0 + v_scale * u) * inv_speed_scale
-            s, c = sin(tau), cos(tau)
-            d = x_scale * xi + d0 - etahat * s
-            x, x_a, x_d, p, w = contact(abar, d, inv_n, log_cap)
-            quadratures = [u, u * c, u * s, w, p, p * c, p * s, xi, xi * c, xi * s]
-            core_rates = [eta, (offset - compliance * p - xi - damp * eta) * inv_w2, x * inv_v]
-            if not variational:
-                return core_rates + no_variation + quadratures
-            j10, j11, j12, j20, j22 = entries(abar, d, x_a, x_d)
-            p0, p1, p2, p3, p4, p5, p6, p7, p8 = y[3:12].tolist()
-            m00, m01, m02 = 1.0 + p0, p1, p2  # M = I + Psi, row-major
-            m10, m11, m12 = p3, 1.0 + p4, p5
-            m20, m21, m22 = p6, p7, 1.0 + p8
-            return core_rates + [  # Psi' = J M with J = [[0, 1, 0], [j10, j11, j12], [j20, 0, j22]]
-                m10, m11, m12,
-                j10 * m00 + j11 * m10 + j12 * m20, j10 * m01 + j11 * m11 + j12 * m21, j10 * m02 + j11 * m12 + j12 * m22,
-                j20 * m00 + j22 * m20, j20 * m01 + j22 * m21, j20 * m02 + j22 * m22,
-            ] + quadratures
-
-        return core, full
 
 
 # --- Integration drivers --------------------------------------------------------------------------
@@ -300,7 +272,8 @@ class Run(NamedTuple):
     period: Period
     lost_at: float  # tau of contact loss, NaN if none
     y_end: Array
-    steps: list[tuple[float, list[float]]]
+    taus: Array  # accepted steps, the start first (the step of a contact loss left out)
+    cores: Array  # (steps, dim): the scaled core at those steps
     u_range: tuple[float, float]
 
 
@@ -311,7 +284,13 @@ class Integrators:
     to grow: the front then slides along Phi ~ 0 at a huge closing speed) with LSODA,
     which switches to BDF there; the periods near the orbit, which are not stiff for
     omega_check >~ 1e3, with the Fortran DOP853; a run that DOP853 gives up on is repeated with
-    Radau. Any other name runs everything.
+    Radau. A period near the orbit runs first with the compiled DOP853 of
+    :mod:`vibroadhesion.simulation.kernel`, and with the methods above only if that gives up; so
+    does a transient period of the rigid fixation with n <= 1 (within ~2e3 steps). Transients stay
+    with LSODA for n > 1 (stiff first periods of 2e4 to more than 2e5 explicit steps) and for the
+    compliant fixation (there the compiled DOP853's end state jumps by ~1e-9 between neighbouring
+    starts as its step count changes, which spoils differences of transients such as the
+    finite-difference monodromy). Any other name runs everything.
     """
 
     def __init__(self, integrator: Integrator, rtol: float):
@@ -325,6 +304,15 @@ class Integrators:
         self.transient = "LSODA" if self.auto else integrator
         self.rtol = rtol
         self.used: list[str] = []
+
+    def compiles(self, period: Period, transient: bool = False) -> bool:
+        """Whether ``period`` runs with the compiled DOP853 ("auto"; a transient only if rigid with n <= 1)."""
+        return self.auto and (not transient or (period.m.variational and not period.m.compliant))
+
+    def note(self, method: str) -> None:
+        """Record that ``method`` ran."""
+        if method not in self.used:
+            self.used.append(method)
 
     def run(
         self,
@@ -349,8 +337,7 @@ class Integrators:
                 raise
             method = "Radau"
             result = _integrate(fun, jac, tau0, y0, tau1, method, self.rtol, on_step)
-        if method not in self.used:
-            self.used.append(method)
+        self.note(method)
         return result
 
     def description(self) -> str:
@@ -382,14 +369,44 @@ class _StepRecorder:
         return False
 
 
+def _compiled_run(period: Period, integrators: Integrators, y0: Sequence[float], tau0: float, tau1: float,
+                  loss_abar: float) -> kernel.KernelRun | None:
+    """:func:`kernel.integrate` of ``period`` (Eq. 6'; None when it gives up: the caller takes the scipy path)."""
+    result = kernel.integrate(period.kernel_constants, np.asarray(y0, dtype=float), tau0, tau1, integrators.rtol,
+                              _FORTRAN_MAX_STEPS, loss_abar)
+    if result.code < 0:
+        return None
+    integrators.note(_COMPILED)
+    return result
+
+
+def integrate_core(period: Period, integrators: Integrators, tau0: float, core0: Sequence[float],
+                   tau1: float) -> list[float]:
+    """The scaled core at ``tau1`` from ``core0`` at ``tau0`` (Eqs. 3', 6'; compiled if it can; no loss stop)."""
+    if integrators.compiles(period):
+        result = _compiled_run(period, integrators, core0, tau0, tau1, -math.inf)
+        if result is not None:
+            return result.y.tolist()
+    return integrators.run(period.core_rhs, period.core_jacobian, tau0, core0, tau1)[1].tolist()
+
+
 def run_period(period: Period, integrators: Integrators, full: bool, transient: bool = False) -> Run:
     """Integrate one period, stopping at contact loss; records accepted steps and the range of u."""
+    y0 = period.full_start() if full else period.core_start()
+    if integrators.compiles(period, transient):
+        result = _compiled_run(period, integrators, y0, 0.0, TWO_PI, period.m.contact_loss_abar)
+        if result is not None:
+            kept = len(result.taus) - 1 if result.code == kernel.CONTACT_LOST else len(result.taus)
+            lost_at = result.tau if kept < len(result.taus) else math.nan
+            cores = result.cores[:kept]
+            return Run(period, lost_at, result.y, result.taus[:kept], cores,
+                       (float(cores[:, -1].min()), float(cores[:, -1].max())))
     recorder = _StepRecorder(period)
     fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
-    y0 = period.full_start() if full else period.core_start()
     _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)
-    u = [core[-1] for _, core in recorder.steps]
-    return Run(period, recorder.lost_at, y_end, recorder.steps, (min(u), max(u)))
+    cores = np.array([core for _, core in recorder.steps])
+    return Run(period, recorder.lost_at, y_end, np.array([tau for tau, _ in recorder.steps]), cores,
+               (float(cores[:, -1].min()), float(cores[:, -1].max())))
 
 
 # --- Scales ----------------------------------------------------------------------------------------
@@ -446,6 +463,6 @@ def periodic_to_rounding(run: Run, integrators: Integrators) -> bool:
 
 def scaled_core_range(run: Run) -> float:
     """Largest magnitude of the scaled core over the accepted steps (O(1) when the scales fit)."""
-    return max(1.0, max(abs(c) for _, core in run.steps for c in core))
+    return max(1.0, float(np.max(np.abs(run.cores))))
 
 

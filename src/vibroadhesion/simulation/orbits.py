@@ -36,12 +36,15 @@ from scipy.optimize import brentq
 from vibroadhesion.core.groups import PHAT_JKR
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.records import OrbitDiagnostics, SteadyState, SteadyStatus
+from vibroadhesion.simulation import kernel
 from vibroadhesion.simulation.integrators import (
     IntegrationError,
     Integrator,
     Integrators,
     Period,
     Run,
+    Values,
+    integrate_core,
     observed_v_scale,
     run_period,
     v_scale_estimate,
@@ -80,28 +83,41 @@ class Transient(NamedTuple):
 # --- Analysis of a converged period --------------------------------------------------------------
 
 
-def _refine_roots(
-    run: Run, integrators: Integrators, g: Callable[[Period, float, list[float]], float]
-) -> list[tuple[float, list[float]]]:
+#: g(period, tau, core, abar, deltabar, x): a function whose sign changes locate points of a period,
+#: at one point (floats) or at the accepted steps (arrays, ``core`` the components' arrays).
+PointFunction = Callable[[Period, Values, Any, Values, Values, Values], Values]
+
+
+def _contact_at_steps(run: Run) -> tuple[Array, Array, Array]:
+    """(abar, deltabar, x) at the run's accepted steps (Eqs. 6', 7): :meth:`Period.contact_at` at all at once."""
+    period, m = run.period, run.period.m
+    abar = (period.b0 + period.v_scale * run.cores[:, -1]) / m.speed_scale
+    d = m.base_offset - m.etahat * np.sin(run.taus)
+    if m.compliant:
+        d = d + run.cores[:, 0] * period.x_scale
+    return abar, d, kernel.speeds(abar, d, m.inv_n, m.log_cap)
+
+
+def _refine_roots(run: Run, integrators: Integrators, g: PointFunction,
+                  at_steps: tuple[Array, Array, Array]) -> list[tuple[float, list[float]]]:
     """Points (tau, scaled core) where g changes sign between accepted steps, by Brent + re-integration.
 
-    The state inside a step is obtained by integrating from the step's start, so the root is
-    located to ~1e-14 in tau on the integrated solution itself. A sign change that re-integration
-    does not reproduce (g at rounding level, as for a contact that does not move) is dropped.
+    ``at_steps`` is (abar, deltabar, x) at the steps (:func:`_contact_at_steps`). The state inside a
+    step is obtained by integrating from the step's start, so the root is located to ~1e-14 in tau
+    on the integrated solution itself. A sign change that re-integration does not reproduce (g at
+    rounding level, as for a contact that does not move) is dropped.
     """
     period = run.period
-    values = [g(period, t, core) for t, core in run.steps]
+    values = np.asarray(g(period, run.taus, run.cores.T, *at_steps))
     roots = []
-    for k in range(len(run.steps) - 1):
+    for k in np.flatnonzero((values[:-1] == 0.0) | (values[:-1] * values[1:] < 0.0)).tolist():
+        tau_k, core_k = float(run.taus[k]), run.cores[k].tolist()
         if values[k] == 0.0:
-            roots.append(run.steps[k])
+            roots.append((tau_k, core_k))
             continue
-        if values[k] * values[k + 1] >= 0.0:
-            continue
-        tau_k, core_k = run.steps[k]
         in_step = (period, integrators, tau_k, core_k)
-        tau_end = run.steps[k + 1][0]
-        if values[k] * g(period, tau_end, _state_in_step(tau_end, *in_step)) >= 0.0:
+        tau_end = float(run.taus[k + 1])
+        if values[k] * _g_in_step(tau_end, g, *in_step) >= 0.0:
             continue
         tau_root = brentq(_g_in_step, tau_k, tau_end, args=(g, *in_step), xtol=1e-14, rtol=1e-15)
         roots.append((tau_root, _state_in_step(tau_root, *in_step)))
@@ -114,27 +130,27 @@ def _state_in_step(
     """Scaled core at ``tau`` inside the accepted step that starts at (tau_k, core_k), re-integrated."""
     if tau == tau_k:
         return core_k
-    return integrators.run(period.core_rhs, period.core_jacobian, tau_k, core_k, tau)[1].tolist()
+    return integrate_core(period, integrators, tau_k, core_k, tau)
 
 
-def _g_in_step(tau: float, g: Callable[[Period, float, list[float]], float], period: Period, integrators: Integrators,
+def _g_in_step(tau: float, g: PointFunction, period: Period, integrators: Integrators,
                tau_k: float, core_k: list[float]) -> float:
     """g at ``tau`` on the re-integrated solution inside a step (:func:`_state_in_step`)."""
-    return g(period, tau, _state_in_step(tau, period, integrators, tau_k, core_k))
+    core = _state_in_step(tau, period, integrators, tau_k, core_k)
+    abar, d, contact = period.contact_at(tau, core)
+    return float(g(period, tau, core, abar, d, contact[0]))
 
 
-def _turning(period: Period, tau: float, core: list[float]) -> float:
+def _turning(period: Period, tau: Values, core: Any, abar: Values, d: Values, x: Values) -> Values:
     """abar (Phi - 1) = gap^2 - abar: zero where x = 0, i.e. at the extremes of a (Eqs. 5', 6')."""
-    abar, d, _ = period.contact_at(tau, core)
     return (abar * abar - d) ** 2 - abar
 
 
-def _dphi_dtau(period: Period, tau: float, core: list[float]) -> float:
+def _dphi_dtau(period: Period, tau: Values, core: Any, abar: Values, d: Values, x: Values) -> Values:
     """dPhi/dtau = Phi_a a' + Phi_d deltabar': zero at the extremes of Phi, hence of the speed (Eq. 6')."""
-    abar, d, contact = period.contact_at(tau, core)
     gap = abar * abar - d
     phi_a, phi_d = gap * (3 * abar * abar + d) / (abar * abar), -2.0 * gap / abar
-    return phi_a * contact[0] / period.m.speed_scale + phi_d * period.deltabar_rate(tau, core)
+    return phi_a * x / period.m.speed_scale + phi_d * period.deltabar_rate(tau, core)
 
 
 def summarise(
@@ -147,11 +163,13 @@ def summarise(
     quad = run.y_end[dim + period.n_var :]
     a0 = float(period.start[-1])
     # Extremes of a (x = 0) and of Phi (of the speed, which decreases with Phi).
-    u_values = [0.0, *(core[-1] for _, core in _refine_roots(run, integrators, _turning))]
+    at_steps = _contact_at_steps(run)
+    u_values = [0.0, *(core[-1] for _, core in _refine_roots(run, integrators, _turning, at_steps))]
     u_values.append(float(run.y_end[dim - 1]))
     half_range = 0.5 * (max(u_values) - min(u_values)) * v_scale  # in v units: = Abar
-    candidates = [*run.steps, *_refine_roots(run, integrators, _dphi_dtau)]
-    peak_speed = max(abs(period.contact_at(t, core)[2][0]) for t, core in candidates)
+    peak_speed = max([float(np.max(np.abs(at_steps[2]))),
+                      *(abs(period.contact_at(t, core)[2][0]) for t, core in
+                        _refine_roots(run, integrators, _dphi_dtau, at_steps))])
 
     abar_m = a0 + quad[0] * v_scale / (TWO_PI * speed_scale)
     a_c, a_s = quad[1] * v_scale / (math.pi * speed_scale), quad[2] * v_scale / (math.pi * speed_scale)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 
 import numpy as np
 import pandas as pd
@@ -15,14 +15,17 @@ FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio",
 
 
 def fig4_table(
-    params: Mapping[str, GentSchultzParameters],
+    params: GentSchultzParameters,
     frequencies_hz: Sequence[float],
     h1_um: np.ndarray,
     *,
     radius: float,
     reduced_modulus: float,
 ) -> pd.DataFrame:
-    """Fig. 4's table: pull-off against amplitude for every level of role ``fig4``, each with its ``params``.
+    """Fig. 4's table: pull-off against amplitude for every level of role ``fig4``, all at one parameter set.
+
+    One set (the fit the figures use), so that the curves differ by their model only and the measured rows
+    can be scaled by the one |P_cr^JKR| = (3 pi/2) R w0 of that set (Eq. 70).
 
     In the registry's Fig. 4 order (:func:`vibroadhesion.core.levels.fig4_names`): the frequency-independent
     curves (leading order, Eqs. 71–72; the exact high-frequency limit with the paper's criterion
@@ -34,8 +37,8 @@ def fig4_table(
     for model in levels.fig4_names():
         frequencies = frequencies_hz if levels.level(model).frequency_dependent else [np.nan]
         for f in frequencies:
-            pred = predict_pulloff(model, params[model], f, h1_um, radius=radius, reduced_modulus=reduced_modulus)
-            frames.append(_fig4_frame(model, f, h1_um, pred, params[model].w0, radius))
+            pred = predict_pulloff(model, params, f, h1_um, radius=radius, reduced_modulus=reduced_modulus)
+            frames.append(_fig4_frame(model, f, h1_um, pred, params.w0, radius))
     return pd.concat(frames, ignore_index=True)[FIG4_COLUMNS]
 
 

@@ -12,7 +12,7 @@ import pandas as pd
 
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models.compliant import ResponseCurve, static_abar_m, trace_response_curve
+from vibroadhesion.models.compliant import ResponseCurve, static_abar_0, trace_response_curve
 
 FIG5_COLUMNS = ["chi0", "eta1", "nu0", "zeta", "kappa", "mu", "branch", "omega_bar", "Abar", "abar_m", "A_over_am"]
 FIG5_MARKER_COLUMNS = ["kind", "frequency_hz", *FIG5_COLUMNS]
@@ -25,7 +25,7 @@ def _fig5_rows(branch: Sequence[str], x: np.ndarray, curve: ResponseCurve) -> pd
     return pd.DataFrame({"chi0": curve.chi0, "eta1": curve.eta1, "nu0": p.nu0, "zeta": p.zeta, "kappa": p.kappa,
                          "mu": p.mu,
                          "branch": branch, "omega_bar": np.exp(x[:, 0]), "Abar": np.exp(x[:, 2]),
-                         "abar_m": np.exp(x[:, 1]), "A_over_am": curve.a_over_am(x)})[FIG5_COLUMNS]
+                         "abar_m": np.exp(x[:, 1]), "A_over_am": curve.A_over_am(x)})[FIG5_COLUMNS]
 
 
 def fig5_tables(
@@ -54,7 +54,7 @@ def fig5_tables(
             segment = np.concatenate([[0], np.cumsum(turns)])
             curves.append(_fig5_rows([f"{name}-{k}" for k in segment], piece.points, curve))
         if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
-            anti = np.array([[0.0, np.log(static_abar_m(p, chi0)), -np.inf]])
+            anti = np.array([[0.0, np.log(static_abar_0(p, chi0)), -np.inf]])
             curves.append(_fig5_rows(["anti-resonance"], anti, curve))
         markers.append(_fig5_rows(["fold"] * len(curve.folds), curve.folds, curve)
                        .assign(kind="fold", frequency_hz=np.nan))

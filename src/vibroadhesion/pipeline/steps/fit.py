@@ -15,7 +15,8 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
     """Fit w0, n, v0 to the measured rows with each model level (Eqs. 71-72, 106).
 
     No rows: the published parameters pass through. ``figures_use`` names the fit the figures take their parameters
-    from.
+    from; the summary's status is that fit's (``fitted``, ``at_bound``, ``not_identifiable``, ``failed``: then the
+    figures show the published values). A level that fails does not stop the others.
     """
     setup = data.read_canonical_setup(setup_json)
     rows = data.read_canonical_pulloff(pulloff_csv)
@@ -24,7 +25,8 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
     fits = {model: fit_gent_schultz(rows, model, published, **geometry) for model in names("fit")}
     summary = {
         "data_rows": len(rows),
-        "status": "published parameters passed through (no measured rows)" if rows.empty else "fitted",
+        "status": ("published parameters passed through (no measured rows)" if rows.empty
+                   else f"the figures' {figures_use} fit: {fits[figures_use]['status']}"),
         "published": {"w0": setup.w0, "n": setup.n, "v0": setup.v0,
                       "source": setup.sources["gent_schultz_published.w0"]},
         "figures_use": figures_use,

@@ -23,6 +23,14 @@ def fitted(fit_json: str | Path, model: str | None = None) -> dict[str, float]:
     return {name: parameters[name]["estimate"] for name in ("w0", "n", "v0")}
 
 
+def fit_label(fit_json: str | Path) -> str:
+    """The parameter set the figures use, for a figure: which fit, w0, n and v0 (or "published" without rows)."""
+    fit = json.loads(Path(fit_json).read_text())
+    p = fitted(fit_json)
+    which = "published parameters" if fit["data_rows"] == 0 else f"{fit['figures_use']} fit"
+    return f"{which}: $w_0$ = {p['w0']:.3g} J/m², $n$ = {p['n']:.3g}, $v_0$ = {p['v0'] * 1e6:.3g} µm/s"
+
+
 def rig(setup_json: str | Path, fit_json: str | Path) -> tuple[Setup, dict[str, float], float]:
     """The ingested rig, the parameters of the fit the figures use, and chi0 at them (Eq. 64)."""
     setup = read_canonical_setup(setup_json)

@@ -13,7 +13,7 @@ import pandas as pd
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.pipeline import figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, setup_number
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fit_label, fitted, setup_number
 
 Path_ = str | Path
 
@@ -25,10 +25,16 @@ def fig3_plot(fit_json: Path_, csv: Path_, pdf: Path_, png: Path_, panel_n: Sequ
 
 def fig4_plot(setup_json: Path_, fit_json: Path_, pulloff_csv: Path_, virtual_csv: Path_, csv: Path_, pdf: Path_,
               png: Path_) -> None:
-    """Fig. 4: P_cr/P_JKR (Eqs. 71-72, 106) with the measured rows and the simulated rigid pull-off."""
+    """Fig. 4: P_cr/P_JKR (Eqs. 71-72, 106) with the measured rows and the simulated rigid pull-off.
+
+    The curves and the scale of the measured rows, |P_cr^JKR| = (3 pi/2) R w0 (Eq. 70), are those of one parameter
+    set, the fit the figures use, which the figure names.
+    """
     setup = read_canonical_setup(setup_json)
-    jkr_mN = float(-pulloff_force(fitted(fit_json, "leading")["w0"], setup.radius)) * 1e3
-    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN, pd.read_csv(virtual_csv))
+    params = fitted(fit_json)
+    jkr_mN = float(-pulloff_force(params["w0"], setup.radius)) * 1e3
+    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN, pd.read_csv(virtual_csv),
+                            parameter_label=fit_label(fit_json))
     figures.save_figure(fig, pdf, png)
 
 

@@ -1,0 +1,54 @@
+"""A rig other than the paper's: the figure steps follow data/setup.yaml (issue 13, item 7).
+
+The steps run as the rules run them (ingest, fit, tables, plot) on a setup with test frequencies 150/250 Hz and
+amplitudes 25.5, 50 and 150 um, off Fig. 4's 1 um grid and beyond its 120 um; no simulated rows.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from vibroadhesion.pipeline.data import ingest
+from vibroadhesion.pipeline.steps.fig4 import fig4_data
+from vibroadhesion.pipeline.steps.fit import fit
+from vibroadhesion.pipeline.steps.plots import fig7_plot
+from vibroadhesion.pipeline.steps.rigid import fig7_data
+
+ROOT = Path(__file__).resolve().parents[2]
+AMPLITUDES = [25.5, 50.0, 150.0]
+VIRTUAL_COLUMNS = ["fixation", "model", "status", "frequency_hz", "h1_um", "pulloff_ratio"]
+
+
+def _other_rig(tmp_path: Path) -> tuple[Path, Path]:
+    text = (ROOT / "data/setup.yaml").read_text(encoding="utf-8")
+    for old, new in (("value: [200.0, 300.0, 400.0]", "value: [150.0, 250.0]"),
+                     ("value: [20.0, 40.0, 60.0, 80.0, 100.0]", f"value: {AMPLITUDES}")):
+        assert text.count(old) == 1
+        text = text.replace(old, new)
+    (tmp_path / "setup.yaml").write_text(text, encoding="utf-8")
+    setup_json, pulloff_csv, fit_json = tmp_path / "setup.json", tmp_path / "pulloff.csv", tmp_path / "fit.json"
+    ingest(tmp_path / "setup.yaml", ROOT / "data/pulloff.csv", setup_json, pulloff_csv)
+    fit(setup_json, pulloff_csv, fit_json, "refined")
+    return setup_json, fit_json
+
+
+def test_fig4_grid_holds_the_rig_amplitudes_and_fig7_draws_them(tmp_path: Path) -> None:
+    """Fig. 7 reads the leading-order and exact-averaging values at each rig amplitude from Fig. 4's table: the
+    amplitudes must be on its grid (an IndexError before), and the plot must label the rig's frequencies."""
+    setup_json, fit_json = _other_rig(tmp_path)
+    fig4_csv, fig7_csv = tmp_path / "fig4.csv", tmp_path / "fig7.csv"
+    fig4_data(setup_json, fit_json, fig4_csv, 120.0, 121)
+    table = pd.read_csv(fig4_csv)
+    for model in ("leading", "exact_averaging"):
+        h1 = table.loc[table["model"] == model, "h1_um"].to_numpy()
+        assert all(np.any(h1 == a) for a in AMPLITUDES), model
+        assert np.all(np.diff(h1) > 0)
+    assert sorted(table.loc[table["model"] == "refined", "frequency_hz"].unique()) == [150.0, 250.0]
+    fig7_data(setup_json, fit_json, fig7_csv, 2.0, 9.0, 8)
+    virtual = tmp_path / "virtual.csv"
+    pd.DataFrame(columns=VIRTUAL_COLUMNS).to_csv(virtual, index=False)
+    fig7_plot(setup_json, fit_json, fig7_csv, fig4_csv, virtual, tmp_path / "fig7.pdf", tmp_path / "fig7.png")
+    assert (tmp_path / "fig7.png").stat().st_size > 0
