@@ -96,23 +96,41 @@ def envelope_log_derivatives(params: GentSchultzParameters, frequency_hz: float,
 
     Central differences in ln theta of the mean force Phat_m of two orbits at the fixed base offset d* of
     ``at``, warm-started from its state (envelope theorem), plus 1 for w0 (|P_cr^JKR| is proportional to w0,
-    Eq. 70). NaN for a parameter whose shifted orbit does not converge.
+    Eq. 70). Where one shifted orbit does not converge, the one-sided difference with the orbit of ``at``
+    (error O(step), ~1e-3 of the derivative); NaN where neither does.
     """
     d_star, orbit = at
     if orbit.orbit is None:
         raise TypeError("the pull-off orbit has no orbit diagnostics")
-    state = orbit.orbit.start_state
     derivatives = np.empty(len(names))
     for k, name in enumerate(names):
-        phat = []
-        for sign in (1.0, -1.0):
-            shifted = replace(params, **{name: getattr(params, name) * math.exp(sign * step)})
-            problem = pulloff_problem(shifted, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus,
-                                      base_offset=d_star)
-            found = simulation.steady_state(problem, initial_state=state, max_iterations=WARM_ITERATIONS)
-            phat.append(found.orbit.phat_m if found.ok and found.orbit is not None else math.nan)
-        derivatives[k] = (math.log(phat[0] / phat[1])) / (2.0 * step) + (1.0 if name == "w0" else 0.0)
+        plus, minus = (_shifted_phat(params, name, sign * step, frequency_hz, h1_um, at, radius=radius,
+                                     reduced_modulus=reduced_modulus) for sign in (1.0, -1.0))
+        if math.isnan(plus) or math.isnan(minus):
+            one_sided = (plus, step) if math.isnan(minus) else (minus, -step)
+            derivative = math.log(one_sided[0] / orbit.orbit.phat_m) / one_sided[1]
+        else:
+            derivative = math.log(plus / minus) / (2.0 * step)
+        derivatives[k] = derivative + (1.0 if name == "w0" else 0.0)
     return derivatives
+
+
+def _shifted_phat(params: GentSchultzParameters, name: str, log_shift: float, frequency_hz: float, h1_um: float,
+                  at: Extremum, *, radius: float, reduced_modulus: float) -> float:
+    """Phat_m (Eq. 4') of the orbit at the fixed base offset of ``at`` with ``name`` scaled by exp(``log_shift``).
+
+    Warm-started from the orbit of ``at`` with WARM_ITERATIONS periods, then with the shooting's default cap
+    (a shooting that stalls next to the pull-off converges then); NaN if neither converges.
+    """
+    d_star, orbit = at
+    shifted = replace(params, **{name: getattr(params, name) * math.exp(log_shift)})
+    problem = pulloff_problem(shifted, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus,
+                              base_offset=d_star)
+    state = _start_state(orbit)
+    found = simulation.steady_state(problem, initial_state=state, max_iterations=WARM_ITERATIONS)
+    if not found.ok:
+        found = simulation.steady_state(problem, initial_state=state)
+    return found.orbit.phat_m if found.ok and found.orbit is not None else math.nan
 
 
 @dataclass
@@ -160,13 +178,19 @@ class _Families:
         return self.last
 
     def log_derivatives(self, params: GentSchultzParameters, name: str) -> np.ndarray:
-        """d ln|P_cr| / d ln ``name`` per pair at ``params`` (:func:`envelope_log_derivatives`); 0 without pull-off."""
+        """d ln|P_cr| / d ln ``name`` per pair at ``params`` (:func:`envelope_log_derivatives`); 0 without pull-off.
+
+        A pair whose shifted orbits both fail has no derivative: :class:`FitError`, never a silent 0.
+        """
         _, _, extrema = self.evaluate(params)
         if name not in self.derivatives:
             self.derivatives[name] = np.array([
-                float(name == "w0") if pair == STATIC else 0.0 if at is None else float(np.nan_to_num(
-                    envelope_log_derivatives(params, *pair, at, (name,), **self.geometry)[0]))
+                float(name == "w0") if pair == STATIC else 0.0 if at is None else
+                envelope_log_derivatives(params, *pair, at, (name,), **self.geometry)[0]
                 for pair, at in zip(self.pairs, extrema, strict=True)])
+            if not np.all(np.isfinite(self.derivatives[name])):
+                raise FitError(f"simulation fit: no orbit next to the pull-off of a pair at {params} when {name} "
+                               "is shifted: no derivative")
         return self.derivatives[name]
 
 
