@@ -58,3 +58,16 @@ def test_pages_in_a_shared_kernel_equal_pages_in_kernels_of_their_own(tmp_path: 
         assert [c.get("outputs") for c in nb.cells] == [c.get("outputs") for c in alone.cells]
     assert [c.execution_count for c in shared[1][1].cells] == [1, 2, 3, 4]
     assert shared[1][1].cells[-1].outputs[0]["data"]["text/plain"] == "3.0"
+
+
+def test_a_page_shows_outputs_and_no_code(tmp_path: Path) -> None:
+    """Readers see what a cell prints, not the cell: no source, no In/Out prompts; the executed notebook keeps both."""
+    page = _page(tmp_path, "shown", "marker_variable = 6 * 7", "print(marker_variable)")
+    with shared_kernel() as manager:
+        reset_namespace(manager)
+        render_page(page, manager)
+    html = page.html.read_text(encoding="utf-8")
+    assert "42" in html
+    assert "marker_variable" not in html and "In&nbsp;[" not in html
+    assert "marker_variable" in page.executed.read_text(encoding="utf-8")
+

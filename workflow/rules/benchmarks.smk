@@ -19,6 +19,7 @@ rule benchmark_simulate:
     """Speed against error of the direct simulation: shooting vs brute-force transients, rtol self-consistency."""
     input:
         script="benchmarks/simulate.py",
+        kernels=rules.simulation_kernels.output[0],
         code=code("benchmarks/simulate.py"),
     output:
         "results/benchmarks/simulate.txt",
@@ -36,6 +37,7 @@ rule benchmark_speed_vs_error:
         **RIG,
         script="benchmarks/speed_vs_error.py",
         errors=rules.validation_errors.output.errors,
+        kernels=rules.simulation_kernels.output[0],
         code=code("benchmarks/speed_vs_error.py"),
     output:
         csv="results/benchmarks/speed_vs_error.csv",

@@ -13,6 +13,7 @@ rule pulloff_sensitivity:
     """Simulated pull-off (rigid fixation, every test frequency and amplitude) with one parameter scaled by exp(+-h)."""
     input:
         **RIG,
+        kernels=rules.simulation_kernels.output[0],
         code=code("pulloff_sensitivity"),
     output:
         "results/validation/identifiability/sensitivity/{parameter}_{sign}.csv",

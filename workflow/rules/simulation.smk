@@ -1,3 +1,15 @@
+rule simulation_kernels:
+    """Compile the numba kernels of the simulation once and cache them, before the simulation jobs run in parallel."""
+    input:
+        code=code("simulation_kernels"),
+    output:
+        "results/simulation/kernels.txt",
+    log:
+        "results/logs/simulation_kernels.log",
+    script:
+        "../scripts/simulation_kernels.py"
+
+
 # The direct simulation of the full model (ground truth), upstream of the figures that overlay it and of
 # the validation that compares with it: results/simulation/.
 
@@ -7,6 +19,7 @@ rule simulation_rigid:
     rig (one job per amplitude: a cluster runs them in parallel), rigid nominal point contact."""
     input:
         **RIG,
+        kernels=rules.simulation_kernels.output[0],
         code=code("simulation_rigid"),
     output:
         "results/simulation/rigid/h1_{h1}.csv",
@@ -43,6 +56,7 @@ rule virtual_pulloff:
     """Quasi-static withdrawal of the base through periodic steady states: the simulated pull-off force."""
     input:
         **RIG,
+        kernels=rules.simulation_kernels.output[0],
         code=code("virtual_pulloff"),
     output:
         "results/simulation/virtual_pulloff/{fixation}_{frequency}Hz.csv",

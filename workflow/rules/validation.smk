@@ -37,6 +37,7 @@ rule validation_compliant:
     simulation (hysteresis, Floquet stability), and the refined model's curve of that case."""
     input:
         **RIG,
+        kernels=rules.simulation_kernels.output[0],
         code=code("validation_compliant"),
     output:
         csv="results/validation/compliant_sweep.csv",

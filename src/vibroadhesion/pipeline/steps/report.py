@@ -71,6 +71,9 @@ def reset_namespace(manager: KernelManager, timeout: float = 60.0) -> None:
 def render_page(page: Page, manager: KernelManager) -> None:
     """Execute ``page.notebook`` in the kernel of ``manager`` and write the executed notebook and its HTML page.
 
+    The page shows the outputs only (text, tables, figures): the code stays in the notebook, which remains the
+    source and stays executable; the executed notebook keeps both.
+
     ``page.parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell, in a cell
     whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page.
     """
@@ -81,7 +84,8 @@ def render_page(page: Page, manager: KernelManager) -> None:
             if INJECTED in cell.metadata.get("tags", ()):
                 cell.id = INJECTED
         nbformat.write(nb, tmp)
-    body, _ = nbconvert.HTMLExporter().from_notebook_node(nb)
+    body, _ = nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True,
+                                     exclude_output_prompt=True).from_notebook_node(nb)
     with atomic_path(page.html) as tmp:
         tmp.write_text(body, encoding="utf-8")
 
