@@ -58,7 +58,8 @@ def test_names_are_unique_and_a_missing_function_or_level_says_so() -> None:
 
 
 def test_modules_of_a_role_are_the_modules_of_its_functions() -> None:
-    assert levels.modules("fit", "pulloff") == ("vibroadhesion.models.exact_averaging",
+    assert levels.modules("fit", "pulloff") == ("vibroadhesion.experiments.virtual_pulloff",
+                                                "vibroadhesion.models.exact_averaging",
                                                 "vibroadhesion.models.leading_pulloff", "vibroadhesion.models.refined")
     assert levels.modules("validation_rigid", "steady_state") == (
         "vibroadhesion.experiments.validation", "vibroadhesion.models.exact_averaging",
@@ -67,7 +68,8 @@ def test_modules_of_a_role_are_the_modules_of_its_functions() -> None:
 
 def test_roles_name_the_levels_of_the_paper_and_its_checks() -> None:
     assert levels.names("validation_rigid") == ("simulation", "leading", "refined", "exact_hb", "exact_averaging")
-    assert levels.names("fit") == ("leading", "refined", "exact_averaging", "exact_averaging_force_minimum")
+    assert levels.names("fit") == ("simulation", "leading", "refined", "exact_averaging",
+                                   "exact_averaging_force_minimum")
     assert levels.fig4_names() == ("leading", "exact_averaging", "refined")
     assert levels.names("virtual_pulloff") == ("simulation", "leading", "refined", "exact_averaging",
                                                "exact_averaging_force_minimum")
@@ -82,6 +84,7 @@ def test_fixations_select_the_levels_whose_model_covers_the_fixation() -> None:
     assert levels.names("virtual_pulloff", "compliant") == ("simulation", "leading", "refined")
     assert levels.names("validation_rigid", "rigid") == levels.names("validation_rigid")
     assert levels.names("fit", "free") == ("leading",)
+    assert levels.names("fit", "rigid")[0] == "simulation"
     kinds = set(typing.get_args(FixationKind))
     assert all(entry.fixations and entry.fixations <= kinds and "rigid" in entry.fixations for entry in levels.LEVELS)
 

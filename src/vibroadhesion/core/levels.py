@@ -86,7 +86,7 @@ LEVELS: tuple[ModelLevel, ...] = (
     ModelLevel("simulation", "simulation of the full model (Eqs. 4-11)",
                "vibroadhesion.experiments.validation:simulated_nominal_point_contact",
                "vibroadhesion.experiments.virtual_pulloff:simulated_pulloff", _RIGID_AND_COMPLIANT, True,
-               "simulation", _VALIDATION_AND_VIRTUAL_PULLOFF),
+               "simulation", _VALIDATION_AND_VIRTUAL_PULLOFF | {"fit"}),
     ModelLevel("leading", "leading order, Eqs. (55), (71)-(72)",
                "vibroadhesion.models.refined:leading_nominal_point_contact",
                "vibroadhesion.models.leading_pulloff:pulloff_leading", frozenset({"rigid", "compliant", "free"}),

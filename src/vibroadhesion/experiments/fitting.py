@@ -5,6 +5,8 @@ estimate of one level (:func:`vibroadhesion.experiments.pulloff.predict_pulloff`
 
 * ``leading`` (Eqs. 71–72) and the two exact-averaging levels are frequency independent, so v0
   does not enter: w0 and n are fitted, v0 keeps its published value;
+* ``simulation``, the full model (Eqs. 4-11) through the virtual pull-off, is fitted by
+  :mod:`vibroadhesion.experiments.simulation_fit` with the same rule for v0 as the refined level;
 * ``refined`` (Eqs. 71, 106) depends on v0 through omega_check = 2 pi f R / v0. v0 is fitted
   only when it is identifiable: the rows span at least two frequencies and, with v0 free,
   it stays off its bound and its relative standard error is below ``max_relative_se_v0``.
@@ -184,6 +186,11 @@ def fit_gent_schultz(
         return summary | _unfitted(published, "not_identifiable",
                                    f"{len(rows)} rows cannot determine w0 and n: published values kept", v0_note)
     try:
+        if model == "simulation":  # the full model: its own search (envelope Jacobian, warm-started families)
+            from vibroadhesion.experiments.simulation_fit import fit_simulation  # imports this module: no cycle
+
+            return summary | fit_simulation(rows, published, **geometry, max_relative_se_v0=max_relative_se_v0,
+                                            noise_floor=noise_floor)
         return summary | _fit_and_summarise(rows, model, published, geometry, v0_note, max_relative_se_v0,
                                             noise_floor)
     except FitError as exc:

@@ -8,6 +8,9 @@
   the most tensile mean force over a_m (:func:`vibroadhesion.models.exact_averaging.pulloff_at_force_minimum`),
   which the simulated pull-off approaches as omega_check -> infinity.
 
+* ``simulation``: the virtual pull-off of the full model (Eqs. 4-11, rigid fixation,
+  :func:`vibroadhesion.experiments.virtual_pulloff.simulated_pulloff`), once per distinct (f, h1) pair.
+
 The first three give P_cr = P_cr^JKR w_eff/w0 with |P_cr^JKR| = (3 pi / 2) R w0 (Eqs. 70–71); the
 last gives P_cr = P_m at the minimum. The exact-averaging levels are frequency independent, so
 v0 does not enter them either.
@@ -15,15 +18,16 @@ v0 does not enter them either.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from vibroadhesion.core import groups, levels
 from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.core.records import Pulloff
+from vibroadhesion.core.records import Pulloff, stacked
 
 #: The registry's functions this module resolves (vibroadhesion.core.levels): the pull-off of every fitted level.
 LEVEL_FUNCTIONS = (("fit", "pulloff"),)
@@ -58,12 +62,24 @@ def predict_pulloff(
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = groups.eta1(np.asarray(h1_um, dtype=float) * 1e-6, radius)
+    if entry.cost == "simulation":
+        return _simulated(entry, law, chi0, eta1, groups.omega_check(frequency_hz, params.v0, radius))
     if entry.frequency_dependent:
         return entry.pulloff_function()(eta1, chi0, groups.omega_check(frequency_hz, params.v0, radius), law)
     eta1_each = np.broadcast_arrays(eta1, np.asarray(frequency_hz, dtype=float))[0]
     distinct, back = np.unique(eta1_each, return_inverse=True)
     pulloff: Pulloff = entry.pulloff_function()(distinct, chi0, law)
     return pulloff.taken(np.reshape(back, eta1_each.shape))
+
+
+def _simulated(entry: levels.ModelLevel, law: GentSchultz, chi0: float, eta1: NDArray[np.float64],
+               omega_check: NDArray[np.float64]) -> Pulloff:
+    """The simulated pull-off (Eqs. 4-11, rigid fixation) once per distinct (eta1, omega_check), scattered back."""
+    eta1_each, omega_each = np.broadcast_arrays(eta1, omega_check)
+    distinct, back = np.unique(np.stack([eta1_each.ravel(), omega_each.ravel()], axis=1), axis=0, return_inverse=True)
+    records = [replace(entry.pulloff_function()(Problem(law, chi0, float(e), float(o))), steady_states=None)
+               for e, o in distinct]
+    return stacked(records).taken(np.reshape(back, eta1_each.shape))
 
 
 def pulloff_mN(pulloff: Pulloff, w0: float, radius: float) -> NDArray[np.float64]:

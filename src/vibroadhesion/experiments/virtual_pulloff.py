@@ -8,6 +8,25 @@ Along the family the mean contact force P_m first grows more tensile, passes an 
 relaxes; the pull-off force is the most tensile mean force of the family, located by a bounded
 Brent minimisation between the family's neighbours of the extremum.
 
+Start. The family starts at the problem's base offset (0: the nominal point contact, Eq. 78) from the
+static state, whose first period :func:`vibroadhesion.simulation.steady_state` integrates as the physical
+transient. With deltabar(tau) = base_offset - etahat sin tau the first quarter period pulls the contact
+by the whole stroke etahat = eta1/c_o^2, and a rigidly held JKR contact with work of adhesion w is lost
+below its fixed-grip pull-off deltabar = -3 (Phi/16)^(2/3) = -0.4725 Phi^(2/3), Phi = w/w0 (the minimum of
+Eq. 5' over abar). By the Gent–Schultz law (Eqs. 73–75) Phi = 1 + |x|^n at the opening speed x = adot/v0,
+so holding a stroke etahat needs |x| >= ((etahat/0.4725)^(3/2) - 1)^(1/n): for h1 = 100 um (etahat = 7.90,
+Phi >= 68) that is |x| >= 2.8e3 for the published n = 0.531, reached within the first period at 200 Hz, but
+|x| >= 1e20 for n = 0.092 and 1e12 for n = 0.15 -- far beyond what the contact front does (the model caps
+d abar/dtau at 1e6, |x| <= 1e6 omega_check c_o). Small n makes the adhesion nearly rate independent
+(|x|^0.092 < 7 up to |x| = 1e9), so at omega_check = 1e8, n = 0.092, h1 = 100 um the contact is lost at
+tau = 0.20 (deltabar = -1.6) of the first period, before any steady state exists: the family cannot start
+there, whatever the later pull-off would be. For the rigid fixation the family then starts preloaded, at
+base_offset = etahat (:func:`preloaded_offset`), where deltabar(tau) >= 0 keeps the contact for any rate
+law, and is withdrawn from there; its mean force starts compressive, and only a tensile minimum of the
+mean force is a pull-off (a compressive local minimum is passed, :func:`_tensile_extremum`). Such a
+family may still lose contact on the way without a tensile extremum (n = 0.092 above: it does, after 16
+orbits): the status says so.
+
 Why the extremum, with a spring in series. With the fixation of Eq. (3') the mean of Eq. (3') over
 a period gives xbar_m = mu/(kappa c_o^2) - sigma Phat_m, sigma = c_o/kappa, and the mean contact
 displacement is deltabar_m = xbar_m + base_offset. Along the family, with the mean contact stiffness
@@ -121,6 +140,20 @@ def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 4
     The record of level ``simulation`` (scalar): status ``pulloff`` with P_cr/P_cr^JKR = -min P_m/|P_JKR|,
     the base offset, mean radius, w_eff/w0 and A/a_m of the most tensile orbit and the paper's
     criterion abar_cr (Eq. 61) at its w_eff; or why the family ended without an extremum, NaN.
+    The keywords are those of :func:`traced_pulloff`.
+    """
+    return traced_pulloff(problem, step=step, max_steps=max_steps, halvings=halvings, iterations=iterations)[0]
+
+
+def traced_pulloff(problem: Problem, *, warm: tuple[float, np.ndarray] | None = None, step: float = 0.2,
+                   max_steps: int = 400, halvings: int = 6,
+                   iterations: int = 15) -> tuple[Pulloff, tuple[float, SteadyState] | None]:
+    """The pull-off record of :func:`simulated_pulloff` and its most tensile orbit (base_offset, orbit), or None.
+
+    The family starts from the state of the module docstring ("Start"): at ``problem``'s base offset from
+    the static state, preloaded to base_offset = etahat where that loses contact (rigid fixation), or, with
+    ``warm`` = (base_offset, start_state), from a nearby orbit (a fit's previous pull-off): if the mean force
+    does not first grow more tensile from there, the family is traced again from the cold start.
 
     ``step`` is the target change of the mean contact displacement deltabar_m per orbit; the base step
     is step (1 + sigma S) (module docstring). After a failed orbit the next steps go at most half-way
@@ -135,41 +168,87 @@ def simulated_pulloff(problem: Problem, *, step: float = 0.2, max_steps: int = 4
     fixation = problem.fixation
     sigma = 0.0 if fixation.is_rigid else contact_radius_ratio(problem.chi0) / fixation.kappa
     run = _Withdrawal(problem, iterations)
+    d0, first = _first_orbit(run, warm)
     family: list[tuple[float, SteadyState]] = []
     failure: tuple[float, str] | None = None  # nearest base_offset known to have no steady state, and why
-    d0, state = problem.base_offset, None
+    orbit_k = first
     for _ in range(max_steps):
-        orbit_k = run.orbit(d0, state)
         if not orbit_k.ok:
             status = str(orbit_k.status)
             if not family:
-                return _ended(status, run.solved)
+                return _ended(status, run.solved), None
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], status), run.solved)
+                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], status), run.solved), None
             failure = (d0, status)
         else:
             family.append((d0, orbit_k))
             if failure is not None and d0 == failure[0]:  # the earlier failure was the shooting's, not the family's
                 failure = None
-            if len(family) >= 3 and _orbit(family[-1][1]).phat_m > _orbit(family[-2][1]).phat_m:
+            if warm is not None and len(family) == 2 and _phat(family[1]) >= _phat(family[0]):
+                return traced_pulloff(problem, step=step, max_steps=max_steps, halvings=halvings,
+                                      iterations=iterations)  # the warm start lies beyond the extremum
+            if _tensile_extremum([_phat(member) for member in family[-3:]]):
                 break
         d0, state = _next_offset(family, failure, step, sigma, halvings)
+        orbit_k = run.orbit(d0, state)
     else:
-        return _ended("not_converged", run.solved)
-    bracket = family[-3:]  # (hi, mid, lo): the middle orbit is the most tensile so far
-    (hi, _), (mid, middle), (lo, _) = bracket
-    run.cache = {mid: middle}
-    minimize_scalar(run.mean_force, bounds=(lo, hi), args=(bracket,), method="bounded",
-                    options={"xatol": 1e-4 * step})
-    d_best = min(run.cache, key=run.cached_force)  # every evaluation is cached: the most tensile orbit found
-    at = run.cache[d_best]
+        return _ended("not_converged", run.solved), None
+    d_best = run.most_tensile(family[-3:], step)
+    return _pulloff_record(run.cache[d_best], d_best, run.solved), (d_best, run.cache[d_best])
+
+
+def preloaded_offset(problem: Problem) -> float:
+    """The compressive start base_offset = etahat, at which the rigidly fixed contact survives any rate law.
+
+    With deltabar(tau) = base_offset - etahat sin tau >= 0 (Eq. 11 in the model's units), Eq. (5') gives
+    Phi = (abar^2 - deltabar)^2/abar <= abar^3 wherever abar^2 > deltabar, so Phi < 1 (w < w0: the front
+    closes, Eq. 6') whenever abar < 1: abar never falls below min(abar(0), 1) and the contact is kept
+    whatever w0, n and v0 are (module docstring, "Start").
+    """
+    return max(problem.base_offset, problem.etahat)
+
+
+def _first_orbit(run: _Withdrawal, warm: tuple[float, np.ndarray] | None) -> tuple[float, SteadyState]:
+    """The family's first orbit and its base offset (module docstring, "Start").
+
+    From ``warm`` (base_offset, state) when it converges there; else from the static state at the problem's
+    base offset, and for the rigid fixation, where that first period loses contact, at :func:`preloaded_offset`.
+    """
+    if warm is not None:
+        orbit = run.orbit(warm[0], warm[1])
+        if orbit.ok:
+            return warm[0], orbit
+    d0 = run.problem.base_offset
+    orbit = run.orbit(d0, None)
+    if orbit.status == "contact_loss" and run.problem.fixation.is_rigid and preloaded_offset(run.problem) > d0:
+        d0 = preloaded_offset(run.problem)
+        orbit = run.orbit(d0, None)
+    return d0, orbit
+
+
+def _phat(member: tuple[float, SteadyState]) -> float:
+    """Phat_m of a family member (base_offset, orbit)."""
+    return _orbit(member[1]).phat_m
+
+
+def _tensile_extremum(phat_m: list[float]) -> bool:
+    """Do the last three mean forces of the family (in withdrawal order) bracket the pull-off?
+
+    The middle one is below both neighbours and tensile (Phat_m < 0, Eq. 4'): a local minimum of the mean
+    force while it is still compressive (which a family from the preloaded start can pass) is not a pull-off.
+    """
+    return len(phat_m) == 3 and phat_m[1] < min(phat_m[0], phat_m[2]) and phat_m[1] < 0.0
+
+
+def _pulloff_record(at: SteadyState, d_best: float, solved: int) -> Pulloff:
+    """The ``pulloff`` record of the most tensile orbit ``at`` of the family, at base offset ``d_best``."""
     w_eff_ratio = float(at.w_eff_ratio)
     sqrt_w_eff_ratio = math.sqrt(w_eff_ratio)
     return Pulloff("simulation", np.asarray("pulloff"), pulloff_ratio=np.asarray(float(_orbit(at).phat_m / PHAT_JKR)),
                    Abar_cr=np.asarray(math.nan), sqrt_w_eff_ratio=np.asarray(sqrt_w_eff_ratio),
                    w_eff_ratio=np.asarray(w_eff_ratio), abar_cr=np.asarray(float(pulloff_closure(sqrt_w_eff_ratio))),
                    abar_m=np.asarray(float(at.abar_m)), A_over_am=np.asarray(float(at.A_over_am)),
-                   base_offset=np.asarray(float(d_best)), steady_states=run.solved)
+                   base_offset=np.asarray(float(d_best)), steady_states=solved)
 
 
 class _Withdrawal:
@@ -197,6 +276,17 @@ class _Withdrawal:
         if d not in self.cache:
             self.cache[d] = self.orbit(d, _interpolated_state(bracket, d))
         return self.cached_force(d)
+
+    def most_tensile(self, bracket: list[tuple[float, SteadyState]], step: float) -> float:
+        """The base offset of the most tensile orbit inside ``bracket`` (hi, mid, lo): bounded Brent to 1e-4 step.
+
+        Every evaluation is cached (:attr:`cache`), so the answer is the most tensile orbit found.
+        """
+        (hi, _), (mid, middle), (lo, _) = bracket
+        self.cache = {mid: middle}
+        minimize_scalar(self.mean_force, bounds=(lo, hi), args=(bracket,), method="bounded",
+                        options={"xatol": 1e-4 * step})
+        return min(self.cache, key=self.cached_force)
 
     def cached_force(self, d: float) -> float:
         """Phat_m of the cached orbit at ``d``; inf where it did not converge (never the most tensile)."""

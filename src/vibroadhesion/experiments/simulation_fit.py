@@ -1,0 +1,330 @@
+"""The full model as a fit level: least squares of w0, n (and v0) on the simulated pull-off (Sec. 3.4).
+
+Forward model. A row (frequency f, base amplitude h1, |P_cr| in mN) is predicted by the virtual pull-off
+of the rigidly fixed indenter (:func:`vibroadhesion.experiments.virtual_pulloff.traced_pulloff`: the
+quasi-static family of periodic steady states of Eqs. 4-11 in the base offset, the pull-off at its most
+tensile mean force), solved once per distinct (f, h1) pair and scattered back to the rows; a static JKR
+test (h1 = 0) is |P_cr^JKR| = (3 pi/2) R w0 (Eq. 70), d ln P/d ln w0 = 1. After the
+first evaluation every family starts warm, from its pair's last most tensile orbit, WARM_MARGIN steps on
+the compressive side of it (the extremum moves little between the trial points of the search); a warm
+start past the new extremum is traced again from the cold start.
+
+Derivatives (envelope theorem). The pull-off is P*(theta) = min over the base offset d of P_m(d, theta),
+and at the minimiser d* the mean force is stationary in d, so
+
+    dP*/dtheta = dP_m/dtheta (d*, theta)        at fixed d*,
+
+whatever coordinate d is measured in (here base_offset = (hhat - h0) R/a_o^2, itself a function of w0
+through a_o). Each column of the Jacobian is therefore a central difference in ln theta of two periodic
+orbits at the fixed d*, warm-started from the orbit at d* (a few shooting periods each), instead of two
+re-traced families. Its error: the central difference O(h^2) (h = ENVELOPE_STEP) plus the orbits'
+error over h (~1e-10/h), and the extremum's location: |d_found - d*| <= 1e-4 step (Brent's tolerance,
+:func:`traced_pulloff`) leaves dP_m/dd = P_m'' (d_found - d*) = O(1e-5), so the envelope derivative
+differs from the exact one by O(1e-5) |P_m'' dd*/dtheta|; the test compares it with central differences
+of whole families.
+
+Rows without a pull-off. A family that ends without a tensile extremum (it loses contact, or no steady
+state is found before one) predicts no pull-off force at that trial point: its residual is -1 (zero
+predicted force) and its Jacobian row 0 (rows far above every force the model can give may then draw the
+search there; a search that ends with no more pairs with a pull-off than free parameters is a
+:class:`~vibroadhesion.experiments.fitting.FitError`). Every row's status
+at the fitted parameters is reported (``row_status``); a row that still has no pull-off there is named in the
+note, with its status, and counted as residual -1 in the misfit, never dropped silently.
+
+The least-squares search, the identifiability rule for v0 (at least two frequencies and a relative
+standard error below ``max_relative_se_v0``) and the summary are those of
+:mod:`vibroadhesion.experiments.fitting`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Any
+
+import numpy as np
+import pandas as pd
+from scipy.optimize import least_squares
+
+from vibroadhesion import simulation
+from vibroadhesion.core import groups
+from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.core.problem import Problem
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.records import SteadyState
+from vibroadhesion.experiments.fitting import (
+    _ON_BOUND,
+    BOUNDS,
+    FitError,
+    _fitted_summary,
+    _v0_note_before_fit,
+)
+from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
+
+#: Step h in ln theta of the envelope derivative (module docstring: O(h^2) + 1e-10/h, ~1e-6 relative).
+ENVELOPE_STEP = 1e-3
+#: Shooting periods allowed to an orbit warm-started next to a known one (3-6 suffice, as in a family).
+WARM_ITERATIONS = 15
+#: The warm family starts this many family steps (0.2 in deltabar_m) on the compressive side of the last pull-off.
+WARM_MARGIN = 2
+_FAMILY_STEP = 0.2
+
+#: The key of the static JKR rows (h1 = 0, no frequency): their pull-off is |P_cr^JKR| (Eq. 70).
+STATIC = (0.0, 0.0)
+
+#: The most tensile orbit of a pair's family: (base offset d*, orbit there).
+Extremum = tuple[float, SteadyState]
+
+
+def pulloff_problem(params: GentSchultzParameters, frequency_hz: float, h1_um: float, *, radius: float,
+                    reduced_modulus: float, base_offset: float = 0.0) -> Problem:
+    """The rigidly fixed problem of one test (Eqs. 4-11): chi0 (Eq. 64), eta1 (Eq. 65), omega_check (Eq. 105)."""
+    return Problem(GentSchultz(params.n), groups.chi0(params.w0, reduced_modulus, radius), h1_um * 1e-6 / radius,
+                   float(groups.omega_check(frequency_hz, params.v0, radius)), base_offset=base_offset)
+
+
+def jkr_mN(w0: float, radius: float) -> float:
+    """|P_cr^JKR| = (3 pi/2) R w0 in mN (Eq. 70)."""
+    return float(-pulloff_force(w0, radius)) * 1e3
+
+
+def envelope_log_derivatives(params: GentSchultzParameters, frequency_hz: float, h1_um: float, at: Extremum,
+                             names: tuple[str, ...], *, radius: float, reduced_modulus: float,
+                             step: float = ENVELOPE_STEP) -> np.ndarray:
+    """d ln|P_cr| / d ln theta for theta in ``names`` at the pull-off orbit ``at`` (module docstring).
+
+    Central differences in ln theta of the mean force Phat_m of two orbits at the fixed base offset d* of
+    ``at``, warm-started from its state (envelope theorem), plus 1 for w0 (|P_cr^JKR| is proportional to w0,
+    Eq. 70). Where one shifted orbit does not converge, the one-sided difference with the orbit of ``at``
+    (error O(step), ~1e-3 of the derivative); NaN where neither does.
+    """
+    d_star, orbit = at
+    if orbit.orbit is None:
+        raise TypeError("the pull-off orbit has no orbit diagnostics")
+    derivatives = np.empty(len(names))
+    for k, name in enumerate(names):
+        plus, minus = (_shifted_phat(params, name, sign * step, frequency_hz, h1_um, at, radius=radius,
+                                     reduced_modulus=reduced_modulus) for sign in (1.0, -1.0))
+        if math.isnan(plus) or math.isnan(minus):
+            one_sided = (plus, step) if math.isnan(minus) else (minus, -step)
+            derivative = math.log(one_sided[0] / orbit.orbit.phat_m) / one_sided[1]
+        else:
+            derivative = math.log(plus / minus) / (2.0 * step)
+        derivatives[k] = derivative + (1.0 if name == "w0" else 0.0)
+    return derivatives
+
+
+def _shifted_phat(params: GentSchultzParameters, name: str, log_shift: float, frequency_hz: float, h1_um: float,
+                  at: Extremum, *, radius: float, reduced_modulus: float) -> float:
+    """Phat_m (Eq. 4') of the orbit at the fixed base offset of ``at`` with ``name`` scaled by exp(``log_shift``).
+
+    Warm-started from the orbit of ``at`` with WARM_ITERATIONS periods, then with the shooting's default cap
+    (a shooting that stalls next to the pull-off converges then); NaN if neither converges.
+    """
+    d_star, orbit = at
+    shifted = replace(params, **{name: getattr(params, name) * math.exp(log_shift)})
+    problem = pulloff_problem(shifted, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus,
+                              base_offset=d_star)
+    state = _start_state(orbit)
+    found = simulation.steady_state(problem, initial_state=state, max_iterations=WARM_ITERATIONS)
+    if not found.ok:
+        found = simulation.steady_state(problem, initial_state=state)
+    return found.orbit.phat_m if found.ok and found.orbit is not None else math.nan
+
+
+@dataclass
+class _Families:
+    """The distinct (f, h1) pairs of the rows, their last pull-off orbits (warm starts) and the last evaluation.
+
+    The last evaluation is kept, with the envelope derivatives computed there (least_squares asks the Jacobian
+    where it evaluated the residuals last; the v0 test and the 3-parameter search ask it again at the
+    2-parameter fit), keyed by ln of the parameters to 1e-12 (the searches reach them through ln).
+    """
+
+    pairs: list[tuple[float, float]]
+    geometry: dict[str, float]
+    warm: dict[tuple[float, float], Extremum] = field(default_factory=dict)
+    key: tuple[float, ...] = ()
+    last: tuple[list[str], np.ndarray, list[Extremum | None]] = ([], np.empty(0), [])
+    derivatives: dict[str, np.ndarray] = field(default_factory=dict)
+    families: int = 0
+
+    def evaluate(self, params: GentSchultzParameters) -> tuple[list[str], np.ndarray, list[Extremum | None]]:
+        """Status, pull-off in mN (NaN without one) and most tensile orbit of every pair at ``params``."""
+        key = tuple(round(math.log(getattr(params, name)), 12) for name in ("w0", "n", "v0"))
+        if key == self.key:
+            return self.last
+        statuses: list[str] = []
+        extrema: list[Extremum | None] = []
+        forces = np.full(len(self.pairs), math.nan)
+        for i, pair in enumerate(self.pairs):
+            if pair == STATIC:  # Eq. (70): the static JKR test
+                statuses.append("static_jkr")
+                extrema.append(None)
+                forces[i] = jkr_mN(params.w0, self.geometry["radius"])
+                continue
+            problem = pulloff_problem(params, *pair, **self.geometry)
+            warm = self.warm.get(pair)
+            start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, _start_state(warm[1]))
+            record, at = traced_pulloff(problem, warm=start, iterations=WARM_ITERATIONS)
+            self.families += 1
+            statuses.append(str(record.status))
+            extrema.append(at)
+            if at is not None:
+                self.warm[pair] = at
+                forces[i] = float(record.pulloff_ratio) * jkr_mN(params.w0, self.geometry["radius"])
+        self.key, self.last, self.derivatives = key, (statuses, forces, extrema), {}
+        return self.last
+
+    def log_derivatives(self, params: GentSchultzParameters, name: str) -> np.ndarray:
+        """d ln|P_cr| / d ln ``name`` per pair at ``params`` (:func:`envelope_log_derivatives`); 0 without pull-off.
+
+        A pair whose shifted orbits both fail has no derivative: :class:`FitError`, never a silent 0.
+        """
+        _, _, extrema = self.evaluate(params)
+        if name not in self.derivatives:
+            self.derivatives[name] = np.array([
+                float(name == "w0") if pair == STATIC else 0.0 if at is None else
+                envelope_log_derivatives(params, *pair, at, (name,), **self.geometry)[0]
+                for pair, at in zip(self.pairs, extrema, strict=True)])
+            if not np.all(np.isfinite(self.derivatives[name])):
+                raise FitError(f"simulation fit: no orbit next to the pull-off of a pair at {params} when {name} "
+                               "is shifted: no derivative")
+        return self.derivatives[name]
+
+
+def _pair_keys(rows: pd.DataFrame) -> list[tuple[float, float]]:
+    """Each row's (frequency, amplitude) pair; :data:`STATIC` for a static JKR test (h1 = 0, frequency empty)."""
+    return [STATIC if float(h) == 0.0 else (float(f), float(h))
+            for f, h in zip(rows["frequency_hz"], rows["h1_um"], strict=True)]
+
+
+def _start_state(orbit: SteadyState) -> np.ndarray:
+    """The state at tau = 0 of a simulated orbit (its diagnostics' ``start_state``)."""
+    if orbit.orbit is None:
+        raise TypeError("a simulated orbit has diagnostics")
+    return orbit.orbit.start_state
+
+
+class _Objective:
+    """Relative residuals P_model/P_observed - 1 of the rows in ln(free), and their envelope Jacobian."""
+
+    def __init__(self, rows: pd.DataFrame, base: GentSchultzParameters, free: tuple[str, ...],
+                 families: _Families) -> None:
+        """Rows (frequency_hz, h1_um, pulloff_mN), the parameters not fitted (``base``), the fitted names."""
+        self.base, self.free, self.families = base, free, families
+        self.observed = rows["pulloff_mN"].to_numpy(float)
+        index = {pair: i for i, pair in enumerate(families.pairs)}
+        self.row_pair = np.array([index[pair] for pair in _pair_keys(rows)])
+
+    def params_of(self, log_values: np.ndarray) -> GentSchultzParameters:
+        """The parameter set at ln(free) = ``log_values``."""
+        return replace(self.base, **{name: math.exp(v) for name, v in zip(self.free, log_values, strict=True)})
+
+    def residuals(self, log_values: np.ndarray) -> np.ndarray:
+        """P_model/P_observed - 1 per row; -1 (no force) where the pair's family has no pull-off."""
+        _, forces, _ = self.families.evaluate(self.params_of(log_values))
+        return np.nan_to_num(forces[self.row_pair] / self.observed - 1.0, nan=-1.0)
+
+    def jacobian(self, log_values: np.ndarray) -> np.ndarray:
+        """d residual / d ln(free) = (P_model/P_observed) d ln P_model/d ln theta (envelope theorem).
+
+        Rows without a pull-off have the derivative 0.
+        """
+        params = self.params_of(log_values)
+        _, forces, _ = self.families.evaluate(params)
+        per_pair = np.column_stack([self.families.log_derivatives(params, name) for name in self.free])
+        return (np.nan_to_num(forces)[:, None] * per_pair)[self.row_pair] / self.observed[:, None]
+
+
+def _least_squares(rows: pd.DataFrame, base: GentSchultzParameters, free: tuple[str, ...],
+                   families: _Families) -> dict[str, Any]:
+    """Least squares in ln(free) inside BOUNDS with the envelope Jacobian; the fit record of ``fitting``.
+
+    Tolerances: steps below 1e-8 in ln theta (the parameters to 1e-8 relative) or cost changes below 1e-10
+    relative end the search; the residuals carry the extremum's ~1e-8 relative error (:func:`traced_pulloff`).
+    """
+    objective = _Objective(rows, base, free, families)
+    lo, hi = np.log([BOUNDS[name] for name in free]).T
+    x0 = np.clip(np.log([getattr(base, name) for name in free]), lo, hi)
+    result = least_squares(objective.residuals, x0, jac=objective.jacobian, method="trf", bounds=(lo, hi),
+                           xtol=1e-8, ftol=1e-10, gtol=1e-10, max_nfev=60)
+    if result.status <= 0:
+        raise FitError(f"simulation fit of {free} did not converge: {result.message}")
+    params = objective.params_of(result.x)
+    residuals = objective.residuals(result.x)  # re-evaluated: the search may have ended on a rejected trial
+    found = int(np.count_nonzero(np.isfinite(families.evaluate(params)[1])))
+    if found <= len(free):
+        raise FitError(f"simulation fit of {free}: {found} of {len(families.pairs)} (f, h1) pairs have a simulated "
+                       f"pull-off at the end of the search ({params}): too few to determine {len(free)} parameters")
+    on_bound = (result.x - lo < _ON_BOUND) | (hi - result.x < _ON_BOUND)
+    return {
+        "params": params, "jac": result.jac,
+        "at_bound": [name for name, b in zip(free, on_bound, strict=True) if b],
+        "s2": float(residuals @ residuals) / (len(rows) - len(free)), "residuals": residuals,
+        "nfev": int(result.nfev), "message": str(result.message),
+    }
+
+
+def _v0_relative_se(rows: pd.DataFrame, fit: dict[str, Any], families: _Families, noise_floor: float) -> float:
+    """Relative standard error v0 would have if freed at the (w0, n) fit (``fitting``'s rule, envelope Jacobian).
+
+    s^2 (J^T J)^-1 in (ln w0, ln n, ln v0) at a residual scale floored at ``noise_floor``; inf if singular.
+    """
+    params = fit["params"]
+    objective = _Objective(rows, params, ("w0", "n", "v0"), families)
+    jac = objective.jacobian(np.log([params.w0, params.n, params.v0]))
+    try:
+        variance = max(fit["s2"], noise_floor**2) * np.linalg.inv(jac.T @ jac)[-1, -1]
+    except np.linalg.LinAlgError:
+        return math.inf
+    return math.sqrt(max(variance, 0.0)) if np.isfinite(variance) else math.inf
+
+
+def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radius: float, reduced_modulus: float,
+                   max_relative_se_v0: float, noise_floor: float) -> dict[str, Any]:
+    """The fitted part of ``fitting.fit_gent_schultz``'s summary for the level ``simulation`` (module docstring).
+
+    w0 and n are fitted from ``published``; v0 too when the rows span two frequencies and its relative
+    standard error at the (w0, n) fit is below ``max_relative_se_v0`` (residual scale floored at
+    ``noise_floor``). Adds ``row_status`` (status and model force per row at the fit) and ``families_traced``.
+    """
+    pairs = sorted(set(_pair_keys(rows)))
+    families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus})
+    free: tuple[str, ...] = ("w0", "n")
+    fit = _least_squares(rows, published, free, families)
+    v0_note = _v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))
+    if not v0_note:
+        rel_se = _v0_relative_se(rows, fit, families, noise_floor)
+        if rel_se > max_relative_se_v0:
+            scale = max(fit["s2"] ** 0.5, noise_floor)
+            v0_note = (f"v0 not identifiable: its relative standard error would be {rel_se:.3g} "
+                       f"(> {max_relative_se_v0:g}) at a relative residual scale of {scale:.3g}")
+        else:
+            with_v0 = _least_squares(rows, fit["params"], ("w0", "n", "v0"), families)
+            if "v0" in with_v0["at_bound"]:
+                v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
+            else:
+                free, fit = ("w0", "n", "v0"), with_v0
+                v0_note = f"v0 identifiable: relative standard error {rel_se:.3g}"
+    summary = _fitted_summary(rows, fit, free, v0_note)
+    return summary | _row_statuses(rows, fit["params"], families, summary["note"])
+
+
+def _row_statuses(rows: pd.DataFrame, params: GentSchultzParameters, families: _Families,
+                  note: str) -> dict[str, Any]:
+    """Per row: the virtual pull-off's status and force at the fitted parameters; a note naming rows without one."""
+    statuses, forces, _ = families.evaluate(params)
+    index = {pair: i for i, pair in enumerate(families.pairs)}
+    table = []
+    for line, f, h, pair in zip(rows["line"], rows["frequency_hz"], rows["h1_um"], _pair_keys(rows), strict=True):
+        i = index[pair]
+        table.append({"line": int(line), "frequency_hz": float(f), "h1_um": float(h), "status": statuses[i],
+                      "model_mN": None if math.isnan(forces[i]) else float(forces[i])})
+    lost = [f"line {r['line']} ({r['frequency_hz']:g} Hz, {r['h1_um']:g} um): {r['status']}"
+            for r in table if r["model_mN"] is None]
+    if lost:
+        note = "; ".join(filter(None, [note, "no simulated pull-off at the fit, counted as zero force (residual -1): "
+                                       + ", ".join(lost)]))
+    return {"note": note, "row_status": table, "families_traced": families.families}
