@@ -50,6 +50,7 @@ rule all:
         rules.fit_gent_schultz.output,
         expand("results/{fig}/{fig}.{ext}", fig=FIGURES, ext=["csv", "pdf", "png"]),
         rules.report_index.output.index,
+        rules.report_pages.output.pages,
 
 
 rule validation:

@@ -32,15 +32,15 @@ from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.figures import plot_fig4, save_figure
 from vibroadhesion.pipeline.imports import import_closure
-from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES
+from vibroadhesion.pipeline.pages import REPORT_JOBS
 
 ROOT = Path(__file__).resolve().parents[2]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
 DATA_RULES = {"ingest", "fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data",
-              "plot_figures",
+              "plot_pulloff_figures", "plot_steady_figures",
               "simulation_rigid", "simulation_rigid_grid", "virtual_pulloff", "virtual_pulloff_fixation",
-              "report_index", "all"}
+              "report_index", "report_pages", "all"}
 # What `snakemake -c2 validation` adds to a finished default run: the checks against the simulation
 # (including the compliant virtual pull-off; the default run made the rigid one for Figs. 4 and 7).
 VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_compliant", "validation_compliant_plot",
@@ -169,7 +169,7 @@ def test_rejected_edit_changes_nothing_and_restoring_it_reruns_nothing(pipeline_
 @pytest.mark.pipeline
 def test_code_edit_reruns_the_rules_that_import_it(pipeline_run: Path) -> None:
     planned = _planned_after_edit(pipeline_run, "src/vibroadhesion/models/stiffness.py")
-    assert planned == {"fig8_data", "plot_figures", "report_index", "all"}
+    assert planned == {"fig8_data", "plot_steady_figures", "report_pages", "all"}
 
 
 @pytest.mark.pipeline
@@ -308,9 +308,11 @@ def _adapter_closures() -> dict[str, set[str]]:
     """rule -> package files its adapter loads (reference); a report rule's include those of its pages' notebooks."""
     closures = {p.stem: set(_reference_closure(p)) for p in (ROOT / "workflow/scripts").glob("*.py")}
     report = closures.pop("report")
-    for rule, pages in (("report_index", PAGES), ("report_validation_index", VALIDATION_PAGES)):
-        notebooks = (_reference_closure(ROOT / f"notebooks/{page}.ipynb") for page, _ in pages)
+    for rule, (_, pages) in REPORT_JOBS.items():
+        notebooks = (_reference_closure(ROOT / f"notebooks/{page}.ipynb") for page in pages)
         closures[rule] = report.union(*notebooks)
+    plots = closures.pop("plot_figures")
+    closures |= {"plot_pulloff_figures": plots, "plot_steady_figures": plots}
     return closures
 
 

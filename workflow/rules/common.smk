@@ -23,6 +23,13 @@ FREQUENCIES = _rig_values("test_conditions", "frequencies")
 AMPLITUDES = _rig_values("test_conditions", "amplitudes")
 
 
+def plot_inputs(figs):
+    """The tables of ``figs`` and what their plots read besides (PLOT_EXTRAS of figures.smk; Fig. 7 reads Fig. 4's
+    table too)."""
+    tables = {fig: getattr(rules, f"{fig}_data").output[0] for fig in figs}
+    return {**tables, **{k: v for fig in figs for k, v in PLOT_EXTRAS[fig].items()}}
+
+
 def code(*sources):
     """The code a job runs, as inputs: the adapter scripts (workflow/scripts/<name>.py) or other scripts and
     notebooks named, every package module they import (vibroadhesion.pipeline.imports), and the lock.

@@ -122,25 +122,40 @@ rule fig8_data:
         "../scripts/fig8_data.py"
 
 
-rule plot_figures:
-    """Figs. 3-8 from their tables, with the measured rows and the simulated overlays (no solve)."""
-    input:
-        **RIG,
-        **{fig: getattr(rules, f"{fig}_data").output[0] for fig in FIGURES},
-        fig5_markers=rules.fig5_data.output.markers,
-        pulloff=rules.ingest.output.pulloff,
-        virtual=VIRTUAL_RIGID,
-        grid=rules.simulation_rigid_grid.output[0],
-        code=code("plot_figures"),
-    output:
-        **{f"{fig}_pdf": f"results/{fig}/{fig}.pdf" for fig in FIGURES},
-        **{
-            f"{fig}_png": report(f"results/{fig}/{fig}.png", caption=f"../report/{fig}.rst", category="Figures")
-            for fig in FIGURES
-        },
-    log:
-        "results/logs/plot_figures.log",
-    params:
-        panel_n=config["fig3"]["panel_n"],
-    script:
-        "../scripts/plot_figures.py"
+# What each figure's plot reads besides its table, the setup and the fit.
+PLOT_EXTRAS = {
+    "fig3": {},
+    "fig4": {"pulloff": rules.ingest.output.pulloff, "virtual": VIRTUAL_RIGID},
+    "fig5": {"fig5_markers": rules.fig5_data.output.markers},
+    "fig6": {"grid": rules.simulation_rigid_grid.output[0]},
+    "fig7": {"fig4": rules.fig4_data.output[0], "virtual": VIRTUAL_RIGID},
+    "fig8": {},
+}
+# The figures in two plot jobs (one matplotlib process each): Figs. 4 and 7 overlay the simulated pull-off, the
+# longest chain of the DAG; the others are drawn, and their pages rendered, while it runs.
+FIGURE_GROUPS = {"pulloff": ["fig4", "fig7"], "steady": ["fig3", "fig5", "fig6", "fig8"]}
+PLOT_RULE = {fig: f"plot_{group}_figures" for group, figs in FIGURE_GROUPS.items() for fig in figs}
+
+
+for group, figs in FIGURE_GROUPS.items():
+
+    rule:
+        name:
+            f"plot_{group}_figures"
+        input:
+            **RIG,
+            **plot_inputs(figs),
+            code=code("plot_figures"),
+        output:
+            **{f"{fig}_pdf": f"results/{fig}/{fig}.pdf" for fig in figs},
+            **{
+                f"{fig}_png": report(f"results/{fig}/{fig}.png", caption=f"../report/{fig}.rst", category="Figures")
+                for fig in figs
+            },
+        log:
+            f"results/logs/plot_{group}_figures.log",
+        localrule: True
+        params:
+            panel_n=config["fig3"]["panel_n"],
+        script:
+            "../scripts/plot_figures.py"

@@ -1,8 +1,5 @@
 # Report: each page is a notebook executed by papermill and exported to HTML by nbconvert.
-from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES
-
-# The two indexes of the report and their pages: the default target builds the first, `validation` the second.
-REPORT_INDEXES = {"index": PAGES, "validation_index": VALIDATION_PAGES}
+from vibroadhesion.pipeline.pages import REPORT_JOBS
 
 # The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
 TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
@@ -10,10 +7,14 @@ TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_
 
 FIT_JSON, SETUP_JSON = RIG["fit"], RIG["setup"]
 PAGE_INPUTS = {
-    "fig3": {"fig_csv": rules.fig3_data.output[0], "fig_png": rules.plot_figures.output.fig3_png, "fit_json": FIT_JSON},
+    "fig3": {
+        "fig_csv": rules.fig3_data.output[0],
+        "fig_png": getattr(rules, PLOT_RULE["fig3"]).output.fig3_png,
+        "fit_json": FIT_JSON,
+    },
     "fig4": {
         "fig_csv": rules.fig4_data.output[0],
-        "fig_png": rules.plot_figures.output.fig4_png,
+        "fig_png": getattr(rules, PLOT_RULE["fig4"]).output.fig4_png,
         "fit_json": FIT_JSON,
         "setup_json": SETUP_JSON,
         "pulloff_csv": rules.ingest.output.pulloff,
@@ -21,7 +22,7 @@ PAGE_INPUTS = {
     },
     "fig5": {
         "fig_csv": rules.fig5_data.output.csv,
-        "fig_png": rules.plot_figures.output.fig5_png,
+        "fig_png": getattr(rules, PLOT_RULE["fig5"]).output.fig5_png,
         "markers_csv": rules.fig5_data.output.markers,
         "counts_csv": rules.fig5_data.output.counts,
         "setup_json": SETUP_JSON,
@@ -30,7 +31,7 @@ PAGE_INPUTS = {
     **{
         fig: {
             "fig_csv": getattr(rules, f"{fig}_data").output[0],
-            "fig_png": getattr(rules.plot_figures.output, f"{fig}_png"),
+            "fig_png": getattr(getattr(rules, PLOT_RULE[fig]).output, f"{fig}_png"),
             "fit_json": FIT_JSON,
             "setup_json": SETUP_JSON,
         }
@@ -73,9 +74,8 @@ def page_parameters(page):
     return parameters
 
 
-def report_inputs(index):
-    """Every artefact the pages of ``index`` read, named <page>_<parameter>, their notebooks and their code."""
-    pages = [stem for stem, _ in REPORT_INDEXES[index]]
+def report_inputs(pages):
+    """Every artefact ``pages`` read, named <page>_<parameter>, their notebooks and their code."""
     inputs = {f"{page}_{name}": path for page in pages for name, path in PAGE_INPUTS[page].items()}
     if "benchmarks" in pages:
         inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
@@ -83,28 +83,24 @@ def report_inputs(index):
     return {**inputs, "notebooks": notebooks, "code": code("report", *notebooks)}
 
 
-def report_pages(index):
-    """page -> papermill parameters (artefact paths) of the pages of ``index``, in the index's order."""
-    return {stem: page_parameters(stem) for stem, _ in REPORT_INDEXES[index]}
-
-
-# One job per index renders its pages in one kernel (pipeline.steps.report): starting a kernel per page
-# cost as much as executing it. A page's output is its executed notebook and its HTML page.
-for index in REPORT_INDEXES:
+# One job per entry of REPORT_JOBS renders its pages in one kernel (pipeline.steps.report): starting a kernel per
+# page cost as much as executing it. A page's output is its executed notebook and its HTML page; the job of an
+# index also writes the index.
+for job, (index, pages) in REPORT_JOBS.items():
 
     rule:
         name:
-            f"report_{index}"
+            job
         input:
-            **report_inputs(index),
+            **report_inputs(pages),
         output:
-            notebooks=[f"results/report/notebooks/{stem}.ipynb" for stem, _ in REPORT_INDEXES[index]],
-            pages=[f"results/report/{stem}.html" for stem, _ in REPORT_INDEXES[index]],
-            index=f"results/report/{index}.html",
+            notebooks=[f"results/report/notebooks/{stem}.ipynb" for stem in pages],
+            pages=[f"results/report/{stem}.html" for stem in pages],
+            index=[f"results/report/{index}.html"] if index else [],
         log:
-            f"results/logs/report_{index}.log",
+            f"results/logs/{job}.log",
         localrule: True
         params:
-            pages=report_pages(index),
+            pages={stem: page_parameters(stem) for stem in pages},
         script:
             "../scripts/report.py"

@@ -1,4 +1,4 @@
-"""Rule plot_figures: vibroadhesion.pipeline.steps.plots.all_figures."""
+"""Rules plot_pulloff_figures, plot_steady_figures: vibroadhesion.pipeline.steps.plots.all_figures."""
 
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.plots import all_figures

@@ -1,4 +1,4 @@
-"""Rules report_index, report_validation_index: vibroadhesion.pipeline.steps.report.render."""
+"""Rules report_index, report_pages, report_validation_index: vibroadhesion.pipeline.steps.report.render."""
 
 from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.report import render

@@ -31,6 +31,15 @@ VALIDATION_PAGES: list[tuple[str, str]] = [
     ("benchmarks", "Speed against error: every model level, J-integrals, simulation, rule timings"),
 ]
 
+#: The report jobs: rule -> (the index it writes, or None; the pages it renders in one kernel). The default
+#: target's pages in two jobs: Figs. 4 and 7 wait for the simulated pull-off (the longest chain of the DAG), the
+#: others render meanwhile; the index only links, so the job of Figs. 4 and 7 writes it.
+REPORT_JOBS: dict[str, tuple[str | None, tuple[str, ...]]] = {
+    "report_index": ("index", ("fig4", "fig7")),
+    "report_pages": (None, ("fig3", "fig5", "fig6", "fig8", "fit")),
+    "report_validation_index": ("validation_index", tuple(stem for stem, _ in VALIDATION_PAGES)),
+}
+
 _INDEX_TEXT = {
     "index": (
         "reproduction report",

@@ -70,19 +70,25 @@ def fig8_plot(setup_json: Path_, fit_json: Path_, csv: Path_, pdf: Path_, png: P
 
 
 def all_figures(inputs: Mapping[str, Path_], outputs: Mapping[str, Path_], panel_n: Sequence[float]) -> None:
-    """Figs. 3-8, PDF and PNG each, in one process: matplotlib and pandas are imported once, not six times.
+    """The figures among Figs. 3-8 whose outputs are named, PDF and PNG each, in one process (one import).
 
-    ``inputs`` and ``outputs`` by the names of the rule ``plot_figures``: the tables ``fig3`` ... ``fig8`` and
+    ``inputs`` and ``outputs`` by the names of the plot rules: the tables ``fig3`` ... ``fig8`` and
     ``fig5_markers``, ``setup``, ``fit``, ``pulloff`` (measured rows), ``virtual`` (simulated pull-off) and
-    ``grid`` (simulated steady states); ``figN_pdf`` and ``figN_png``.
+    ``grid`` (simulated steady states); ``figN_pdf`` and ``figN_png`` of each figure to draw.
     """
     i, o = inputs, outputs
-    fig3_plot(i["fit"], i["fig3"], o["fig3_pdf"], o["fig3_png"], panel_n)
-    fig4_plot(i["setup"], i["fit"], i["pulloff"], i["virtual"], i["fig4"], o["fig4_pdf"], o["fig4_png"])
-    fig5_plot(i["setup"], i["fig5"], i["fig5_markers"], o["fig5_pdf"], o["fig5_png"])
-    fig6_plot(i["setup"], i["fit"], i["fig6"], i["grid"], o["fig6_pdf"], o["fig6_png"])
-    fig7_plot(i["setup"], i["fit"], i["fig7"], i["fig4"], i["virtual"], o["fig7_pdf"], o["fig7_png"])
-    fig8_plot(i["setup"], i["fit"], i["fig8"], o["fig8_pdf"], o["fig8_png"])
+    if "fig3_png" in o:
+        fig3_plot(i["fit"], i["fig3"], o["fig3_pdf"], o["fig3_png"], panel_n)
+    if "fig4_png" in o:
+        fig4_plot(i["setup"], i["fit"], i["pulloff"], i["virtual"], i["fig4"], o["fig4_pdf"], o["fig4_png"])
+    if "fig5_png" in o:
+        fig5_plot(i["setup"], i["fig5"], i["fig5_markers"], o["fig5_pdf"], o["fig5_png"])
+    if "fig6_png" in o:
+        fig6_plot(i["setup"], i["fit"], i["fig6"], i["grid"], o["fig6_pdf"], o["fig6_png"])
+    if "fig7_png" in o:
+        fig7_plot(i["setup"], i["fit"], i["fig7"], i["fig4"], i["virtual"], o["fig7_pdf"], o["fig7_png"])
+    if "fig8_png" in o:
+        fig8_plot(i["setup"], i["fit"], i["fig8"], o["fig8_pdf"], o["fig8_png"])
 
 
 def validation_plot(setup_json: Path_, fit_json: Path_, grid_csv: Path_, errors_csv: Path_, pdf: Path_,

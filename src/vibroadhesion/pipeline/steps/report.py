@@ -91,8 +91,8 @@ def render_page(page: Page, manager: KernelManager) -> None:
 
 
 def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str | Path], html: Sequence[str | Path],
-           index: str | Path) -> None:
-    """Render the pages of one index in one kernel, each from a fresh namespace, then write the ``index`` page.
+           indexes: Sequence[str | Path] = ()) -> None:
+    """Render pages in one kernel, each from a fresh namespace, then write the index pages named in ``indexes``.
 
     ``parameters`` maps each page (the stem of ``notebooks/<page>.ipynb``) to its papermill parameters, in the
     order of ``executed`` and ``html``, the paths of its executed notebook and of its HTML page.
@@ -105,4 +105,5 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
         for page in pages:
             reset_namespace(manager)
             render_page(page, manager)
-    write_index(index)
+    for index in indexes:
+        write_index(index)
