@@ -227,6 +227,8 @@ def _v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
     """
     if not levels.level(model).frequency_dependent:
         return f"v0 not identifiable: the {model} model is frequency independent, v0 does not enter it"
+    if frequencies == 0:
+        return "v0 not identifiable: no vibrated rows (at least 2 frequencies needed)"
     if frequencies < 2:
         return f"v0 not identifiable: the rows span {frequencies} frequency (at least 2 needed)"
     if rows <= 3:
