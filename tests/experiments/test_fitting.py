@@ -15,7 +15,7 @@ from conftest import AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED
 
 from vibroadhesion.core.records import Pulloff
 from vibroadhesion.experiments import fitting
-from vibroadhesion.experiments.fitting import distinct_conditions, fit_gent_schultz, parameters_from_fit
+from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
@@ -129,10 +129,23 @@ def _table(rows: list[tuple[float, float, float]]) -> pd.DataFrame:
                          "line": np.arange(2, 2 + f.size)})
 
 
-def test_distinct_conditions_keep_the_order_of_first_appearance() -> None:
-    f, h1, index = distinct_conditions(np.array([300.0, 200.0, 300.0, 300.0]), np.array([40.0, 40.0, 40.0, 60.0]))
-    assert f.tolist() == [300.0, 200.0, 300.0] and h1.tolist() == [40.0, 40.0, 60.0]
-    assert index.tolist() == [0, 1, 0, 2]
+def test_replicated_conditions_are_solved_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """predict_pulloff hands the level each distinct (amplitude, omega_check) once and scatters the answer back:
+    4 rows, 3 conditions."""
+    from vibroadhesion.models import refined
+
+    seen = []
+
+    def counting(eta1, chi0, omega_check, law):
+        seen.append(np.size(eta1))
+        return original(eta1, chi0, omega_check, law)
+
+    original = refined.pulloff_refined
+    monkeypatch.setattr(refined, "pulloff_refined", counting)
+    f, h1 = np.array([300.0, 200.0, 300.0, 300.0]), np.array([40.0, 40.0, 40.0, 60.0])
+    ratio = predict_pulloff("refined", TRUE, f, h1, **GEOMETRY).pulloff_ratio
+    assert seen == [3]
+    assert ratio[0] == ratio[2] and ratio[0] != ratio[1] and ratio[0] != ratio[3]
 
 
 @pytest.mark.parametrize("model", ["leading", "refined"])

@@ -68,29 +68,19 @@ ResidualFunction = Callable[[np.ndarray], np.ndarray]
 ParameterMap = Callable[[np.ndarray], GentSchultzParameters]
 
 
-def distinct_conditions(frequency_hz: np.ndarray, h1_um: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The distinct (frequency, amplitude) pairs in order of first appearance, and each row's index into them."""
-    first: dict[tuple[float, float], int] = {}
-    index = np.array([first.setdefault((float(f), float(h)), len(first)) for f, h in zip(frequency_hz, h1_um,
-                                                                                          strict=True)], dtype=int)
-    pairs = np.array(list(first), dtype=float).reshape(-1, 2)
-    return pairs[:, 0], pairs[:, 1], index
-
-
 def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: np.ndarray,
               geometry: dict[str, float]) -> np.ndarray:
     """Pull-off (mN) of ``model`` at each row: Eq. (70) for static rows (h1 = 0), the level's estimate otherwise.
 
-    The level is solved once per distinct (frequency, amplitude) pair; :class:`FitError` where it has no solution.
+    :func:`predict_pulloff` solves the level once per distinct condition; :class:`FitError` where it has no solution.
     """
     out = np.full(h1.shape, -pulloff_force(params.w0, geometry["radius"]) * 1e3)
     dynamic = h1 > 0
     if np.any(dynamic):
-        f_u, h_u, index = distinct_conditions(freq[dynamic], h1[dynamic])
-        pulloff = predict_pulloff(model, params, f_u, h_u, **geometry)
+        pulloff = predict_pulloff(model, params, freq[dynamic], h1[dynamic], **geometry)
         if not np.all(pulloff.found):
             raise FitError(f"{model}: the model has no solution at a trial point ({params})")
-        out[dynamic] = pulloff_mN(pulloff, params.w0, geometry["radius"])[index]
+        out[dynamic] = pulloff_mN(pulloff, params.w0, geometry["radius"])
     return out
 
 

@@ -53,8 +53,9 @@ def predict_pulloff(
 ) -> Pulloff:
     """Pull-off of ``model`` (a level of role ``fit``) at base amplitudes ``h1_um`` (um) and frequencies (Hz).
 
-    Broadcast over amplitudes and frequencies (Eqs. 49, 71); a frequency-independent level is solved
-    once per distinct amplitude and scattered back.
+    Broadcast over amplitudes and frequencies (Eqs. 49, 71). Every level is solved once per distinct
+    condition and scattered back, so replicated rows cost nothing: per distinct (amplitude, omega_check)
+    for the frequency-dependent levels, per distinct amplitude for the others.
     """
     if model not in levels.names("fit"):
         raise ValueError(f"unknown model {model!r}; expected one of {levels.names('fit')}")
@@ -62,24 +63,19 @@ def predict_pulloff(
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     eta1 = groups.eta1(np.asarray(h1_um, dtype=float) * 1e-6, radius)
-    if entry.cost == "simulation":
-        return _simulated(entry, law, chi0, eta1, groups.omega_check(frequency_hz, params.v0, radius))
-    if entry.frequency_dependent:
-        return entry.pulloff_function()(eta1, chi0, groups.omega_check(frequency_hz, params.v0, radius), law)
-    eta1_each = np.broadcast_arrays(eta1, np.asarray(frequency_hz, dtype=float))[0]
-    distinct, back = np.unique(eta1_each, return_inverse=True)
-    pulloff: Pulloff = entry.pulloff_function()(distinct, chi0, law)
-    return pulloff.taken(np.reshape(back, eta1_each.shape))
-
-
-def _simulated(entry: levels.ModelLevel, law: GentSchultz, chi0: float, eta1: NDArray[np.float64],
-               omega_check: NDArray[np.float64]) -> Pulloff:
-    """The simulated pull-off (Eqs. 4-11, rigid fixation) once per distinct (eta1, omega_check), scattered back."""
-    eta1_each, omega_each = np.broadcast_arrays(eta1, omega_check)
+    frequency = np.asarray(frequency_hz, dtype=float)
+    omega = groups.omega_check(frequency, params.v0, radius) if entry.frequency_dependent else np.zeros_like(frequency)
+    eta1_each, omega_each = np.broadcast_arrays(eta1, np.asarray(omega, dtype=float))
     distinct, back = np.unique(np.stack([eta1_each.ravel(), omega_each.ravel()], axis=1), axis=0, return_inverse=True)
-    records = [replace(entry.pulloff_function()(Problem(law, chi0, float(e), float(o))), steady_states=None)
-               for e, o in distinct]
-    return stacked(records).taken(np.reshape(back, eta1_each.shape))
+    e, o = distinct[:, 0], distinct[:, 1]
+    if entry.cost == "simulation":
+        pulloff = stacked([replace(entry.pulloff_function()(Problem(law, chi0, float(ek), float(ok))),
+                                   steady_states=None) for ek, ok in zip(e, o, strict=True)])
+    elif entry.frequency_dependent:
+        pulloff = entry.pulloff_function()(e, chi0, o, law)
+    else:
+        pulloff = entry.pulloff_function()(e, chi0, law)
+    return pulloff.taken(np.reshape(back, eta1_each.shape))
 
 
 def pulloff_mN(pulloff: Pulloff, w0: float, radius: float) -> NDArray[np.float64]:
