@@ -26,11 +26,14 @@ if config["fit"]["figures_use"] not in names("fit"):
 
 
 # The user's inputs are checked before any job is planned: a rejected edit stops here with one line naming
-# the file, row and column, and changes nothing in results/ (rule ingest writes their canonical copies).
+# the file, row and column, and changes nothing in results/ (rules ingest_setup and ingest_pulloff write their
+# canonical copies).
 try:
-    check_inputs(config["data"]["setup"], config["data"]["pulloff"])
+    _, _, MEASURED = check_inputs(config["data"]["setup"], config["data"]["pulloff"])
 except DataError as error:
     sys.exit(f"error: {error}")
+# With no measured rows the fit is the published parameter set, and Figs. 4 and 7 overlay its simulation.
+MEASURED_ROWS = len(MEASURED)
 
 
 include: "workflow/rules/common.smk"

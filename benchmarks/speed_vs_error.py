@@ -1,10 +1,10 @@
 """Speed against error of every model level at the paper's experimental conditions.
 
-Usage: python benchmarks/speed_vs_error.py SETUP_JSON FIT_JSON RIGID_ERRORS_CSV OUT_CSV OUT_TXT OUT_PNG
+Usage: python benchmarks/speed_vs_error.py SETUP_JSON RIGID_ERRORS_CSV OUT_CSV OUT_TXT OUT_PNG
 
 For each level of role ``validation_rigid`` of :mod:`vibroadhesion.core.levels` (leading order, refined, exact harmonic
 balance, exact averaging, direct simulation) it times the solve of each point (h1 of data/setup.yaml
-x the test frequencies) on this machine, median of 3 per point, and takes the error of that level
+x the test frequencies, at the published parameters as the validation) on this machine, median of 3 per point, and takes the error of that level
 against the simulation at the same points from the validation artefact (largest relative error over
 Abar, abar_m, w_eff/w0, A/a_m and P_m/|P_JKR|). The simulation is the reference: its error is its
 self-consistency between rtol 1e-12 and 1e-13, measured in results/benchmarks/simulate.txt, and is
@@ -12,7 +12,6 @@ listed as 0 here. Timings vary from run to run; the CSV is a benchmark, not a pi
 figure names each level by its registry label and marks it by the registry's cost class.
 """
 
-import json
 import statistics
 import sys
 import time
@@ -33,10 +32,9 @@ LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
 MARKERS: dict[levels.Cost, str] = {"algebraic": "o", "quadrature": "s", "simulation": "^"}
 
 
-def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:
+def main(setup_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: str) -> None:
     setup = read_canonical_setup(setup_json)
-    fit = json.load(open(fit_json, encoding="utf-8"))
-    p = {k: v["estimate"] for k, v in fit["fits"][fit["figures_use"]]["parameters"].items()}
+    p = {"w0": setup.w0, "n": setup.n, "v0": setup.v0}
     chi0 = groups.chi0(p["w0"], setup.reduced_modulus, setup.radius)
     law = GentSchultz(p["n"])
     tests = [float(groups.omega_check(f, p["v0"], setup.radius)) for f in setup.frequencies_hz]
@@ -80,4 +78,4 @@ def main(setup_json: str, fit_json: str, errors_csv: str, out_csv: str, out_txt:
 
 
 if __name__ == "__main__":
-    main(*sys.argv[1:7])
+    main(*sys.argv[1:6])

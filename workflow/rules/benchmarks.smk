@@ -34,7 +34,7 @@ rule benchmark_simulate:
 rule benchmark_speed_vs_error:
     """Every model level: time per solved point against its error vs the simulation at the test conditions."""
     input:
-        **RIG,
+        **PUBLISHED,
         script="benchmarks/speed_vs_error.py",
         errors=rules.validation_errors.output.errors,
         kernels=rules.simulation_kernels.output[0],
@@ -49,5 +49,5 @@ rule benchmark_speed_vs_error:
     params:
         python=PYTHON,
     shell:
-        "{params.python:q} {input.script:q} {input.setup:q} {input.fit:q} {input.errors:q} {output.csv:q} {output.txt:q} "
+        "{params.python:q} {input.script:q} {input.setup:q} {input.errors:q} {output.csv:q} {output.txt:q} "
         "{output.png:q} > {log:q} 2>&1"

@@ -13,7 +13,7 @@ FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
 
 def _rig_values(group, entry):
-    """A list of data/setup.yaml (validated by the ingest step) as wildcard values, 200.0 -> "200"."""
+    """A list of data/setup.yaml (validated before any job is planned) as wildcard values, 200.0 -> "200"."""
     with open(config["data"]["setup"], encoding="utf-8") as stream:
         return [f"{float(v):g}" for v in yaml.safe_load(stream)[group][entry]["value"]]
 

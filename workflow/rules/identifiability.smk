@@ -12,7 +12,7 @@ FITTED_LEVELS = names("fit")
 rule pulloff_sensitivity:
     """Simulated pull-off (rigid fixation, every test frequency and amplitude) with one parameter scaled by exp(+-h)."""
     input:
-        **RIG,
+        **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
         code=code("pulloff_sensitivity"),
     output:
@@ -31,7 +31,7 @@ rule pulloff_sensitivity:
 rule identifiability_fit:
     """The pipeline's Gent-Schultz fit of one model level on the noise-free simulated pull-off rows."""
     input:
-        **RIG,
+        **PUBLISHED,
         virtual=VIRTUAL_RIGID,
         code=code("identifiability_fit"),
     output:

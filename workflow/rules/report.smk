@@ -5,20 +5,20 @@ from vibroadhesion.pipeline.pages import REPORT_JOBS
 TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
 
 
-FIT_JSON, SETUP_JSON = RIG["fit"], RIG["setup"]
+FIT_JSON, SETUP_JSON = FITTED["fit"], PUBLISHED["setup"]
 PAGE_INPUTS = {
     "fig3": {
         "fig_csv": rules.fig3_data.output[0],
         "fig_png": getattr(rules, PLOT_RULE["fig3"]).output.fig3_png,
-        "fit_json": FIT_JSON,
+        "setup_json": SETUP_JSON,
     },
     "fig4": {
         "fig_csv": rules.fig4_data.output[0],
         "fig_png": getattr(rules, PLOT_RULE["fig4"]).output.fig4_png,
         "fit_json": FIT_JSON,
         "setup_json": SETUP_JSON,
-        "pulloff_csv": rules.ingest.output.pulloff,
-        "virtual_csv": VIRTUAL_RIGID,
+        "pulloff_csv": rules.ingest_pulloff.output[0],
+        "virtual_csv": FIGURE_VIRTUAL,
     },
     "fig5": {
         "fig_csv": rules.fig5_data.output.csv,
@@ -26,14 +26,13 @@ PAGE_INPUTS = {
         "markers_csv": rules.fig5_data.output.markers,
         "counts_csv": rules.fig5_data.output.counts,
         "setup_json": SETUP_JSON,
-        "fit_json": FIT_JSON,
     },
     **{
         fig: {
             "fig_csv": getattr(rules, f"{fig}_data").output[0],
             "fig_png": getattr(getattr(rules, PLOT_RULE[fig]).output, f"{fig}_png"),
-            "fit_json": FIT_JSON,
             "setup_json": SETUP_JSON,
+            **({"fit_json": FIT_JSON} if fig == "fig7" else {}),
         }
         for fig in ("fig6", "fig7", "fig8")
     },
@@ -46,7 +45,6 @@ PAGE_INPUTS = {
         "sweep_png": rules.validation_compliant_plot.output.png,
         "virtual_csv": rules.virtual_pulloff_gather.output[0],
         "setup_json": SETUP_JSON,
-        "fit_json": FIT_JSON,
     },
     "fit": {"fit_json": FIT_JSON, "setup_json": SETUP_JSON},
     "identifiability": {
@@ -54,7 +52,7 @@ PAGE_INPUTS = {
         "information_csv": rules.identifiability.output.information,
         "sensitivity_csv": rules.identifiability.output.sensitivity,
         "virtual_csv": VIRTUAL_RIGID,
-        "fit_json": FIT_JSON,
+        "setup_json": SETUP_JSON,
     },
     "benchmarks": {
         "bench_csv": rules.benchmark_j_integrals.output.csv,

@@ -5,7 +5,7 @@
 rule validation_errors:
     """Relative errors of every level against the simulation and their summary."""
     input:
-        **RIG,
+        **PUBLISHED,
         grid=rules.simulation_rigid_grid.output[0],
         code=code("validation_errors"),
     output:
@@ -19,7 +19,7 @@ rule validation_errors:
 
 rule validation_plot:
     input:
-        **RIG,
+        **PUBLISHED,
         grid=rules.simulation_rigid_grid.output[0],
         errors=rules.validation_errors.output.errors,
         code=code("validation_plot"),
@@ -36,7 +36,7 @@ rule validation_compliant:
     """Fig. 5's folded resonance (the simulated case of data/setup.yaml) swept up and down with the
     simulation (hysteresis, Floquet stability), and the refined model's curve of that case."""
     input:
-        **RIG,
+        **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
         code=code("validation_compliant"),
     output:

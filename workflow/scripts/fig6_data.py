@@ -5,4 +5,4 @@ from vibroadhesion.pipeline.steps.rigid import fig6_data
 
 p = snakemake.params
 with logged(snakemake.log[0], snakemake.rule):
-    fig6_data(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], p.lo, p.hi, p.points)
+    fig6_data(snakemake.input.setup, snakemake.input.get("fit"), snakemake.output[0], p.lo, p.hi, p.points)

@@ -5,4 +5,4 @@ from vibroadhesion.pipeline.steps.identifiability import fit_level
 
 i = snakemake.input
 with logged(snakemake.log[0], snakemake.rule):
-    fit_level(i.setup, i.fit, i.virtual, snakemake.wildcards.model, snakemake.output[0])
+    fit_level(i.setup, i.get("fit"), i.virtual, snakemake.wildcards.model, snakemake.output[0])

@@ -5,4 +5,4 @@ from vibroadhesion.pipeline.steps.identifiability import sensitivity_run
 
 wc = snakemake.wildcards
 with logged(snakemake.log[0], snakemake.rule):
-    sensitivity_run(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], wc.parameter, wc.sign)
+    sensitivity_run(snakemake.input.setup, snakemake.input.get("fit"), snakemake.output[0], wc.parameter, wc.sign)

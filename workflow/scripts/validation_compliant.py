@@ -5,5 +5,5 @@ from vibroadhesion.pipeline.steps.validation import compliant_sweep
 
 sweep, out = snakemake.params.sweep, snakemake.output
 with logged(snakemake.log[0], snakemake.rule):
-    compliant_sweep(snakemake.input.setup, snakemake.input.fit, out.csv, out.curve, sweep["omega_bar_min"],
+    compliant_sweep(snakemake.input.setup, snakemake.input.get("fit"), out.csv, out.curve, sweep["omega_bar_min"],
                     sweep["omega_bar_max"], sweep["points"], tuple(snakemake.params.curve_range))

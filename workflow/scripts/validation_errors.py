@@ -5,4 +5,4 @@ from vibroadhesion.pipeline.steps.validation import rigid_errors
 
 i, out = snakemake.input, snakemake.output
 with logged(snakemake.log[0], snakemake.rule):
-    rigid_errors(i.setup, i.fit, i.grid, out.errors, out.summary)
+    rigid_errors(i.setup, i.get("fit"), i.grid, out.errors, out.summary)

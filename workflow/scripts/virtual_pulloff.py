@@ -5,5 +5,5 @@ from vibroadhesion.pipeline.steps.simulation import virtual_pulloff_part
 
 wc = snakemake.wildcards
 with logged(snakemake.log[0], snakemake.rule):
-    virtual_pulloff_part(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], wc.fixation,
+    virtual_pulloff_part(snakemake.input.setup, snakemake.input.get("fit"), snakemake.output[0], wc.fixation,
                          float(wc.frequency))

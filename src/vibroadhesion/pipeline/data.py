@@ -419,17 +419,41 @@ def check_inputs(setup_yaml: str | Path, pulloff_csv: str | Path) -> tuple[Setup
     return setup, doc, records
 
 
+def _setup_json_text(doc: dict[str, Any]) -> str:
+    """The canonical setup JSON: values (floats), units and sources of the validated document."""
+    return json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+
+
 def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path, out_csv: str | Path) -> str:
-    """Validate both inputs (:func:`check_inputs`) and write their canonical copies atomically (rule ``ingest``).
+    """Validate both inputs (:func:`check_inputs`) and write their canonical copies atomically (:func:`main`).
 
     The canonical setup JSON keeps values, units and sources; the canonical pull-off CSV has no
     comments, the columns frequency_hz, h1_um, pulloff_mN, source and floats written with repr.
     Raises :class:`DataError` (nothing written) on a bad input; returns a one-line summary.
     """
     setup, doc, records = check_inputs(setup_yaml, pulloff_csv)
-    setup_text = json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
-    _write_atomically([(Path(out_json), setup_text), (Path(out_csv), _pulloff_csv_text(records))])
+    _write_atomically([(Path(out_json), _setup_json_text(doc)), (Path(out_csv), _pulloff_csv_text(records))])
     return f"validated {setup_yaml} ({len(setup.sources)} entries) and {pulloff_csv} ({len(records)} rows)"
+
+
+def ingest_setup(setup_yaml: str | Path, out_json: str | Path) -> str:
+    """Rule ``ingest_setup``: validate data/setup.yaml and write its canonical JSON (as :func:`ingest`)."""
+    setup, doc = _parse_setup(setup_yaml)
+    _write_atomically([(Path(out_json), _setup_json_text(doc))])
+    return f"validated {setup_yaml} ({len(setup.sources)} entries)"
+
+
+def ingest_pulloff(setup_json: str | Path, pulloff_csv: str | Path, out_csv: str | Path) -> str:
+    """Rule ``ingest_pulloff``: validate data/pulloff.csv against the canonical rig and write its canonical CSV.
+
+    The same checks as :func:`check_inputs` (schema, then :func:`check_force_scale` with R and w0 of the rig); the
+    rule of its own, so that an edit of the rows does not rewrite the setup that the published-parameter jobs read.
+    """
+    setup = read_canonical_setup(setup_json)
+    records = pulloff_records(pulloff_csv)
+    check_force_scale(setup.radius, setup.w0, records, pulloff_csv)
+    _write_atomically([(Path(out_csv), _pulloff_csv_text(records))])
+    return f"validated {pulloff_csv} ({len(records)} rows) against {setup_json}"
 
 
 def main(argv: Sequence[str] | None = None) -> int:

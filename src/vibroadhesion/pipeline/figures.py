@@ -50,6 +50,12 @@ OMEGA_CHECK = "\u03c9\u030c"
 OMEGA_CHECK_AXIS = f"{OMEGA_CHECK} = " + r"$\omega R / v_0$"
 OMEGA_CHECK_LABEL_INF_EXACT = f"exact averaging ({OMEGA_CHECK} " + r"$\to \infty$), $a_m = a_{cr}$"
 
+def name_parameter_set(fig: Figure, label: str) -> Figure:
+    """Name the Gent–Schultz parameter set that every curve of ``fig`` uses, above its panels."""
+    fig.suptitle(label, fontsize=7.5)
+    return fig
+
+
 def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
     """Save ``fig`` as PDF and PNG without time stamps, then close it."""
     with atomic_path(pdf) as tmp:
@@ -62,12 +68,12 @@ def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
 # --- Fig. 3: the J-integrals -------------------------------------------------------------
 
 
-def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[float]) -> Figure:
-    """(a) J0, -Jc1, J1 for the fitted n with their large-Abar asymptotes; (b) J0, -Jc1 for several n."""
+def plot_fig3(table: pd.DataFrame, n: float, panel_exponents: Sequence[float]) -> Figure:
+    """(a) J0, -Jc1, J1 for the figure's n with their large-Abar asymptotes; (b) J0, -Jc1 for several n."""
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
-    rows = table[np.isclose(table["n"], n_fitted)]
+    rows = table[np.isclose(table["n"], n)]
     Abar = rows["Abar"].to_numpy()
-    asym = j_integrals_large_Abar(Abar, n_fitted)
+    asym = j_integrals_large_Abar(Abar, n)
     for (label, column, sign), a, color in zip(
         [(r"$\mathcal{J}_0$", "J0", 1), (r"$-\mathcal{J}_{c1}$", "Jc1", -1), (r"$\mathcal{J}_1$", "J1", 1)],
         asym,
@@ -77,12 +83,12 @@ def plot_fig3(table: pd.DataFrame, n_fitted: float, panel_exponents: Sequence[fl
         ax_a.loglog(Abar, sign * rows[column], color=color, label=label)
         ax_a.loglog(Abar, sign * a, "--", color=color, lw=0.9, label=f"{label}, large-$\\bar A$ asymptote")
     ax_a.set_ylim(1e-4, None)
-    ax_a.set(xlabel=r"$\bar A$", title=f"(a) fitted n = {n_fitted:.4g}")
+    ax_a.set(xlabel=r"$\bar A$", title=f"(a) n = {n:.4g}")
     ax_a.legend(ncol=2)
-    for k, n in enumerate(panel_exponents):
-        rows = table[np.isclose(table["n"], n)]
-        ax_b.loglog(rows["Abar"], rows["J0"], color=f"C{k}", label=rf"$\mathcal{{J}}_0$, n = {n:g}")
-        ax_b.loglog(rows["Abar"], -rows["Jc1"], ":", color=f"C{k}", label=rf"$-\mathcal{{J}}_{{c1}}$, n = {n:g}")
+    for k, exponent in enumerate(panel_exponents):
+        rows = table[np.isclose(table["n"], exponent)]
+        ax_b.loglog(rows["Abar"], rows["J0"], color=f"C{k}", label=rf"$\mathcal{{J}}_0$, n = {exponent:g}")
+        ax_b.loglog(rows["Abar"], -rows["Jc1"], ":", color=f"C{k}", label=rf"$-\mathcal{{J}}_{{c1}}$, n = {exponent:g}")
     ax_b.set_ylim(1e-4, None)
     ax_b.set(xlabel=r"$\bar A$", title="(b) effect of the exponent n")
     ax_b.legend(ncol=2)
@@ -103,8 +109,8 @@ def _simulated_rigid_pulloff(virtual: pd.DataFrame) -> pd.DataFrame:
 
 
 def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: float,
-              virtual: pd.DataFrame | None = None, parameter_label: str = "") -> Figure:
-    """Fig. 4: P_cr/P_JKR against h1, every curve and the measured rows at one parameter set (``parameter_label``).
+              virtual: pd.DataFrame | None = None) -> Figure:
+    """Fig. 4: P_cr/P_JKR against h1, every curve and the measured rows at one parameter set.
 
     Leading-order, refined and exact-averaging curves, the simulated pull-off of the rigidly fixed virtual
     experiment (its own, labelled series: not measurements), and the measured rows scaled by the same
@@ -126,8 +132,6 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
                     label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
     _plot_measured(ax, measurements, jkr_pulloff_mN, sorted(refined["frequency_hz"].unique()))
-    if parameter_label:
-        ax.set_title(parameter_label, fontsize=7.5)
     if measurements.empty:
         ax.text(0.03, 0.97, "no measured rows in data/pulloff.csv\n(published fit shown)", transform=ax.transAxes,
                 va="top", fontsize=7.5, color="0.35")

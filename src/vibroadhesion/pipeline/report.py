@@ -28,11 +28,19 @@ def setup_table(setup_json: str | Path) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def derived_table(setup_json: str | Path, fit_json: str | Path, model: str) -> pd.DataFrame:
-    """Dimensionless groups at the parameters of ``model``'s fit, with the formula of each."""
+def derived_table(setup_json: str | Path, fit_json: str | Path | None = None) -> pd.DataFrame:
+    """Dimensionless groups at one parameter set, with the formula of each.
+
+    The set is the fit the figures use when ``fit_json`` is given (Figs. 4, 7), else the published set of
+    data/setup.yaml (the paper's figures), as the page's figure uses it.
+    """
     setup = data.read_canonical_setup(setup_json)
-    p = json.loads(Path(fit_json).read_text())["fits"][model]["parameters"]
-    w0, v0 = p["w0"]["estimate"], p["v0"]["estimate"]
+    if fit_json is None:
+        which, w0, v0 = "published", setup.w0, setup.v0
+    else:
+        fit = json.loads(Path(fit_json).read_text())
+        p = fit["fits"][fit["figures_use"]]["parameters"]
+        which, w0, v0 = f"{fit['figures_use']} fit", p["w0"]["estimate"], p["v0"]["estimate"]
     e_star, r = setup.reduced_modulus, setup.radius
     rows = [
         ("E*", e_star, "Pa", "f_storage E / (1 - nu^2) (Sec. 3.4, App. A)"),
@@ -44,7 +52,7 @@ def derived_table(setup_json: str | Path, fit_json: str | Path, model: str) -> p
              for h in setup.amplitudes_um]
     rows += [(f"omega_check at {f:g} Hz", float(groups.omega_check(f, v0, r)), "1", "omega R / v0, Eq. (105)")
              for f in setup.frequencies_hz]
-    return pd.DataFrame(rows, columns=["quantity", "value", "unit", "definition"])
+    return pd.DataFrame(rows, columns=["quantity", "value", "unit", "definition"]).assign(parameters=which)
 
 
 def fit_table(fit_json: str | Path) -> pd.DataFrame:

@@ -20,7 +20,7 @@ def compliant_case(setup: Setup) -> tuple[float, dict[float, float]]:
     return float(groups.eta1(h1_um * 1e-6, setup.radius)), {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
 
 
-def fig5_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, markers_out: str | Path,
+def fig5_data(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, markers_out: str | Path,
               counts_out: str | Path, omega_bar_min: float, omega_bar_max: float, count_points: int) -> None:
     """A/a_m through resonance (Eqs. 87, 90-96) for every assumed (kappa, zeta) of data/setup.yaml.
 

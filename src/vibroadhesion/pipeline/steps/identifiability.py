@@ -20,7 +20,8 @@ from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import rig
 
 
-def sensitivity_run(setup_json: str | Path, fit_json: str | Path, out: str | Path, parameter: str, sign: str) -> None:
+def sensitivity_run(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, parameter: str,
+                    sign: str) -> None:
     """Simulated pull-off with one parameter scaled by exp(+h) or exp(-h).
 
     Rigid fixation, every test frequency and amplitude of the rig; ``parameter`` is scaled by exp(+h)
@@ -43,7 +44,7 @@ def _simulated_rigid_rows(virtual_csv: str | Path) -> pd.DataFrame:
 
 
 def fit_level(
-    setup_json: str | Path, fit_json: str | Path, virtual_csv: str | Path, model: str, out: str | Path
+    setup_json: str | Path, fit_json: str | Path | None, virtual_csv: str | Path, model: str, out: str | Path
 ) -> None:
     """The pipeline's Gent-Schultz fit of one model level on the noise-free simulated pull-off rows."""
     setup, params, _ = rig(setup_json, fit_json)

@@ -23,18 +23,31 @@ def fitted(fit_json: str | Path, model: str | None = None) -> dict[str, float]:
     return {name: parameters[name]["estimate"] for name in ("w0", "n", "v0")}
 
 
-def fit_label(fit_json: str | Path) -> str:
-    """The parameter set the figures use, for a figure: which fit, w0, n and v0 (or "published" without rows)."""
-    fit = json.loads(Path(fit_json).read_text())
-    p = fitted(fit_json)
-    which = "published parameters" if fit["data_rows"] == 0 else f"{fit['figures_use']} fit"
+def published(setup: Setup) -> dict[str, float]:
+    """w0, n, v0 of data/setup.yaml's ``gent_schultz_published`` (the paper's Fig. 4 caption) in SI units."""
+    return {"w0": setup.w0, "n": setup.n, "v0": setup.v0}
+
+
+def parameter_label(setup_json: str | Path, fit_json: str | Path | None = None) -> str:
+    """The parameter set a figure uses, named on it: the fit the figures use, or the published set (:func:`rig`)."""
+    if fit_json is None:
+        which, p = "published parameters", published(read_canonical_setup(setup_json))
+    else:
+        fit = json.loads(Path(fit_json).read_text())
+        which = "published parameters" if fit["data_rows"] == 0 else f"{fit['figures_use']} fit"
+        p = fitted(fit_json)
     return f"{which}: $w_0$ = {p['w0']:.3g} J/m², $n$ = {p['n']:.3g}, $v_0$ = {p['v0'] * 1e6:.3g} µm/s"
 
 
-def rig(setup_json: str | Path, fit_json: str | Path) -> tuple[Setup, dict[str, float], float]:
-    """The ingested rig, the parameters of the fit the figures use, and chi0 at them (Eq. 64)."""
+def rig(setup_json: str | Path, fit_json: str | Path | None = None) -> tuple[Setup, dict[str, float], float]:
+    """The ingested rig, one parameter set and chi0 at it (Eq. 64).
+
+    The parameter set is the fit the figures use when ``fit_json`` is given (the steps behind Figs. 4 and 7,
+    which show measured rows), else the published set of data/setup.yaml (the paper's figures, the validation
+    and the identifiability study, which a data edit must not rerun).
+    """
     setup = read_canonical_setup(setup_json)
-    params = fitted(fit_json)
+    params = published(setup) if fit_json is None else fitted(fit_json)
     return setup, params, groups.chi0(params["w0"], setup.reduced_modulus, setup.radius)
 
 

@@ -7,20 +7,31 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import pandas as pd
 
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.pipeline import figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
-from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fit_label, fitted, setup_number
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, parameter_label, rig, setup_number
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
 
 Path_ = str | Path
 
 
-def fig3_plot(fit_json: Path_, csv: Path_, pdf: Path_, png: Path_, panel_n: Sequence[float]) -> None:
-    """Fig. 3: J-integrals of the fitted n with their large-Abar asymptotes (Eqs. 28, 29, 36), and other n."""
-    figures.save_figure(figures.plot_fig3(pd.read_csv(csv), fitted(fit_json)["n"], panel_n), pdf, png)
+def _save_named(fig: Figure, setup_json: Path_, fit_json: Path_ | None, pdf: Path_, png: Path_) -> None:
+    """Save ``fig`` with the name of its parameter set (:func:`parameter_label`) above its panels."""
+    figures.save_figure(figures.name_parameter_set(fig, parameter_label(setup_json, fit_json)), pdf, png)
+
+
+def fig3_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, pdf: Path_, png: Path_,
+              panel_n: Sequence[float]) -> None:
+    """Fig. 3: J-integrals of the figure's n with their large-Abar asymptotes (Eqs. 28, 29, 36), and other n."""
+    fig = figures.plot_fig3(pd.read_csv(csv), rig(setup_json, fit_json)[1]["n"], panel_n)
+    _save_named(fig, setup_json, fit_json, pdf, png)
 
 
 def fig4_plot(setup_json: Path_, fit_json: Path_, pulloff_csv: Path_, virtual_csv: Path_, csv: Path_, pdf: Path_,
@@ -33,65 +44,69 @@ def fig4_plot(setup_json: Path_, fit_json: Path_, pulloff_csv: Path_, virtual_cs
     setup = read_canonical_setup(setup_json)
     params = fitted(fit_json)
     jkr_mN = float(-pulloff_force(params["w0"], setup.radius)) * 1e3
-    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN, pd.read_csv(virtual_csv),
-                            parameter_label=fit_label(fit_json))
-    figures.save_figure(fig, pdf, png)
+    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN, pd.read_csv(virtual_csv))
+    _save_named(fig, setup_json, fit_json, pdf, png)
 
 
-def fig5_plot(setup_json: Path_, csv: Path_, markers_csv: Path_, pdf: Path_, png: Path_) -> None:
+def fig5_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, markers_csv: Path_, pdf: Path_,
+              png: Path_) -> None:
     """Fig. 5: A/a_m through resonance, the paper's dot at the frequency data/setup.yaml names."""
     highlight_hz = setup_number(read_canonical_setup(setup_json), "test_conditions.fig5_highlight_frequency")
-    figures.save_figure(figures.plot_fig5(pd.read_csv(csv), pd.read_csv(markers_csv), highlight_hz), pdf, png)
+    fig = figures.plot_fig5(pd.read_csv(csv), pd.read_csv(markers_csv), highlight_hz)
+    _save_named(fig, setup_json, fit_json, pdf, png)
 
 
-def _test_frequencies(setup_json: Path_, fit_json: Path_) -> dict[float, float]:
-    """omega_check (Eq. 105) of the rig's test frequencies at the figures' fit."""
-    return experiment_omega_check(read_canonical_setup(setup_json), fitted(fit_json)["v0"])
+def _test_frequencies(setup_json: Path_, fit_json: Path_ | None) -> dict[float, float]:
+    """omega_check (Eq. 105) of the rig's test frequencies at the figure's v0 (:func:`rig`: published unless a fit)."""
+    setup, params, _ = rig(setup_json, fit_json)
+    return experiment_omega_check(setup, params["v0"])
 
 
-def fig6_plot(setup_json: Path_, fit_json: Path_, csv: Path_, grid_csv: Path_, pdf: Path_, png: Path_) -> None:
+def fig6_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, grid_csv: Path_, pdf: Path_, png: Path_) -> None:
     """Fig. 6 (Eqs. 122-123, 49, 98) with the simulated steady states and the exact averaging of the rigid grid."""
     fig = figures.plot_fig6(pd.read_csv(csv), _test_frequencies(setup_json, fit_json), pd.read_csv(grid_csv))
-    figures.save_figure(fig, pdf, png)
+    _save_named(fig, setup_json, fit_json, pdf, png)
 
 
-def fig7_plot(setup_json: Path_, fit_json: Path_, csv: Path_, fig4_csv: Path_, virtual_csv: Path_, pdf: Path_,
+def fig7_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, fig4_csv: Path_, virtual_csv: Path_, pdf: Path_,
               png: Path_) -> None:
     """Fig. 7 (Eq. 106) with Fig. 4's leading-order (Eq. 72) and exact-averaging rows and the simulated pull-off."""
     fig4 = pd.read_csv(fig4_csv)
     fig = figures.plot_fig7(pd.read_csv(csv), fig4[fig4["model"] == "leading"], _test_frequencies(setup_json, fit_json),
                             fig4[fig4["model"] == "exact_averaging"], pd.read_csv(virtual_csv))
-    figures.save_figure(fig, pdf, png)
+    _save_named(fig, setup_json, fit_json, pdf, png)
 
 
-def fig8_plot(setup_json: Path_, fit_json: Path_, csv: Path_, pdf: Path_, png: Path_) -> None:
+def fig8_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, pdf: Path_, png: Path_) -> None:
     """Fig. 8: storage and loss contact stiffness and phase (Eqs. 117-121)."""
-    figures.save_figure(figures.plot_fig8(pd.read_csv(csv), _test_frequencies(setup_json, fit_json)), pdf, png)
+    _save_named(figures.plot_fig8(pd.read_csv(csv), _test_frequencies(setup_json, fit_json)), setup_json, fit_json,
+                pdf, png)
 
 
 def all_figures(inputs: Mapping[str, Path_], outputs: Mapping[str, Path_], panel_n: Sequence[float]) -> None:
     """The figures among Figs. 3-8 whose outputs are named, PDF and PNG each, in one process (one import).
 
     ``inputs`` and ``outputs`` by the names of the plot rules: the tables ``fig3`` ... ``fig8`` and
-    ``fig5_markers``, ``setup``, ``fit``, ``pulloff`` (measured rows), ``virtual`` (simulated pull-off) and
+    ``fig5_markers``, ``setup``, ``fit`` (absent: the published parameters, :func:`rig`), ``pulloff`` (measured
+    rows), ``virtual`` (simulated pull-off) and
     ``grid`` (simulated steady states); ``figN_pdf`` and ``figN_png`` of each figure to draw.
     """
     i, o = inputs, outputs
     if "fig3_png" in o:
-        fig3_plot(i["fit"], i["fig3"], o["fig3_pdf"], o["fig3_png"], panel_n)
+        fig3_plot(i["setup"], i.get("fit"), i["fig3"], o["fig3_pdf"], o["fig3_png"], panel_n)
     if "fig4_png" in o:
         fig4_plot(i["setup"], i["fit"], i["pulloff"], i["virtual"], i["fig4"], o["fig4_pdf"], o["fig4_png"])
     if "fig5_png" in o:
-        fig5_plot(i["setup"], i["fig5"], i["fig5_markers"], o["fig5_pdf"], o["fig5_png"])
+        fig5_plot(i["setup"], i.get("fit"), i["fig5"], i["fig5_markers"], o["fig5_pdf"], o["fig5_png"])
     if "fig6_png" in o:
-        fig6_plot(i["setup"], i["fit"], i["fig6"], i["grid"], o["fig6_pdf"], o["fig6_png"])
+        fig6_plot(i["setup"], i.get("fit"), i["fig6"], i["grid"], o["fig6_pdf"], o["fig6_png"])
     if "fig7_png" in o:
-        fig7_plot(i["setup"], i["fit"], i["fig7"], i["fig4"], i["virtual"], o["fig7_pdf"], o["fig7_png"])
+        fig7_plot(i["setup"], i.get("fit"), i["fig7"], i["fig4"], i["virtual"], o["fig7_pdf"], o["fig7_png"])
     if "fig8_png" in o:
-        fig8_plot(i["setup"], i["fit"], i["fig8"], o["fig8_pdf"], o["fig8_png"])
+        fig8_plot(i["setup"], i.get("fit"), i["fig8"], o["fig8_pdf"], o["fig8_png"])
 
 
-def validation_plot(setup_json: Path_, fit_json: Path_, grid_csv: Path_, errors_csv: Path_, pdf: Path_,
+def validation_plot(setup_json: Path_, fit_json: Path_ | None, grid_csv: Path_, errors_csv: Path_, pdf: Path_,
                     png: Path_) -> None:
     """Error maps of every model level against the simulation on the rigid grid."""
     fig = figures.plot_validation_maps(pd.read_csv(grid_csv), pd.read_csv(errors_csv),

@@ -12,7 +12,7 @@ from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import rig
 
 
-def fig6_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, log10_omega_check_min: float,
+def fig6_data(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, log10_omega_check_min: float,
               log10_omega_check_max: float, points: int) -> None:
     """results/fig6/fig6.csv: Abar, abar_m, w_eff/w0, A/a_m (Eqs. 122-123, 49, corrected 98) per amplitude."""
     setup, params, chi0 = rig(setup_json, fit_json)
@@ -25,7 +25,7 @@ def fig6_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, log
           f"asymptotic model), of which {int(impossible.sum())} with A/a_m > 1 (geometrically impossible)")
 
 
-def fig7_data(setup_json: str | Path, fit_json: str | Path, out: str | Path, log10_omega_check_min: float,
+def fig7_data(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, log10_omega_check_min: float,
               log10_omega_check_max: float, points: int) -> None:
     """results/fig7/fig7.csv: the refined pull-off estimate against omega_check (Eq. 106) per amplitude."""
     setup, params, chi0 = rig(setup_json, fit_json)

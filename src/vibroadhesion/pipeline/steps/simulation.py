@@ -19,7 +19,7 @@ from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import FixationCase, experiment_omega_check, rig, setup_fixations
 
 
-def rigid_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, h1_um: float,
+def rigid_part(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, h1_um: float,
                log10_omega_check_min: int, log10_omega_check_max: int) -> None:
     """Every model level and the simulation at one amplitude on the rigid grid.
 
@@ -44,7 +44,7 @@ def rigid_grid(parts: Sequence[str | Path], out: str | Path) -> None:
     write_csv(grid.sort_values(["h1_um", "omega_check"], kind="stable").reset_index(drop=True), out)
 
 
-def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path, out: str | Path, fixation: FixationCase,
+def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, fixation: FixationCase,
                          frequency_hz: float) -> None:
     """The simulated pull-off at one test frequency, with the predictions.
 

@@ -19,7 +19,7 @@ from vibroadhesion.pipeline.steps.fig5 import compliant_case
 from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_fixations
 
 
-def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | Path, errors_out: str | Path,
+def rigid_errors(setup_json: str | Path, fit_json: str | Path | None, grid_csv: str | Path, errors_out: str | Path,
                  summary_out: str | Path) -> None:
     """Relative error of every level against the simulation on the rigid grid.
 
@@ -33,7 +33,7 @@ def rigid_errors(setup_json: str | Path, fit_json: str | Path, grid_csv: str | P
     print(summary.to_string(index=False))
 
 
-def compliant_sweep(setup_json: str | Path, fit_json: str | Path, out: str | Path, curve_out: str | Path,
+def compliant_sweep(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, curve_out: str | Path,
                     omega_bar_min: float, omega_bar_max: float, points: int,
                     curve_range: tuple[float, float]) -> None:
     """The simulated compliant case swept through resonance, with the refined curve.
