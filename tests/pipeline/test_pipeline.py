@@ -163,6 +163,12 @@ def test_data_edit_leaves_the_validation_at_the_published_parameters(pipeline_re
     assert planned == expected, planned ^ expected
 
 
+def _snapshot(results: Path) -> dict[str, tuple[bytes, int]]:
+    """Every file under ``results`` with its bytes and its modification time (ns)."""
+    return {str(p.relative_to(results)): (p.read_bytes(), p.stat().st_mtime_ns) for p in sorted(results.rglob("*"))
+            if p.is_file()}
+
+
 @pytest.mark.pipeline
 @pytest.mark.parametrize("bad_row,column", [("200,40,0.165,lab", "pulloff_mN"), ("200,abc,120.0,lab", "h1_um")],
                          ids=["newtons-for-millinewtons", "not-a-number"])
@@ -376,7 +382,8 @@ def test_rules_run_with_project_and_interpreter_under_paths_with_spaces(tmp_path
     work = _copy_repo(tmp_path / "a project with spaces")
     (work / "the venv").symlink_to(Path(sys.prefix), target_is_directory=True)
     python = work / "the venv" / "bin" / "python"
-    out = subprocess.run([str(python), "-m", "snakemake", "-c2", "results/report/fig3.html"], cwd=work,
+    out = subprocess.run([str(python), "-m", "snakemake", "-c2", "results/fit/gent_schultz.json",
+                          "results/report/fig3.html"], cwd=work,
                          capture_output=True, text=True, timeout=900, env={**os.environ, "PATH": os.defpath})
     assert out.returncode == 0, out.stderr[-4000:]
     for artefact in ("fit/gent_schultz.json", "fig3/fig3.csv", "fig3/fig3.png", "report/fig3.html"):
