@@ -68,3 +68,13 @@ rule validation:
         rules.identifiability.output.information,
         rules.benchmark_speed_vs_error.output.csv,
         rules.report_validation_index.output.index,
+
+
+# After every run, finished or stopped by a failed job, the indexes mark the pages older than an artefact they
+# show: the report never presents a mix of outputs of two runs as one state.
+onsuccess:
+    mark_stale_pages()
+
+
+onerror:
+    mark_stale_pages()

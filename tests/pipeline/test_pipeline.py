@@ -32,7 +32,7 @@ from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.figures import plot_fig4, save_figure
 from vibroadhesion.pipeline.imports import import_closure
-from vibroadhesion.pipeline.pages import REPORT_JOBS
+from vibroadhesion.pipeline.pages import PAGES, REPORT_JOBS
 
 ROOT = Path(__file__).resolve().parents[2]
 SNAKEMAKE = [sys.executable, "-m", "snakemake"]
@@ -189,6 +189,28 @@ def test_rejected_edit_changes_nothing_and_restoring_it_reruns_nothing(pipeline_
     assert len(lines) == 1 and f"column {column}" in lines[0], out.stderr[-3000:]
     assert _snapshot(pipeline_run / "results") == before
     assert _planned_rules(pipeline_run) == set()
+
+
+@pytest.mark.pipeline
+def test_a_run_stopped_by_a_failed_page_marks_it_on_the_index_until_a_run_rebuilds_it(pipeline_run: Path,
+                                                                                      tmp_path: Path) -> None:
+    """A report job that fails loses its pages (Snakemake removes a failed job's outputs): the index, which another
+    job wrote, marks them out of date instead of linking them as if the report were one state (Snakefile onerror);
+    the run that rebuilds them removes the marks (onsuccess)."""
+    work = tmp_path / "work"
+    shutil.copytree(pipeline_run, work, symlinks=True)  # copy2: modification times kept, so the copy is up to date
+    notebook = work / "notebooks/fig8.ipynb"
+    original = notebook.read_text()
+    broken = nbformat.reads(original, as_version=4)
+    broken.cells.append(nbformat.v4.new_code_cell("raise RuntimeError('a page that fails')"))
+    notebook.write_text(nbformat.writes(broken))
+    assert _snakemake(work).returncode != 0
+    index = (work / "results/report/index.html").read_text()
+    marked = {stem for stem, _ in PAGES if re.search(rf'href="{stem}\.html">[^<]*</a> <strong class="stale">', index)}
+    assert marked == set(REPORT_JOBS["report_pages"][1]), marked
+    notebook.write_text(original)
+    assert _snakemake(work).returncode == 0
+    assert "out of date" not in (work / "results/report/index.html").read_text().lower()
 
 
 @pytest.mark.pipeline

@@ -1,11 +1,12 @@
-"""Report: the indices of both targets (each page linked once) and the tables the pages show."""
+"""Report: the indices of both targets (each page linked once, stale pages marked) and the tables the pages show."""
 
+import os
 from pathlib import Path
 
 import pytest
 
 from vibroadhesion.pipeline import report
-from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES, write_index
+from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES, refresh_indexes, stale_pages, write_index
 
 
 @pytest.mark.parametrize(("name", "pages", "other"), [("index", PAGES, VALIDATION_PAGES),
@@ -24,6 +25,49 @@ def test_unknown_index_name_is_an_error(tmp_path: Path) -> None:
     with pytest.raises(ValueError, match="unknown index"):
         write_index(tmp_path / "other.html")
     assert list(tmp_path.iterdir()) == []
+
+
+def _page_with_inputs(tmp_path: Path, page: str, page_time: int, input_times: list[int | None]) -> list[Path]:
+    """results/report/<page>.html built at ``page_time`` (s) and its inputs written at ``input_times`` (None: absent)."""
+    built = tmp_path / "report" / f"{page}.html"
+    built.parent.mkdir(exist_ok=True)
+    built.write_text("page")
+    os.utime(built, (page_time, page_time))
+    inputs = []
+    for k, when in enumerate(input_times):
+        path = tmp_path / f"{page}_{k}.csv"
+        if when is not None:
+            path.write_text("x")
+            os.utime(path, (when, when))
+        inputs.append(path)
+    return inputs
+
+
+def test_a_missing_page_or_one_older_than_or_missing_an_artefact_is_stale(tmp_path: Path) -> None:
+    inputs = {"fig3": _page_with_inputs(tmp_path, "fig3", 2000, [1000, 1500]),   # built after its inputs
+              "fig4": _page_with_inputs(tmp_path, "fig4", 2000, [1000, 3000]),   # one input rewritten later
+              "fig5": _page_with_inputs(tmp_path, "fig5", 2000, [1000, None]),   # one input gone
+              "fig6": _page_with_inputs(tmp_path, "fig6", 2000, [1000]),         # built after its input
+              "fig7": [tmp_path / "fig3_0.csv"]}                                  # page missing (its job failed)
+    assert stale_pages(inputs, tmp_path / "report") == ["fig4", "fig5", "fig7"]
+
+
+def test_refresh_marks_the_stale_pages_of_each_index_and_leaves_a_consistent_one_untouched(tmp_path: Path) -> None:
+    report_dir = tmp_path / "report"
+    inputs = {"fig3": _page_with_inputs(tmp_path, "fig3", 2000, [1000]),
+              "validation": _page_with_inputs(tmp_path, "validation", 2000, [3000])}
+    write_index(report_dir / "index.html")
+    write_index(report_dir / "validation_index.html")
+    os.utime(report_dir / "index.html", (2500, 2500))
+    assert refresh_indexes(inputs, report_dir) == ["validation"]
+    assert (report_dir / "index.html").stat().st_mtime == 2500  # nothing stale there: not rewritten
+    assert "Out of date" not in (report_dir / "index.html").read_text()
+    text = (report_dir / "validation_index.html").read_text()
+    assert "Out of date" in text and "snakemake -c2 validation" in text
+    assert text.count("(out of date)") == 1 and '<a href="validation.html">' in text.split("(out of date)")[0]
+    os.utime(report_dir / "validation.html", (4000, 4000))  # the page rebuilt: the mark goes
+    assert refresh_indexes(inputs, report_dir) == []
+    assert "out of date" not in (report_dir / "validation_index.html").read_text().lower()
 
 
 def test_virtual_pulloff_tables_give_one_table_per_fixation_with_errors_against_the_simulation(tmp_path: Path) -> None:

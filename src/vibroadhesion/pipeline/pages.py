@@ -9,6 +9,7 @@ Each page is a notebook of notebooks/ executed by papermill and exported to HTML
 from __future__ import annotations
 
 import html
+from collections.abc import Collection, Iterable, Mapping
 from pathlib import Path
 
 from vibroadhesion.pipeline.atomic import atomic_path
@@ -63,30 +64,81 @@ _INDEX_TEXT = {
 
 
 
-def write_index(out: str | Path) -> None:
-    """results/report/index.html (figure pages) or validation_index.html (validation pages), by the file name."""
+def write_index(out: str | Path, stale: Collection[str] = ()) -> None:
+    """results/report/index.html (figure pages) or validation_index.html (validation pages), by the file name.
+
+    Pages named in ``stale`` (:func:`stale_pages`) are marked out of date, with a note above the list.
+    """
     stem = Path(out).stem
     if stem not in _INDEX_TEXT:
         raise ValueError(f"unknown index {out}: expected index.html or validation_index.html")
+    with atomic_path(out) as tmp:
+        tmp.write_text(_index_html(stem, stale), encoding="utf-8")
+
+
+def _index_html(stem: str, stale: Collection[str]) -> str:
+    """The text of the index ``stem`` (:func:`write_index`)."""
     subtitle, preamble = _INDEX_TEXT[stem]
     pages = PAGES if stem == "index" else VALIDATION_PAGES
-    items = "\n".join(f'    <li><a href="{html.escape(name)}.html">{html.escape(title)}</a></li>'
-                      for name, title in pages)
-    text = f"""<!DOCTYPE html>
+    items = "\n".join(f'    <li><a href="{html.escape(name)}.html">{html.escape(title)}</a>'
+                      f'{_STALE_MARK if name in stale else ""}</li>' for name, title in pages)
+    warning = ""
+    if any(name in stale for name, _ in pages):
+        target = "snakemake -c2" if stem == "index" else "snakemake -c2 validation"
+        warning = (f'<p class="stale"><strong>Out of date:</strong> the pages marked below are missing or were built '
+                   f"before artefacts they show were rewritten (a run that stopped midway, or a run of another "
+                   f"target), so they do not show one state with the rest. Run <code>{target}</code> to rebuild "
+                   "them.</p>")
+    return f"""<!DOCTYPE html>
 <html lang="en">
 <head><meta charset="utf-8"><title>Vibroadhesion: {subtitle}</title>
-<style>body {{ font-family: sans-serif; max-width: 48em; margin: 2em auto; line-height: 1.5; }}</style></head>
+<style>body {{ font-family: sans-serif; max-width: 48em; margin: 2em auto; line-height: 1.5; }}
+.stale {{ color: #a00; }}</style></head>
 <body>
   <h1>An asymptotic model of vibroadhesion — {subtitle}</h1>
   <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>. Every page is a
   notebook executed by papermill on the artefacts of the pipeline;
   the numbers behind each figure are in <code>results/figN/figN.csv</code>.</p>
   {preamble}
+  {warning}
   <ul>
 {items}
   </ul>
 </body>
 </html>
 """
-    with atomic_path(out) as tmp:
-        tmp.write_text(text)
+
+
+_STALE_MARK = ' <strong class="stale">(out of date)</strong>'
+
+
+def stale_pages(page_inputs: Mapping[str, Iterable[str | Path]], report_dir: str | Path) -> list[str]:
+    """The pages of ``report_dir`` that are missing or older than an artefact they show (by modification time).
+
+    ``page_inputs`` maps each page (file stem) to the artefacts it reads; an artefact that is missing makes its page
+    stale too. A page goes missing when the job that renders it fails (Snakemake removes a failed job's outputs).
+    """
+    stale = []
+    for page, inputs in page_inputs.items():
+        built = Path(report_dir) / f"{page}.html"
+        when = built.stat().st_mtime_ns if built.exists() else None
+        if when is None or any(not Path(p).exists() or Path(p).stat().st_mtime_ns > when for p in inputs):
+            stale.append(page)
+    return stale
+
+
+def refresh_indexes(page_inputs: Mapping[str, Iterable[str | Path]], report_dir: str | Path) -> list[str]:
+    """After every run, finished or failed (the Snakefile's ``onsuccess`` and ``onerror``), mark stale pages.
+
+    Each index of ``report_dir`` that exists is rewritten only when its text changes, so a consistent report keeps
+    its bytes and times. Returns the stale pages (:func:`stale_pages`) that an existing index lists.
+    """
+    stale, marked = stale_pages(page_inputs, report_dir), []
+    for stem in _INDEX_TEXT:
+        index = Path(report_dir) / f"{stem}.html"
+        if not index.exists():
+            continue
+        marked += [name for name, _ in (PAGES if stem == "index" else VALIDATION_PAGES) if name in stale]
+        if index.read_text(encoding="utf-8") != _index_html(stem, stale):
+            write_index(index, stale)
+    return marked
