@@ -4,6 +4,7 @@ import sys
 import yaml
 
 from vibroadhesion.pipeline.imports import import_closure
+from vibroadhesion.pipeline.pages import refresh_indexes
 
 # Each step is workflow/scripts/<name>.py, run by `script:` with the interpreter that runs Snakemake
 # (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
@@ -49,3 +50,17 @@ if any(c.isspace() for c in sys.executable):
         self._execute_cmd("{py_exec:q} {fname:q}", py_exec=sys.executable, fname=fname, is_python_script=True)
 
     PythonScript.execute_script = _execute_quoted
+
+
+def parameter_inputs(wildcards):
+    """The inputs that fix the parameter set ``wildcards.parameters`` (PUBLISHED or FITTED of fit.smk): an input
+    function of rule virtual_pulloff."""
+    return FITTED if wildcards.parameters == "fitted" else PUBLISHED
+
+
+def mark_stale_pages():
+    """Mark on the indexes the pages missing or older than an artefact they show (pipeline.pages.refresh_indexes),
+    and print them: the Snakefile's onsuccess and onerror (PAGE_INPUTS of report.smk)."""
+    stale = refresh_indexes({page: list(inputs.values()) for page, inputs in PAGE_INPUTS.items()}, "results/report")
+    if stale:
+        print(f"report: out of date, marked on the index: {', '.join(stale)}", file=sys.stderr)

@@ -1,5 +1,5 @@
 # Report: each page is a notebook executed by papermill and exported to HTML by nbconvert.
-from vibroadhesion.pipeline.pages import REPORT_JOBS, refresh_indexes
+from vibroadhesion.pipeline.pages import REPORT_JOBS
 
 # The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
 TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
@@ -102,10 +102,3 @@ for job, (index, pages) in REPORT_JOBS.items():
             pages={stem: page_parameters(stem) for stem in pages},
         script:
             "../scripts/report.py"
-
-
-def mark_stale_pages():
-    """Mark on the indexes the pages older than an artefact they show (pipeline.pages.refresh_indexes); print them."""
-    stale = refresh_indexes({page: list(inputs.values()) for page, inputs in PAGE_INPUTS.items()}, "results/report")
-    if stale:
-        print(f"report: out of date, marked on the index: {', '.join(stale)}", file=sys.stderr)

@@ -54,11 +54,6 @@ rule simulation_rigid_grid:
 # use: the markers of Figs. 4 and 7, rerun by a data edit).
 
 
-def parameter_inputs(wildcards):
-    """The inputs that fix the parameter set ``wildcards.parameters`` (PUBLISHED or FITTED of fit.smk)."""
-    return FITTED if wildcards.parameters == "fitted" else PUBLISHED
-
-
 rule virtual_pulloff:
     """Quasi-static withdrawal of the base through periodic steady states: the simulated pull-off force."""
     input:
