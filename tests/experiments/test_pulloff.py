@@ -44,6 +44,23 @@ def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: floa
     assert abs(est.pulloff_ratio[0] / float(j0**2) - 1) < 1e-12
 
 
+@pytest.mark.parametrize("frequency_hz", [0.1, 10.0, 200.0, 400.0])
+def test_refined_A_over_am_at_detachment_equals_the_physical_ratio(frequency_hz: float) -> None:
+    """Reference: in SI units, A = Abar_cr v0 / omega (Eq. 105's scaling of the internal variable) and, at the
+    criterion a_m = a_cr, a_cr = (9 pi R^2 w_eff / (8 E*))^(1/3) with w_eff = J0^2 w0 (Eqs. 49, 60); their ratio is
+    what Figs. 4 and 7 flag against the applicability limit 0.1 (Sec. 3.5.3). Algebra only: 1e-12."""
+    params = GentSchultzParameters(W0, N_PUBLISHED, V0)
+    h1_um = np.array([20.0, 100.0])
+    record = predict_pulloff("refined", params, frequency_hz, h1_um, radius=RADIUS, reduced_modulus=REDUCED_MODULUS)
+    omega = 2 * math.pi * frequency_hz
+    A = record.Abar_cr * V0 / omega
+    a_cr = jkr.critical_radius(record.sqrt_w_eff_ratio**2 * W0, REDUCED_MODULUS, RADIUS)
+    assert np.allclose(record.A_over_am, A / a_cr, rtol=1e-12, atol=0)
+    # 200 Hz at 100 um is just inside the region, 0.1 Hz (omega_check ~ 730) far outside it at both amplitudes
+    assert (record.A_over_am > 0.1).tolist() == {0.1: [True, True], 10.0: [False, True], 200.0: [False, False],
+                                                  400.0: [False, False]}[frequency_hz]
+
+
 @pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 1.0, 2.0, 4.0])
 def test_eq72_and_eq106_lhs_strictly_increasing_as_proved(n: float) -> None:
     """Closed-form monotonicity proofs (docstrings of leading_order/refined; n < 6): both left-hand

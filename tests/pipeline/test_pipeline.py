@@ -107,7 +107,7 @@ def test_pipeline_produces_every_artefact_with_the_stated_columns(pipeline_run: 
     assert list(pd.read_csv(results / "fig3/fig3.csv").columns) == ["n", "Abar", "J0", "Jc1", "J1"]
     fig4 = pd.read_csv(results / "fig4/fig4.csv")
     assert list(fig4.columns) == ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio",
-                                  "pulloff_mN"]
+                                  "pulloff_mN", "A_over_am"]
     for model, n_freq in (("leading", 1), ("refined", 3)):
         rows = fig4[fig4["model"] == model]
         assert set(AMPLITUDES_UM) <= set(rows["h1_um"])

@@ -37,6 +37,7 @@ from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState
 from vibroadhesion.models.compliant import trace_response_curve
+from vibroadhesion.models.refined import APPLICABILITY_LIMIT  # applied as a user would: to the refined A/a_m
 from vibroadhesion.numerics.progress import ProgressBar
 
 #: The registry's functions this module resolves (vibroadhesion.core.levels): the rigid steady states.
@@ -46,8 +47,6 @@ QUANTITIES = ("Abar", "abar_m", "w_eff_ratio", "A_over_am", "pm_over_abs_pjkr")
 RIGID_GRID_COLUMNS = ["h1_um", "omega_check", "model", "status", *QUANTITIES]
 ERROR_COLUMNS = ["h1_um", "omega_check", "model", "quantity", "relative_error", "refined_A_over_am", "applicable"]
 
-#: The paper's applicability rule (Sec. 3.5.3), applied as a user would: to the refined model's A/a_m.
-APPLICABILITY_LIMIT = 0.1
 #: The error a level must stay below to be "trusted" (issue: where each level's error is below 5 %).
 TRUSTED_ERROR = 0.05
 

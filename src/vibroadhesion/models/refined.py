@@ -44,6 +44,9 @@ from vibroadhesion.models.leading_order import pm_over_abs_pjkr
 from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.numerics.roots import solve_log_increasing
 
+#: The asymptotic model needs A << a_m; the paper takes A <= 0.1 a_m as its region of applicability (Sec. 3.5.3).
+APPLICABILITY_LIMIT = 0.1
+
 Array = NDArray[np.float64]
 
 
@@ -105,11 +108,19 @@ def critical_internal_variable_refined(eta1: float, chi0: float, omega_check: fl
 
 
 def pulloff_refined(eta1: ArrayLike, chi0: float, omega_check: ArrayLike, law: RateLaw) -> Pulloff:
-    """Refined pull-off (Eqs. 71, 106), vectorised and broadcast over eta1 and omega_check: level ``refined``."""
+    """Refined pull-off (Eqs. 71, 106), vectorised and broadcast over eta1 and omega_check: level ``refined``.
+
+    With A/a_m at detachment, where a_m = a_cr = a_o (9/16)^(1/3) J0^(2/3) (Eqs. 60-61, 86) and
+    A/a_m = Abar/(c_o abar_m omega_check) (Eq. 98 corrected): the asymptotic model applies while it is small
+    (A/a_m <= 0.1, Sec. 3.5.3), so a caller can flag the test conditions where it does not.
+    """
+    eta1, omega_check = np.broadcast_arrays(np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float))
     Abar = np.vectorize(lambda e, w: critical_internal_variable_refined(e, chi0, w, law), otypes=[float])(
-        np.asarray(eta1, dtype=float), np.asarray(omega_check, dtype=float)
+        eta1, omega_check
     )
-    return pulloff_from_internal_variable("refined", Abar, law)
+    record = pulloff_from_internal_variable("refined", Abar, law)
+    abar_cr = pulloff_closure(record.sqrt_w_eff_ratio)
+    return replace(record, A_over_am=groups.A_over_am(Abar, abar_cr, chi0, omega_check))
 
 
 # --- Nominal point contact of a rigidly fixed indenter, Eqs. (122)–(123) -------------------

@@ -27,6 +27,7 @@ from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
+    from numpy.typing import ArrayLike
 
 STYLE: dict[RcKeyType, Any] = {
     "font.size": 9,
@@ -54,6 +55,33 @@ def name_parameter_set(fig: Figure, label: str) -> Figure:
     """Name the Gent–Schultz parameter set that every curve of ``fig`` uses, above its panels."""
     fig.suptitle(label, fontsize=7.5)
     return fig
+
+
+#: Opacity of a model curve where the asymptotic model does not apply (A/a_m > APPLICABILITY_LIMIT, Sec. 3.5.3).
+OUTSIDE_ALPHA = 0.3
+
+
+def plot_applicable(ax: Axes, x: ArrayLike, y: ArrayLike, A_over_am: ArrayLike, fmt: str, **style: Any) -> None:
+    """Plot a refined-model curve, faded where A/a_m > APPLICABILITY_LIMIT (outside the asymptotic model).
+
+    The faded part starts at the last applicable point, so the curve stays connected; ``style`` applies to both
+    parts and its ``label`` to the applicable one (or to the faded one when no point applies).
+    """
+    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+    outside = np.asarray(A_over_am, dtype=float) > APPLICABILITY_LIMIT
+    joined = outside | np.r_[outside[1:], False] | np.r_[False, outside[:-1]]
+    label = style.pop("label", None)
+    ax.plot(x, np.where(outside, np.nan, y), fmt, label=None if outside.all() else label, **style)
+    if outside.any():
+        ax.plot(x, np.where(joined, y, np.nan), fmt, alpha=OUTSIDE_ALPHA,
+                label=label if outside.all() else None, **style)
+
+
+def _legend_outside_applicability(ax: Axes, A_over_am: pd.Series) -> None:
+    """A legend entry for the faded curves of :func:`plot_applicable`, when a curve has such a part."""
+    if (A_over_am > APPLICABILITY_LIMIT).any():
+        ax.plot([], [], "k-", alpha=OUTSIDE_ALPHA, label=f"faded: $A/a_m > {APPLICABILITY_LIMIT:g}$ at detachment, "
+                "outside the asymptotic model (Sec. 3.5.3)")
 
 
 def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
@@ -121,8 +149,8 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     ax.plot(lead["h1_um"], lead["pulloff_ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
     refined = table[table["model"] == "refined"]
     for k, (f, rows) in enumerate(refined.groupby("frequency_hz", sort=True)):
-        ax.plot(rows["h1_um"], rows["pulloff_ratio"], "--", color=f"C{k}", lw=1.0,
-                label=f"refined, Eq. (106), {f:g} Hz")
+        plot_applicable(ax, rows["h1_um"], rows["pulloff_ratio"], rows["A_over_am"], "--", color=f"C{k}", lw=1.0,
+                        label=f"refined, Eq. (106), {f:g} Hz")
     exact = table[table["model"] == "exact_averaging"]
     ax.plot(exact["h1_um"], exact["pulloff_ratio"], "k:", lw=1.4,
             label=OMEGA_CHECK_LABEL_INF_EXACT)
@@ -136,6 +164,7 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
         ax.text(0.03, 0.97, "no measured rows in data/pulloff.csv\n(published fit shown)", transform=ax.transAxes,
                 va="top", fontsize=7.5, color="0.35")
     ax.set(xlabel=r"base amplitude $h_1$ (µm)", ylabel=r"$P_{cr}/P^{JKR}_{cr}$", xlim=(0, None), ylim=(0, None))
+    _legend_outside_applicability(ax, refined["A_over_am"])
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data, not on it
     return fig
 
@@ -217,7 +246,8 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     for k, (h1, rows) in enumerate(_by_amplitude(table)):
         lead = leading[np.isclose(leading["h1_um"], h1)].iloc[0]
         for ax, column in ((ax_a, "Abar_cr"), (ax_b, "pulloff_ratio")):
-            ax.plot(rows["omega_check"], rows[column], color=f"C{k}", label=rf"$h_1$ = {h1:g} µm")
+            plot_applicable(ax, rows["omega_check"], rows[column], rows["A_over_am"], "-", color=f"C{k}",
+                            label=rf"$h_1$ = {h1:g} µm")
             ax.axhline(lead[column], color=f"C{k}", ls="--", lw=0.8)
         if exact is not None:
             row = exact[np.isclose(exact["h1_um"], h1)].iloc[0]
@@ -235,6 +265,7 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     ax_a.set_yscale("log")
     ax_b.plot([], [], "k--", lw=0.8, label=f"Eq. (72) ({OMEGA_CHECK} " + r"$\to \infty$)")
     ax_b.plot([], [], "k:", lw=1.0, label="exact averaging, $a_m = a_{cr}$")
+    _legend_outside_applicability(ax_b, table["A_over_am"])
     ax_b.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     return fig
 

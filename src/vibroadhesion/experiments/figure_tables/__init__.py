@@ -8,5 +8,6 @@ DataFrame the pipeline writes as ``results/figN/figN.csv``; the drawings are in
 :mod:`vibroadhesion.pipeline.figures` and never recompute with a solver.
 """
 
-#: The asymptotic model needs A << a_m; the paper takes A <= 0.1 a_m as its region (Sec. 3.5.3).
-APPLICABILITY_LIMIT = 0.1
+from vibroadhesion.models.refined import APPLICABILITY_LIMIT
+
+__all__ = ["APPLICABILITY_LIMIT"]

@@ -11,7 +11,8 @@ from vibroadhesion.core import levels
 from vibroadhesion.core.records import Pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 
-FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio", "pulloff_mN"]
+FIG4_COLUMNS = ["model", "frequency_hz", "h1_um", "Abar_cr", "sqrt_w_eff_ratio", "pulloff_ratio", "pulloff_mN",
+                "A_over_am"]
 
 
 def fig4_table(
@@ -31,7 +32,9 @@ def fig4_table(
     curves (leading order, Eqs. 71–72; the exact high-frequency limit with the paper's criterion
     a_m = a_cr, :func:`vibroadhesion.models.exact_averaging.pulloff_at_critical_radius`) with frequency NaN,
     then the frequency-dependent ones (refined, Eq. 106) at each test frequency. Column ``sqrt_w_eff_ratio``
-    is sqrt(w_eff/w0) at detachment: J0(Abar_cr) for the J-integral levels, alpha* for exact averaging.
+    is sqrt(w_eff/w0) at detachment: J0(Abar_cr) for the J-integral levels, alpha* for exact averaging. Column
+    ``A_over_am`` is A/a_m at detachment where the level has a frequency (refined: the applicability of the
+    asymptotic model at that test condition, A/a_m <= 0.1), NaN for the omega_check -> infinity levels.
     """
     frames = []
     for model in levels.fig4_names():
@@ -44,9 +47,9 @@ def fig4_table(
 
 def _fig4_frame(model: str, frequency: float, h1_um: np.ndarray, pred: Pulloff, w0: float,
                 radius: float) -> pd.DataFrame:
-    """One curve of Fig. 4: the record's Abar_cr, sqrt(w_eff/w0), P_cr/P_cr^JKR and |P_cr| in mN (Eqs. 70-71)."""
+    """One curve of Fig. 4: the record's Abar_cr, sqrt(w_eff/w0), P_cr/P_cr^JKR, |P_cr| in mN (Eqs. 70-71), A/a_m."""
     return pd.DataFrame(
         {"model": model, "frequency_hz": frequency, "h1_um": h1_um, "Abar_cr": pred.Abar_cr,
          "sqrt_w_eff_ratio": pred.sqrt_w_eff_ratio, "pulloff_ratio": pred.pulloff_ratio,
-         "pulloff_mN": pulloff_mN(pred, w0, radius)}
+         "pulloff_mN": pulloff_mN(pred, w0, radius), "A_over_am": pred.A_over_am}
     )

@@ -14,7 +14,7 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
 
 FIG6_COLUMNS = ["h1_um", "omega_check", "Abar", "abar_m", "w_eff_ratio", "A_over_am"]
-FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "pulloff_ratio"]
+FIG7_COLUMNS = ["h1_um", "omega_check", "Abar_cr", "pulloff_ratio", "A_over_am"]
 
 
 def fig6_table(
@@ -34,11 +34,11 @@ def fig6_table(
 def fig7_table(
     h1_um: Sequence[float], omega_check: np.ndarray, *, chi0: float, radius: float, n: float
 ) -> pd.DataFrame:
-    """Refined pull-off estimate against omega_check (Eq. 106) for each amplitude."""
+    """Refined pull-off estimate against omega_check (Eq. 106) for each amplitude, with A/a_m at detachment."""
     h1 = np.asarray(h1_um, dtype=float)[:, None]
     est = pulloff_refined(h1 * 1e-6 / radius, chi0, omega_check[None, :], GentSchultz(n))
     return pd.DataFrame(
         {"h1_um": np.broadcast_to(h1, est.Abar_cr.shape).ravel(),
          "omega_check": np.broadcast_to(omega_check, est.Abar_cr.shape).ravel(),
-         "Abar_cr": est.Abar_cr.ravel(), "pulloff_ratio": est.pulloff_ratio.ravel()}
+         "Abar_cr": est.Abar_cr.ravel(), "pulloff_ratio": est.pulloff_ratio.ravel(), "A_over_am": est.A_over_am.ravel()}
     )[FIG7_COLUMNS]
