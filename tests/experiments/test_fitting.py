@@ -216,3 +216,16 @@ def test_static_rows_are_not_a_frequency_for_v0() -> None:
     rows = pd.concat([_table([(0.0, 0.0, 70.0)]), _rows([300.0], "refined")], ignore_index=True)
     summary = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
     assert summary["v0_identifiable"] is False and "1 frequency" in summary["v0_note"], summary["v0_note"]
+
+
+@pytest.mark.parametrize("model", ["leading", "simulation"])
+def test_a_row_whose_force_is_not_a_positive_number_fails_the_level_and_names_it(model: str) -> None:
+    """A NaN force (a simulated row whose family has no pull-off) and a zero force: each level ends as 'failed'
+    naming the lines, published values kept, before any model evaluation. Rows with NaN once escaped as scipy's
+    uncaught ValueError ('array must not contain infs or NaNs') from the simulation fit."""
+    rows = _rows([300.0], "leading")
+    rows.loc[1, "pulloff_mN"] = np.nan
+    rows.loc[3, "pulloff_mN"] = 0.0
+    summary = fit_gent_schultz(rows, model, PUBLISHED, **GEOMETRY)
+    assert summary["status"] == "failed" and summary["note"].startswith("line(s) 3, 5: "), summary["note"]
+    assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}

@@ -136,6 +136,23 @@ def test_family_at_n_0092_keeps_contact_from_the_preloaded_start_and_reports_the
     assert math.isnan(result.pulloff_ratio)
 
 
+def test_at_n_03_the_vibration_loses_the_contact_before_a_tensile_mean_force_at_60_um() -> None:
+    """n = 0.3 at 200 Hz (chi0 and omega_check of the published w0, v0): h1 = 40 um has a pull-off; at h1 = 60 um
+    the family from the preload (the nominal point contact loses contact in its first period) passes a
+    compressive minimum of the mean force, whose orbits then end while Phat_m is still compressive (measured:
+    Phat_m 1.2-1.3 near base_offset 0.97, peak front speed 2.5e5 and growing, Floquet multiplier ~0, so no fold;
+    the transient beyond loses contact): a status, no number -- the set n = 0.3 of issue 13 has no simulated
+    pull-off at 200 Hz, h1 >= 60 um.
+    """
+    law = GentSchultz(0.3)
+    assert simulated_pulloff(Problem(law, CHI0, 40e-6 / RADIUS, OMEGA_CHECK_200HZ)).status == "pulloff"
+    problem = Problem(law, CHI0, 60e-6 / RADIUS, OMEGA_CHECK_200HZ)
+    assert simulation.steady_state(problem).status == "contact_loss"
+    result = simulated_pulloff(problem)
+    assert result.status == "contact_loss_before_extremum" and result.steady_states > 10
+    assert math.isnan(result.pulloff_ratio)
+
+
 def test_a_compressive_local_minimum_of_the_mean_force_is_not_a_pulloff() -> None:
     """Phat_m in withdrawal order (Eq. 4', tensile negative): a minimum is a pull-off only where it is tensile."""
     assert not _tensile_extremum([0.9, 0.4, 0.6])  # compressive local minimum: go on withdrawing

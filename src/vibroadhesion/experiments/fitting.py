@@ -25,7 +25,8 @@ Every fit ends in a status, never in an exception that takes the other levels do
 (no rows: the published values pass through); ``fitted``;
 ``at_bound``; ``not_identifiable`` (fewer rows than parameters, or a Jacobian of lower rank than the
 free parameters: no standard errors, the published values kept where nothing was fitted); ``failed``
-(the model has no solution at a trial point, or the search does not converge), with the reason.
+(the model has no solution at a trial point, or the search does not converge, or a row's pull-off force
+is not a positive number, e.g. NaN for a simulated row without a pull-off), with the reason.
 
 Rows. The model is evaluated once per distinct (frequency, amplitude) pair, so replicate rows cost
 nothing. A static JKR test (``h1_um`` = 0, no vibration) has the pull-off |P_cr^JKR| = (3 pi/2) R w0
@@ -172,6 +173,11 @@ def fit_gent_schultz(
     v0_note = _v0_note_before_fit(model, len(frequencies), len(rows))
     if rows.empty:
         return summary | _unfitted(published, "published", "no rows: published values kept", v0_note)
+    forces = rows["pulloff_mN"].to_numpy(float)
+    unusable = rows.loc[~(np.isfinite(forces) & (forces > 0)), "line"].tolist()
+    if unusable:
+        return summary | _unfitted(published, "failed", f"line(s) {', '.join(map(str, unusable))}: the pull-off "
+                                   "force is not a positive number: published values kept", v0_note)
     if len(rows) <= 2:
         return summary | _unfitted(published, "not_identifiable",
                                    f"{len(rows)} rows cannot determine w0 and n: published values kept", v0_note)
