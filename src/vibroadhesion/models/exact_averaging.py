@@ -8,6 +8,10 @@ effective work of adhesion is the mean of s squared, exactly, and at a mean radi
     w_eff/w0 = alpha*^2,   Phat_m = mean Phat = (4/3) abar_m^3 - 2 alpha* abar_m^(3/2),
     base_offset = abar_m^2 - alpha* sqrt(abar_m).
 
+alpha*(beta) and Abar(beta) are read from their table per exponent n
+(:mod:`vibroadhesion.models.frozen_radius_table`, 1e-12 of the direct solve, which it falls back on outside
+the table), so that a point costs about 0.5 ms instead of 25-40 ms.
+
 Relation to the paper's first-harmonic (J-integral) model, Eqs. (25)–(29), (47), (49), (55). Its
 leading order for rigid fixation imposes the same two conditions on s: the mean of s is abar_m^(3/2)
 for the nominal point contact (Eqs. 53, 123 with J0 = mean s) and the first harmonic of s has
