@@ -52,9 +52,9 @@ class ModelLevel:
 
     ``frequency_dependent`` False: the level does not depend on omega R/v0 (Eq. 105), so v0 cannot be
     identified from it. ``cost`` (measured at the 15 test points, results/benchmarks/speed_vs_error.csv):
-    ``algebraic`` ~0.25 ms per point, ``quadrature`` ~10-30 ms, ``simulation`` ~30 ms and more; the
-    speed-against-error figure marks each level by its class and names it by its ``label``
-    (benchmarks/speed_vs_error.py; the CSVs keep ``name``).
+    ``algebraic`` ~0.25 ms per point, ``quadrature`` ~0.5 ms (exact averaging, tabulated) to ~10 ms,
+    ``simulation`` ~30 ms and more; the speed-against-error figure marks each level by its class and names
+    it by its ``label`` (benchmarks/speed_vs_error.py; the CSVs keep ``name``).
     ``fit``: the level is fitted to the measured rows, and its fit may supply the parameters of the figures
     (``fit.figures_use`` of the config names one of them).
     """
