@@ -8,6 +8,8 @@ noise its reported standard errors must cover them at the nominal rate (2 SE ~ 9
 
 from __future__ import annotations
 
+import io
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -17,6 +19,7 @@ from vibroadhesion.core.records import Pulloff
 from vibroadhesion.experiments import fitting
 from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
+from vibroadhesion.numerics.progress import Heartbeat
 
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
 TRUE = GentSchultzParameters(w0=0.30, n=0.70, v0=20e-6)
@@ -101,7 +104,9 @@ def test_refined_fit_on_one_frequency_keeps_published_v0() -> None:
     False, a note says why, and v0 is the published value exactly.
     """
     rows = _rows([300], "refined")
-    summary = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY)
+    log = io.StringIO()
+    summary = fit_gent_schultz(rows, "refined", PUBLISHED, **GEOMETRY, progress=Heartbeat("fit refined", 0.0, stream=log))
+    assert log.getvalue().startswith("fit refined: ") and "rms relative residual" in log.getvalue()  # each evaluation
     assert summary["v0_identifiable"] is False
     assert "frequency" in summary["v0_note"] and "not identifiable" in summary["v0_note"]
     assert summary["parameters"]["v0"]["estimate"] == PUBLISHED.v0

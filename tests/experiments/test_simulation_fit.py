@@ -7,6 +7,7 @@ rule, :mod:`vibroadhesion.experiments.identifiability`), against which the envel
 
 from __future__ import annotations
 
+import io
 import math
 import time
 from dataclasses import replace
@@ -21,6 +22,7 @@ from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, jkr_mN, pulloff_problem
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff, traced_pulloff
+from vibroadhesion.numerics.progress import Heartbeat
 
 GEOMETRY = {"radius": RADIUS, "reduced_modulus": REDUCED_MODULUS}
 PUBLISHED = GentSchultzParameters(W0, N_PUBLISHED, V0)  # Fig. 4 caption
@@ -65,9 +67,15 @@ def test_envelope_derivative_equals_central_differences_of_whole_families(freque
 
 def test_rows_at_a_single_frequency_fit_w0_and_n_and_say_v0_is_not_identifiable() -> None:
     """Rows simulated at 200 Hz, h1 = 20, 40, 60 um with the published parameters: w0 and n recovered to 1e-6
-    (the search stops at 1e-8 in ln theta; the rows carry the pull-off's 1e-8 error), v0 kept and named."""
+    (the search stops at 1e-8 in ln theta; the rows carry the pull-off's 1e-8 error), v0 kept and named. Every
+    traced family beats the progress line (interval 0 here: every beat prints)."""
     rows = _rows(PUBLISHED, [200.0], [20.0, 40.0, 60.0])
-    summary = fit_gent_schultz(rows, "simulation", PUBLISHED, **GEOMETRY)
+    log = io.StringIO()
+    summary = fit_gent_schultz(rows, "simulation", PUBLISHED, **GEOMETRY,
+                               progress=Heartbeat("fit simulation", 0.0, stream=log))
+    lines = log.getvalue().splitlines()
+    assert len(lines) == summary["families_traced"] and lines[0].startswith("fit simulation: ")
+    assert "1/3 (f, h1) pairs traced at GentSchultzParameters(" in lines[0]
     assert summary["status"] == "fitted" and summary["free_parameters"] == ["w0", "n"]
     assert summary["v0_identifiable"] is False
     assert summary["v0_note"] == "v0 not identifiable: the rows span 1 frequency (at least 2 needed)"

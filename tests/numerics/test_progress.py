@@ -1,10 +1,10 @@
-"""The log progress bar: bar length, counts and steady-state total after each item."""
+"""Log progress: the bar (length, counts and steady-state total after each item) and the heartbeat."""
 
 import io
 
 import pytest
 
-from vibroadhesion.numerics.progress import BAR_WIDTH, ProgressBar
+from vibroadhesion.numerics.progress import BAR_WIDTH, Heartbeat, ProgressBar
 
 
 def test_bar_fills_in_proportion_and_sums_steady_states() -> None:
@@ -21,3 +21,12 @@ def test_bar_fills_in_proportion_and_sums_steady_states() -> None:
 def test_empty_bar_is_an_error() -> None:
     with pytest.raises(ValueError, match="at least one item"):
         ProgressBar(0, "points")
+
+
+def test_heartbeat_prints_only_after_its_interval_with_the_time_so_far() -> None:
+    out = io.StringIO()
+    times = iter([100.0, 103.0, 111.0, 115.0, 121.5])  # start, then one reading per beat
+    beat = Heartbeat("fit simulation", interval=10.0, stream=out, clock=lambda: next(times))
+    for note in ("a", "b", "c", "d"):
+        beat.beat(note)
+    assert out.getvalue().splitlines() == ["fit simulation: 11 s  b", "fit simulation: 22 s  d"]

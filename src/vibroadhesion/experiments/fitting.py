@@ -47,6 +47,7 @@ from scipy.optimize import least_squares
 from vibroadhesion.core import levels
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
+from vibroadhesion.numerics.progress import Heartbeat
 from vibroadhesion.numerics.roots import NoRootError
 
 UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
@@ -86,25 +87,34 @@ def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: n
 
 
 def _residual_function(
-    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
+    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float],
+    progress: Heartbeat | None = None,
 ) -> tuple[ResidualFunction, ParameterMap]:
-    """Relative residuals P_model/P_observed - 1 of the rows as a function of ln(free), and the parameter map."""
+    """Relative residuals P_model/P_observed - 1 of the rows as a function of ln(free), and the parameter map.
+
+    Each evaluation beats ``progress`` with its rms relative residual and parameters.
+    """
     freq, h1, observed = (rows[c].to_numpy(float) for c in ("frequency_hz", "h1_um", "pulloff_mN"))
 
     def params_of(log_values: np.ndarray) -> GentSchultzParameters:
         return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values, strict=True)})
 
     def residuals(log_values: np.ndarray) -> np.ndarray:
-        return _model_mN(model, params_of(log_values), freq, h1, geometry) / observed - 1.0
+        params = params_of(log_values)
+        relative = _model_mN(model, params, freq, h1, geometry) / observed - 1.0
+        if progress is not None:
+            progress.beat(f"rms relative residual {math.sqrt(np.mean(relative**2)):.4g} at {params}")
+        return relative
 
     return residuals, params_of
 
 
 def _least_squares(
-    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float]
+    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float],
+    progress: Heartbeat | None = None,
 ) -> dict[str, Any]:
     """Least squares in ln(free) with bounds (trust-region reflective); the fit record of ``fit_gent_schultz``."""
-    residuals, params_of = _residual_function(rows, model, base, free, geometry)
+    residuals, params_of = _residual_function(rows, model, base, free, geometry, progress)
     lo, hi = np.log([BOUNDS[name] for name in free]).T
     x0 = np.clip(np.log([getattr(base, name) for name in free]), lo, hi)
     try:
@@ -163,8 +173,12 @@ def fit_gent_schultz(
     reduced_modulus: float,
     max_relative_se_v0: float = 0.5,
     noise_floor: float = 1e-3,
+    progress: Heartbeat | None = None,
 ) -> dict[str, Any]:
-    """Fit one model level to the rows; return a JSON-ready summary (see module docstring)."""
+    """Fit one model level to the rows; return a JSON-ready summary (see module docstring).
+
+    A long search says where it is through ``progress`` (the pipeline's fit writes it to the rule's log).
+    """
     if model not in levels.names("fit"):
         raise ValueError(f"unknown model {model!r}; expected one of {levels.names('fit')}")
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
@@ -186,9 +200,9 @@ def fit_gent_schultz(
             from vibroadhesion.experiments.simulation_fit import fit_simulation  # imports this module: no cycle
 
             return summary | fit_simulation(rows, published, **geometry, max_relative_se_v0=max_relative_se_v0,
-                                            noise_floor=noise_floor)
+                                            noise_floor=noise_floor, progress=progress)
         return summary | _fit_and_summarise(rows, model, published, geometry, v0_note, max_relative_se_v0,
-                                            noise_floor)
+                                            noise_floor, progress)
     except FitError as exc:
         return summary | _unfitted(published, "failed", f"{exc}: published values kept", v0_note)
 
@@ -200,14 +214,15 @@ def _unfitted(published: GentSchultzParameters, status: str, note: str, v0_note:
 
 
 def _fit_and_summarise(rows: pd.DataFrame, model: str, published: GentSchultzParameters, geometry: dict[str, float],
-                       v0_note: str, max_relative_se_v0: float, noise_floor: float) -> dict[str, Any]:
+                       v0_note: str, max_relative_se_v0: float, noise_floor: float,
+                       progress: Heartbeat | None) -> dict[str, Any]:
     """Fit (w0, n), then v0 as well where it is identifiable; the summary (:func:`_fitted_summary`)."""
     free: tuple[str, ...] = ("w0", "n")
-    fit = _least_squares(rows, model, published, free, geometry)
+    fit = _least_squares(rows, model, published, free, geometry, progress)
     if not v0_note:
         identifiable, v0_note = _v0_identifiability(rows, model, fit, geometry, max_relative_se_v0, noise_floor)
         if identifiable:
-            with_v0 = _least_squares(rows, model, fit["params"], ("w0", "n", "v0"), geometry)
+            with_v0 = _least_squares(rows, model, fit["params"], ("w0", "n", "v0"), geometry, progress)
             if "v0" in with_v0["at_bound"]:
                 v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
             else:

@@ -61,6 +61,7 @@ from vibroadhesion.experiments.fitting import (
 )
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
+from vibroadhesion.numerics.progress import Heartbeat
 
 #: Step h in ln theta of the envelope derivative (module docstring: O(h^2) + 1e-10/h, ~1e-6 relative).
 ENVELOPE_STEP = 1e-3
@@ -149,6 +150,7 @@ class _Families:
     last: tuple[list[str], np.ndarray, list[Extremum | None]] = ([], np.empty(0), [])
     derivatives: dict[str, np.ndarray] = field(default_factory=dict)
     families: int = 0
+    progress: Heartbeat | None = None
 
     def evaluate(self, params: GentSchultzParameters) -> tuple[list[str], np.ndarray, list[Extremum | None]]:
         """Status, pull-off in mN (NaN without one) and most tensile orbit of every pair at ``params``."""
@@ -169,6 +171,9 @@ class _Families:
             start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, _start_state(warm[1]))
             record, at = traced_pulloff(problem, warm=start, iterations=WARM_ITERATIONS)
             self.families += 1
+            if self.progress is not None:
+                self.progress.beat(f"{i + 1}/{len(self.pairs)} (f, h1) pairs traced at {params}, {self.families} "
+                                   "families so far")
             statuses.append(str(record.status))
             extrema.append(at)
             if at is not None:
@@ -283,15 +288,16 @@ def _v0_relative_se(rows: pd.DataFrame, fit: dict[str, Any], families: _Families
 
 
 def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radius: float, reduced_modulus: float,
-                   max_relative_se_v0: float, noise_floor: float) -> dict[str, Any]:
+                   max_relative_se_v0: float, noise_floor: float, progress: Heartbeat | None = None) -> dict[str, Any]:
     """The fitted part of ``fitting.fit_gent_schultz``'s summary for the level ``simulation`` (module docstring).
 
     w0 and n are fitted from ``published``; v0 too when the rows span two frequencies and its relative
     standard error at the (w0, n) fit is below ``max_relative_se_v0`` (residual scale floored at
     ``noise_floor``). Adds ``row_status`` (status and model force per row at the fit) and ``families_traced``.
+    Each traced family beats ``progress``.
     """
     pairs = sorted(set(_pair_keys(rows)))
-    families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus})
+    families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus}, progress=progress)
     free: tuple[str, ...] = ("w0", "n")
     fit = _least_squares(rows, published, free, families)
     v0_note = _v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))

@@ -7,6 +7,7 @@ from pathlib import Path
 from vibroadhesion.core.levels import names
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.numerics.progress import Heartbeat
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.artefacts import write_json
 
@@ -16,13 +17,15 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
 
     No rows: the published parameters pass through. ``figures_use`` names the fit the figures take their parameters
     from; the summary's status is that fit's (``fitted``, ``at_bound``, ``not_identifiable``, ``failed``: then the
-    figures show the published values). A level that fails does not stop the others.
+    figures show the published values). A level that fails does not stop the others. A long search prints a
+    heartbeat line to the log at most every 10 s (:class:`~vibroadhesion.numerics.progress.Heartbeat`).
     """
     setup = data.read_canonical_setup(setup_json)
     rows = data.read_canonical_pulloff(pulloff_csv)
     published = GentSchultzParameters(setup.w0, setup.n, setup.v0)
     geometry = {"radius": setup.radius, "reduced_modulus": setup.reduced_modulus}
-    fits = {model: fit_gent_schultz(rows, model, published, **geometry) for model in names("fit")}
+    fits = {model: fit_gent_schultz(rows, model, published, **geometry, progress=Heartbeat(f"fit {model}"))
+            for model in names("fit")}
     summary = {
         "data_rows": len(rows),
         "status": ("published parameters passed through (no measured rows)" if rows.empty
