@@ -16,6 +16,9 @@ min_version("9.0")
 configfile: "workflow/config.yaml"
 
 
+report: "workflow/report/workflow.rst"
+
+
 validate(config, "workflow/schemas/config.schema.yaml")
 # Any fitted level of the registry (vibroadhesion.core.levels) may supply the figures' parameters.
 if config["fit"]["figures_use"] not in names("fit"):

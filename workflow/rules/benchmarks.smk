@@ -42,7 +42,9 @@ rule benchmark_speed_vs_error:
     output:
         csv="results/benchmarks/speed_vs_error.csv",
         txt="results/benchmarks/speed_vs_error.txt",
-        png="results/benchmarks/speed_vs_error.png",
+        png=report(
+            "results/benchmarks/speed_vs_error.png", caption="../report/speed_vs_error.rst", category="Benchmarks"
+        ),
         pdf="results/benchmarks/speed_vs_error.pdf",
     log:
         "results/logs/benchmark_speed_vs_error.log",

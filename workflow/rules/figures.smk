@@ -8,7 +8,7 @@ rule fig3_data:
         **PUBLISHED,
         code=code("fig3_data"),
     output:
-        "results/fig3/fig3.csv",
+        report("results/fig3/fig3.csv", caption="../report/table.rst", category="Figures", subcategory="Tables"),
     log:
         "results/logs/fig3_data.log",
     benchmark:
@@ -28,7 +28,7 @@ rule fig4_data:
         **FITTED,
         code=code("fig4_data"),
     output:
-        "results/fig4/fig4.csv",
+        report("results/fig4/fig4.csv", caption="../report/table.rst", category="Figures", subcategory="Tables"),
     log:
         "results/logs/fig4_data.log",
     benchmark:
@@ -49,7 +49,7 @@ rule fig5_data:
         **PUBLISHED,
         code=code("fig5_data"),
     output:
-        csv="results/fig5/fig5.csv",
+        csv=report("results/fig5/fig5.csv", caption="../report/table.rst", category="Figures", subcategory="Tables"),
         markers="results/fig5/fig5_markers.csv",
         counts="results/fig5/fig5_solution_count.csv",
     log:
@@ -74,7 +74,7 @@ rule fig6_data:
         **PUBLISHED,
         code=code("fig6_data"),
     output:
-        "results/fig6/fig6.csv",
+        report("results/fig6/fig6.csv", caption="../report/table.rst", category="Figures", subcategory="Tables"),
     log:
         "results/logs/fig6_data.log",
     benchmark:
@@ -93,7 +93,7 @@ rule fig7_data:
         **FITTED,
         code=code("fig7_data"),
     output:
-        "results/fig7/fig7.csv",
+        report("results/fig7/fig7.csv", caption="../report/table.rst", category="Figures", subcategory="Tables"),
     log:
         "results/logs/fig7_data.log",
     benchmark:
@@ -113,7 +113,7 @@ rule fig8_data:
         fig6=rules.fig6_data.output[0],
         code=code("fig8_data"),
     output:
-        "results/fig8/fig8.csv",
+        report("results/fig8/fig8.csv", caption="../report/table.rst", category="Figures", subcategory="Tables"),
     log:
         "results/logs/fig8_data.log",
     benchmark:

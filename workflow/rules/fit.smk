@@ -5,7 +5,7 @@ rule fit_gent_schultz:
         pulloff=rules.ingest_pulloff.output[0],
         code=code("fit_gent_schultz"),
     output:
-        "results/fit/gent_schultz.json",
+        report("results/fit/gent_schultz.json", caption="../report/fit.rst", category="Fit"),
     log:
         "results/logs/fit_gent_schultz.log",
     benchmark:

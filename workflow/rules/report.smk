@@ -93,8 +93,15 @@ for job, (index, pages) in REPORT_JOBS.items():
             **report_inputs(pages),
         output:
             notebooks=[f"results/report/notebooks/{stem}.ipynb" for stem in pages],
-            pages=[f"results/report/{stem}.html" for stem in pages],
-            index=[f"results/report/{index}.html"] if index else [],
+            pages=[
+                report(f"results/report/{stem}.html", caption="../report/page.rst", category="Report pages")
+                for stem in pages
+            ],
+            index=(
+                [report(f"results/report/{index}.html", caption="../report/page.rst", category="Report pages")]
+                if index
+                else []
+            ),
         log:
             f"results/logs/{job}.log",
         localrule: True

@@ -60,7 +60,9 @@ rule validation_compliant_plot:
         code=code("validation_compliant_plot"),
     output:
         pdf="results/validation/compliant_sweep.pdf",
-        png=report("results/validation/compliant_sweep.png", caption="../report/validation.rst", category="Validation"),
+        png=report(
+            "results/validation/compliant_sweep.png", caption="../report/compliant_sweep.rst", category="Validation"
+        ),
     log:
         "results/logs/validation_compliant_plot.log",
     script:
