@@ -6,9 +6,9 @@ BASE is a checkout of the main before issue 13 (e.g. 2d16d49) with its own ``.ve
 new one. Both need ``results/data/setup.json`` and ``results/fit/gent_schultz.json`` (``snakemake -c2
 results/fit/gent_schultz.json``; the published parameters when data/pulloff.csv has no rows). Each job's
 step function runs in a fresh process of its checkout's interpreter, as Snakemake runs it: old, the 6
-``pulloff_sensitivity`` jobs (w0, n, v0 scaled by e^(+-0.05), 15 families each); new, one
-``pulloff_sensitivity`` job per test frequency (the rows of sensitivity.csv), and apart, the jobs of the
-design's other candidate frequencies (workflow/config.yaml, ``frequencies_per_job`` in each). A job's
+``pulloff_sensitivity`` jobs (w0, n, v0 scaled by e^(+-0.05), 15 families each); new, the
+``pulloff_sensitivity`` jobs of the rig's test frequencies (the rows of sensitivity.csv), and apart, those of
+the design's other candidate frequencies (workflow/config.yaml, ``frequencies_per_job`` in each). A job's
 wall and CPU seconds are measured inside its process, from before the package import to the step's
 return (the interpreter's own start, ~0.05 s, and Snakemake's are not counted). Old and new alternate
 within each repeat; min and median over the repeats of each side's total, and their ratios.
@@ -61,11 +61,11 @@ def jobs(base: Path) -> dict[str, list[tuple[Path, str, str, list[str]]]]:
     rig = [f"{float(f):g}" for f in setup["test_conditions"]["frequencies"]["value"]]
     extra = sorted({f"{float(f):g}" for f in config["frequencies_hz"]} - set(rig), key=float)
     per_job = config["frequencies_per_job"]
-    chunks = ["_".join(extra[i:i + per_job]) for i in range(0, len(extra), per_job)]
+    rig_jobs, extra_jobs = (["_".join(f[i:i + per_job]) for i in range(0, len(f), per_job)] for f in (rig, extra))
     amplitudes = [json.dumps(config["amplitudes_um"])]
     return {"old": [(base, "old", f"{p}_{s}", []) for p in ("w0", "n", "v0") for s in ("plus", "minus")],
-            "new sensitivity": [(NEW, "new", f, amplitudes) for f in rig],
-            "new design-only": [(NEW, "new", f, amplitudes) for f in chunks]}
+            "new sensitivity": [(NEW, "new", f, amplitudes) for f in rig_jobs],
+            "new design-only": [(NEW, "new", f, amplitudes) for f in extra_jobs]}
 
 
 def measure(base: Path, repeats: int) -> dict[str, dict[str, list[float]]]:

@@ -8,11 +8,12 @@ from vibroadhesion.core.levels import names
 # The fitted model levels, one job each, in the registry's order (the row order of fits.csv).
 FITTED_LEVELS = names("fit")
 DESIGN = config["identifiability"]["design"]
-# The sensitivity jobs: one per test frequency of the rig (the rows of sensitivity.csv), then the design's other
-# candidate frequencies, frequencies_per_job in each (wildcard "1_3_10": the frequencies in Hz joined by "_").
+# The sensitivity jobs: the rig's test frequencies (the rows of sensitivity.csv), then the design's other candidate
+# frequencies, frequencies_per_job in each (wildcard "200_300_400": the frequencies in Hz joined by "_").
 _EXTRA = sorted({f"{float(f):g}" for f in DESIGN["frequencies_hz"]} - set(FREQUENCIES), key=float)
 _PER_JOB = DESIGN["frequencies_per_job"]
-SENSITIVITY_JOBS = FREQUENCIES + ["_".join(_EXTRA[i : i + _PER_JOB]) for i in range(0, len(_EXTRA), _PER_JOB)]
+RIG_SENSITIVITY_JOBS = ["_".join(FREQUENCIES[i : i + _PER_JOB]) for i in range(0, len(FREQUENCIES), _PER_JOB)]
+SENSITIVITY_JOBS = RIG_SENSITIVITY_JOBS + ["_".join(_EXTRA[i : i + _PER_JOB]) for i in range(0, len(_EXTRA), _PER_JOB)]
 
 
 rule pulloff_sensitivity:
@@ -58,7 +59,7 @@ rule identifiability:
     """Sensitivity of the simulated pull-off, Cramer-Rao standard errors per design and noise, fits of every level."""
     input:
         virtual=VIRTUAL_RIGID,
-        sensitivity=expand(rules.pulloff_sensitivity.output[0], frequency=FREQUENCIES),
+        sensitivity=expand(rules.pulloff_sensitivity.output[0], frequency=RIG_SENSITIVITY_JOBS),
         fits=expand(rules.identifiability_fit.output[0], model=FITTED_LEVELS),
         code=code("identifiability"),
     output:
