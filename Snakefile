@@ -69,6 +69,7 @@ rule validation:
         rules.virtual_pulloff_gather.output,
         rules.identifiability.output.fits,
         rules.identifiability.output.information,
+        rules.identifiability_design.output.design,
         rules.benchmark_speed_vs_error.output.csv,
         rules.report_validation_index.output.index,
 

@@ -35,6 +35,7 @@ import pytest
 from conftest import FREQUENCIES_HZ, RADIUS, ROOT, V0
 
 from vibroadhesion.experiments.fitting import fit_gent_schultz
+from vibroadhesion.experiments.identifiability import IDENTIFIABLE_RELATIVE_SE
 
 ARTEFACTS = {
     "rigid_grid": "simulation/rigid_grid.csv",
@@ -45,6 +46,8 @@ ARTEFACTS = {
     "information": "validation/identifiability/information.csv",
     "sensitivity": "validation/identifiability/sensitivity.csv",
     "sensitivity_runs": "validation/identifiability/sensitivity",
+    "design": "validation/identifiability/design.csv",
+    "candidates": "validation/identifiability/candidates.csv",
     "j_integrals": "benchmarks/j_integrals.csv",
     "simulate": "benchmarks/simulate.txt",
     "speed_vs_error": "benchmarks/speed_vs_error.csv",
@@ -344,14 +347,14 @@ def test_identifiability_table_status(pipeline_results: Path) -> None:
 
 def test_cramer_rao_errors_of_w0_and_v0_and_the_correlation(pipeline_results: Path) -> None:
     row = cramer_rao(pipeline_results, "virtual experiment")
-    check("at {1} % measurement scatter the Cramér–Rao standard errors are w0 {3.9} %, n 9.0 %, v0 {83} % "
+    check("at {1} % measurement scatter the Cramér–Rao standard errors are w0 {4.0} %, n 9.1 %, v0 {82} % "
           "(n and v0 correlated at {0.997};",
           [100 * row["relative_noise"], 100 * row["w0_relative_se"], 100 * row["v0_relative_se"], row["corr_n_v0"]])
 
 
 def test_cramer_rao_error_of_n(pipeline_results: Path) -> None:
     row = cramer_rao(pipeline_results, "virtual experiment")
-    check("the Cramér–Rao standard errors are w0 3.9 %, n {9.0} %, v0 83 %", [100 * row["n_relative_se"]])
+    check("the Cramér–Rao standard errors are w0 4.0 %, n {9.1} %, v0 82 %", [100 * row["n_relative_se"]])
 
 
 def test_frequency_dependence_of_the_simulated_pulloff(pipeline_results: Path) -> None:
@@ -377,10 +380,36 @@ def test_v0_sensitivity_against_the_frequency_derivative(pipeline_results: Path)
 
 def test_recommended_level_and_the_static_test(pipeline_results: Path) -> None:
     with_static = cramer_rao(pipeline_results, "virtual experiment + static JKR pull-off")
-    check("only `exact_averaging`'s w0 is close (bias {+0.9} %, inside the {3.9} % the scatter allows)",
+    check("only `exact_averaging`'s w0 is close (bias {+0.9} %, inside the {4.0} % the scatter allows)",
           [100 * fit_row(pipeline_results, "exact_averaging")["w0_relative_bias"],
            100 * cramer_rao(pipeline_results, "virtual experiment")["w0_relative_se"]])
     check("One static (h1 = 0) JKR pull-off test would pin w0 to {1.0} %", [100 * with_static["w0_relative_se"]])
+
+
+def test_design_table(pipeline_results: Path) -> None:
+    """The README's table of the D-optimal added tests: its rows are design.csv's, in its order."""
+    design = read(pipeline_results, "design")
+    rows = [("none (the rig's 15)", "current"), ("10 Hz, h1 = 80 um", "current + 1 test"),
+            ("10 Hz, 80 um; 30 Hz, 120 um", "current + 2 tests"),
+            ("10 Hz, 80 um; 30 Hz, 120 um; static JKR", "current + 3 tests")]
+    added = {"current + 1 test": "10 Hz, h1 = 80 um", "current + 2 tests": "10 Hz, h1 = 80 um; 30 Hz, h1 = 120 um",
+             "current + 3 tests": "10 Hz, h1 = 80 um; 30 Hz, h1 = 120 um; static JKR test (h1 = 0)"}
+    assert design.set_index("design")["added"].dropna().to_dict() == added
+    for label, name in rows:
+        se = design[design["design"] == name].set_index("relative_noise")
+        printed = {"current": "{4.0} / {20} % | {9.1} / {45} % | {82} / {409} %",
+                   "current + 1 test": "{2.5} / {13} % | {2.3} / {11} % | {17} / {85} %",
+                   "current + 2 tests": "{2.5} / {13} % | {0.43} / {2.2} % | {6.6} / {33} %",
+                   "current + 3 tests": "{0.93} / {4.6} % | {0.42} / {2.1} % | {3.7} / {19} %"}[name]
+        check(f"| {label} | {printed} |", [100 * se.loc[noise, f"{p}_relative_se"]
+                                            for p in ("w0", "n", "v0") for noise in (0.01, 0.05)])
+    check("So v0 becomes identifiable (relative standard error below {50} %) with one added test at 10 Hz at 1 % "
+          "scatter, and with two, at 10 and 30 Hz, at 5 %", [100 * IDENTIFIABLE_RELATIVE_SE])
+    assert design.query("relative_noise == 0.01")["v0_identifiable"].tolist() == [False, True, True, True]
+    assert design.query("relative_noise == 0.05")["v0_identifiable"].tolist() == [False, False, True, True]
+    lost = read(pipeline_results, "candidates").query("status == 'contact_loss_before_extremum'")
+    first = lost.groupby("frequency_hz")["h1_um"].min()
+    check("(1 Hz from h1 = {40} um, 3 Hz from {60} um, 10 Hz from {100} um;", [first[1.0], first[3.0], first[10.0]])
 
 
 # ----------------------------------------------------------------- Performance: the numbers that are not timings
@@ -394,10 +423,13 @@ def test_steady_states_per_amplitude(pipeline_results: Path) -> None:
 
 
 def test_simulated_orbits_and_pulloffs_per_job(pipeline_results: Path) -> None:
-    runs = sorted((pipeline_results / ARTEFACTS["sensitivity_runs"]).glob("*.csv"))
-    assert len(runs) == 6  # w0, n, v0, each scaled up and down
+    runs = [pd.read_csv(run) for run in (pipeline_results / ARTEFACTS["sensitivity_runs"]).glob("*.csv")]
+    rig = [set(run["frequency_hz"]) <= set(FREQUENCIES_HZ) for run in runs]
     check("({82} simulated orbits)", [len(sweep_simulation(pipeline_results))])
-    check("({15} simulated pull-offs each)", [[len(pd.read_csv(run)) for run in runs]])
+    check("one job for the rig's test frequencies ({18} simulated pull-offs and their envelope derivatives",
+          [[len(run) for run, ours in zip(runs, rig, strict=True) if ours]])
+    check("one job of {36} for the design's other candidate frequencies",
+          [[len(run) for run, ours in zip(runs, rig, strict=True) if not ours]])
 
 
 def test_j_integral_accuracy(pipeline_results: Path) -> None:

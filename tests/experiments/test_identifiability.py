@@ -10,6 +10,7 @@ implies; the simulation's frequency dependence for the v0 column.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -33,25 +34,6 @@ def _simulated(params: GentSchultzParameters, frequencies, h1_um) -> pd.DataFram
     return rows.assign(line=np.arange(len(rows)))
 
 
-def test_log_sensitivity_of_a_power_law_is_its_exponents() -> None:
-    """P = w0^0.3 n^1.7 v0^-0.2 (times a per-row constant): ln P is linear in ln theta, so central
-    differences are exact: 1e-12.
-    """
-    exponents = {"w0": 0.3, "n": 1.7, "v0": -0.2}
-    key = pd.DataFrame({"frequency_hz": [200.0, 400.0], "h1_um": [20.0, 100.0], "status": "pulloff"})
-    constant = np.array([150.0, 1400.0])
-
-    def rows(params: GentSchultzParameters) -> pd.DataFrame:
-        force = constant * math.prod(getattr(params, k) ** e for k, e in exponents.items())
-        return key.assign(pulloff_mN=force)
-
-    plus = {k: rows(identifiability.perturbed(PUBLISHED, k, 1)) for k in exponents}
-    minus = {k: rows(identifiability.perturbed(PUBLISHED, k, -1)) for k in exponents}
-    table = identifiability.log_sensitivity(rows(PUBLISHED), plus, minus)
-    for k, e in exponents.items():
-        assert np.allclose(table[f"dlnP_dln{k}"], e, rtol=0, atol=1e-12)
-
-
 def test_cramer_rao_errors_of_explicit_designs() -> None:
     """S = diag(1, 2, 4): standard errors sigma (1, 1/2, 1/4), no correlation; with the static JKR
     row (1, 0, 0) appended, the w0 error drops to sigma/sqrt(2). Exact to 1e-14.
@@ -66,25 +48,57 @@ def test_cramer_rao_errors_of_explicit_designs() -> None:
     assert static["v0_relative_se"] == pytest.approx(0.0025, rel=1e-14)
 
 
-def test_failed_sensitivity_run_is_an_error_not_a_number() -> None:
-    key = pd.DataFrame({"frequency_hz": [200.0], "h1_um": [100.0], "pulloff_mN": [1.0], "status": ["pulloff"]})
-    lost = key.assign(status="contact_loss_before_extremum", pulloff_mN=math.nan)
-    runs = {k: key for k in identifiability.PARAMETERS}
-    with pytest.raises(ValueError, match=r"run n\+: no simulated pull-off at 200 Hz, h1 = 100 um"):
-        identifiability.log_sensitivity(key, {**runs, "n": lost}, runs)
+def _family_difference(name: str, frequency_hz: float, h1_um: float, step: float) -> float:
+    """d ln P / d ln ``name`` by central differences of the virtual pull-off re-traced at ``name`` e^(+-step)."""
+    forces = []
+    for sign in (1, -1):
+        shifted = replace(PUBLISHED, **{name: getattr(PUBLISHED, name) * math.exp(sign * step)})
+        table = identifiability.envelope_sensitivity(shifted, frequency_hz, [h1_um], **GEOMETRY)
+        forces.append(float(table["pulloff_mN"].iloc[0]))
+    return math.log(forces[0] / forces[1]) / (2 * step)
+
+
+@pytest.mark.parametrize("frequency_hz, h1_um", [(200.0, 100.0), (30.0, 60.0)])
+def test_envelope_sensitivity_equals_central_differences_of_re_traced_families(frequency_hz: float,
+                                                                               h1_um: float) -> None:
+    """The sensitivity rows (envelope theorem at the detachment point) against central differences of whole
+    families re-traced with each parameter scaled by e^(+-h), h = 0.02 and 0.01 (the old rule's way, smaller steps).
+    A central difference errs by c h^2 + O(h^4), so D(h/2) errs by about |D(h) - D(h/2)|/3 (Richardson); the
+    families' pull-offs carry ~1e-8 relative error (2e-8/2h = 1e-6 at h/2), the envelope derivative O(1e-5)
+    (:mod:`vibroadhesion.experiments.simulation_fit`). Tolerance: twice the Richardson estimate + 2e-5.
+    """
+    table = identifiability.envelope_sensitivity(PUBLISHED, frequency_hz, [h1_um], **GEOMETRY)
+    assert table["status"].tolist() == ["pulloff"]
+    for name in identifiability.PARAMETERS:
+        coarse, fine = (_family_difference(name, frequency_hz, h1_um, h) for h in (0.02, 0.01))
+        tolerance = 2 * abs(coarse - fine) / 3 + 2e-5
+        assert abs(table[f"dlnP_dln{name}"].iloc[0] - fine) < tolerance, (name, table, coarse, fine)
+
+
+def test_a_row_whose_family_loses_contact_keeps_its_status_and_has_no_derivative() -> None:
+    """1 Hz (omega_check = 7.3e3), h1 = 60 um: the family loses contact before a tensile extremum; 20 um has a
+    pull-off. The lost row has its status, no force and no derivative (NaN), and the Cramer-Rao table leaves it out."""
+    table = identifiability.envelope_sensitivity(PUBLISHED, 1.0, [20.0, 60.0], **GEOMETRY)
+    assert table["status"].tolist() == ["pulloff", "contact_loss_before_extremum"]
+    lost = table.iloc[1]
+    assert math.isnan(lost["pulloff_mN"]) and all(math.isnan(lost[f"dlnP_dln{n}"]) for n in identifiability.PARAMETERS)
+    assert np.isfinite(table.iloc[0][[f"dlnP_dln{n}" for n in identifiability.PARAMETERS]].to_numpy(float)).all()
+    explicit = pd.DataFrame({"dlnP_dlnw0": [1.0, 0, 0], "dlnP_dlnn": [0, 2.0, 0], "dlnP_dlnv0": [0, 0, 4.0]})
+    with_lost = identifiability.information_table(pd.concat([explicit, table.iloc[[1]]]), [0.01])
+    assert with_lost["rows"].tolist() == [3, 4]  # the lost row is left out, the static row added
+    assert with_lost["v0_relative_se"].iloc[0] == pytest.approx(0.0025, rel=1e-14)
+    alone = identifiability.information_table(table, [0.01]).iloc[0]  # one row cannot determine three parameters
+    assert alone["rows"] == 1 and math.isinf(alone["v0_relative_se"]) and not alone["v0_identifiable"]
 
 
 def test_simulated_v0_sensitivity_equals_minus_the_frequency_derivative() -> None:
-    """h1 = 80, 100 um: d ln P/d ln v0 by central differences of the simulation at 300 Hz against
-    -d ln P/d ln omega from the parabola through the simulated 200/300/400 Hz rows (v0 enters only via
-    omega R/v0). Both are O(h^2) / interpolation estimates of the same derivative: 5 %.
+    """h1 = 80, 100 um: d ln P/d ln v0 by the envelope theorem at 300 Hz against -d ln P/d ln omega from the
+    parabola through the simulated 200/300/400 Hz rows (v0 enters only via omega R/v0). The parabola's
+    interpolation error dominates: 5 %.
     """
     h1 = [80.0, 100.0]
     base = _simulated(PUBLISHED, FREQUENCIES_HZ, h1)
-    at_300 = base[base["frequency_hz"] == 300.0]
-    plus = {k: at_300 for k in ("w0", "n")} | {"v0": _simulated(identifiability.perturbed(PUBLISHED, "v0", 1), [300.0], h1)}
-    minus = {k: at_300 for k in ("w0", "n")} | {"v0": _simulated(identifiability.perturbed(PUBLISHED, "v0", -1), [300.0], h1)}
-    sensitivity = identifiability.log_sensitivity(at_300, plus, minus)
+    sensitivity = identifiability.envelope_sensitivity(PUBLISHED, 300.0, h1, **GEOMETRY)
     reference = identifiability.frequency_derivative(base, at_hz=300.0)
     assert np.all(reference["minus_dlnP_dlnomega"] < -0.05)  # a real frequency effect at these amplitudes
     assert np.allclose(sensitivity["dlnP_dlnv0"], reference["minus_dlnP_dlnomega"], rtol=0.05)

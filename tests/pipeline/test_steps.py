@@ -1,7 +1,9 @@
-"""Pipeline steps on their own: a rig other than the paper's (issue 13, item 7), the kernel step.
+"""Pipeline steps on their own: a rig other than the paper's (issue 13, item 7), the kernel step, the sensitivity and
+design steps.
 
 The steps run as the rules run them (ingest, fit, tables, plot) on a setup with test frequencies 150/250 Hz and
-amplitudes 25.5, 50 and 150 um, off Fig. 4's 1 um grid and beyond its 120 um; no simulated rows.
+amplitudes 25.5, 50 and 150 um, off Fig. 4's 1 um grid and beyond its 120 um; no simulated rows. The sensitivity
+and design steps run on the paper's rig at one test frequency, against its virtual pull-off job.
 """
 
 from __future__ import annotations
@@ -10,12 +12,16 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+import pytest
 
 from vibroadhesion.pipeline.data import ingest
+from vibroadhesion.pipeline.steps.design import experiment_design
 from vibroadhesion.pipeline.steps.fig4 import fig4_data
 from vibroadhesion.pipeline.steps.fit import fit
 from vibroadhesion.pipeline.steps.plots import fig7_plot
+from vibroadhesion.pipeline.steps.identifiability import rig_sensitivity, sensitivity_part
 from vibroadhesion.pipeline.steps.rigid import fig7_data
+from vibroadhesion.pipeline.steps.simulation import virtual_pulloff_part
 
 ROOT = Path(__file__).resolve().parents[2]
 AMPLITUDES = [25.5, 50.0, 150.0]
@@ -65,3 +71,32 @@ def test_kernel_step_records_the_same_bytes_every_run(tmp_path: Path) -> None:
         texts.append((tmp_path / f"kernels{k}.txt").read_text(encoding="utf-8"))
     assert texts[0] == texts[1]
     assert "rigid steady state ok, compliant ok" in texts[0]
+
+
+def test_sensitivity_and_design_steps_agree_with_the_virtual_pulloff_and_refuse_a_mixed_table(tmp_path: Path) -> None:
+    """The paper's rig at 200 Hz: the sensitivity job (rig amplitudes and the candidates 0, 120 um; 0 is the static
+    test, not simulated) traces the same families as the virtual pull-off job, so its forces equal the virtual rows'
+    to rounding (1e-12); the design step writes the candidates with the static test and a design table. A virtual
+    table from other parameters (one force off by 1e-6) is refused, never mixed in."""
+    setup_json, pulloff_csv, fit_json = tmp_path / "setup.json", tmp_path / "pulloff.csv", tmp_path / "fit.json"
+    ingest(ROOT / "data/setup.yaml", ROOT / "data/pulloff.csv", setup_json, pulloff_csv)
+    fit(setup_json, pulloff_csv, fit_json, "refined")
+    part, virtual = tmp_path / "200Hz.csv", tmp_path / "virtual.csv"
+    sensitivity_part(setup_json, fit_json, part, [200.0], [0.0, 120.0])
+    virtual_pulloff_part(setup_json, fit_json, virtual, "rigid", 200.0)
+    assert pd.read_csv(part)["h1_um"].tolist() == [20.0, 40.0, 60.0, 80.0, 100.0, 120.0]
+    rows = rig_sensitivity(virtual, [part])
+    simulated = pd.read_csv(virtual).query("model == 'simulation'")
+    assert rows["h1_um"].tolist() == simulated["h1_um"].tolist()
+    assert np.allclose(rows["pulloff_mN"], simulated["pulloff_mN"], rtol=1e-12, atol=0)
+    assert np.isfinite(rows[["dlnP_dlnw0", "dlnP_dlnn", "dlnP_dlnv0"]].to_numpy(float)).all()
+    design_csv, candidates_csv = tmp_path / "design.csv", tmp_path / "candidates.csv"
+    experiment_design(virtual, [part], [0.01], [1], design_csv, candidates_csv)
+    candidates = pd.read_csv(candidates_csv)
+    assert len(candidates) == 7 and candidates["status"].iloc[-1] == "static_jkr"
+    assert pd.read_csv(design_csv)["design"].tolist() == ["current", "current + 1 test"]
+    table = pd.read_csv(virtual)
+    table.loc[table.index[table["model"] == "simulation"][2], "pulloff_mN"] *= 1 + 1e-6
+    table.to_csv(virtual, index=False)
+    with pytest.raises(ValueError, match="disagree at 200 Hz, h1 = 60 um"):
+        rig_sensitivity(virtual, [part])

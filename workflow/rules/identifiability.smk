@@ -1,29 +1,38 @@
 # Identifiability of the Gent-Schultz parameters from pull-off data, asked of the virtual
-# (simulated) pull-off experiment whose true parameters are known. Part of the `validation`
-# target. One job per perturbed simulation and per fitted model level.
+# (simulated) pull-off experiment whose true parameters are known, and which tests to add to the
+# rig's (D-optimal design). Part of the `validation` target. One job per frequency of the
+# sensitivities (the rig's test frequencies and the design's candidates) and per fitted model level.
 
 from vibroadhesion.core.levels import names
 
-SENSITIVITY_RUNS = [f"{p}_{s}" for p in ("w0", "n", "v0") for s in ("plus", "minus")]
 # The fitted model levels, one job each, in the registry's order (the row order of fits.csv).
 FITTED_LEVELS = names("fit")
+DESIGN = config["identifiability"]["design"]
+# The sensitivity jobs: the rig's test frequencies (the rows of sensitivity.csv), then the design's other candidate
+# frequencies, frequencies_per_job in each (wildcard "200_300_400": the frequencies in Hz joined by "_").
+_EXTRA = sorted({f"{float(f):g}" for f in DESIGN["frequencies_hz"]} - set(FREQUENCIES), key=float)
+_PER_JOB = DESIGN["frequencies_per_job"]
+RIG_SENSITIVITY_JOBS = ["_".join(FREQUENCIES[i : i + _PER_JOB]) for i in range(0, len(FREQUENCIES), _PER_JOB)]
+SENSITIVITY_JOBS = RIG_SENSITIVITY_JOBS + ["_".join(_EXTRA[i : i + _PER_JOB]) for i in range(0, len(_EXTRA), _PER_JOB)]
 
 
 rule pulloff_sensitivity:
-    """Simulated pull-off (rigid fixation, every test frequency and amplitude) with one parameter scaled by exp(+-h)."""
+    """Envelope sensitivities d ln P/d ln (w0, n, v0) of the simulated pull-off (rigid fixation) at the
+    frequencies of one job, every amplitude of the rig and of the design's candidates."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
         code=code("pulloff_sensitivity"),
     output:
-        "results/validation/identifiability/sensitivity/{parameter}_{sign}.csv",
+        "results/validation/identifiability/sensitivity/{frequency}Hz.csv",
     log:
-        "results/logs/pulloff_sensitivity_{parameter}_{sign}.log",
+        "results/logs/pulloff_sensitivity_{frequency}Hz.log",
     benchmark:
-        "results/benchmarks/rules/pulloff_sensitivity_{parameter}_{sign}.tsv"
+        "results/benchmarks/rules/pulloff_sensitivity_{frequency}Hz.tsv"
     wildcard_constraints:
-        parameter="w0|n|v0",
-        sign="plus|minus",
+        frequency=r"[0-9._e+-]+",
+    params:
+        amplitudes=DESIGN["amplitudes_um"],
     script:
         "../scripts/pulloff_sensitivity.py"
 
@@ -50,12 +59,7 @@ rule identifiability:
     """Sensitivity of the simulated pull-off, Cramer-Rao standard errors per design and noise, fits of every level."""
     input:
         virtual=VIRTUAL_RIGID,
-        sensitivity=expand(
-            rules.pulloff_sensitivity.output[0],
-            zip,
-            parameter=[r.split("_")[0] for r in SENSITIVITY_RUNS],
-            sign=[r.split("_")[1] for r in SENSITIVITY_RUNS],
-        ),
+        sensitivity=expand(rules.pulloff_sensitivity.output[0], frequency=RIG_SENSITIVITY_JOBS),
         fits=expand(rules.identifiability_fit.output[0], model=FITTED_LEVELS),
         code=code("identifiability"),
     output:
@@ -68,3 +72,21 @@ rule identifiability:
         noise=config["identifiability"]["relative_noise"],
     script:
         "../scripts/identifiability.py"
+
+
+rule identifiability_design:
+    """Which tests to add to the rig's: the D-optimal few among the candidates, with the expected standard errors."""
+    input:
+        virtual=VIRTUAL_RIGID,
+        sensitivity=expand(rules.pulloff_sensitivity.output[0], frequency=SENSITIVITY_JOBS),
+        code=code("identifiability_design"),
+    output:
+        design="results/validation/identifiability/design.csv",
+        candidates="results/validation/identifiability/candidates.csv",
+    log:
+        "results/logs/identifiability_design.log",
+    params:
+        noise=config["identifiability"]["relative_noise"],
+        added=DESIGN["added_tests"],
+    script:
+        "../scripts/identifiability_design.py"

@@ -51,6 +51,8 @@ PAGE_INPUTS = {
         "fits_csv": rules.identifiability.output.fits,
         "information_csv": rules.identifiability.output.information,
         "sensitivity_csv": rules.identifiability.output.sensitivity,
+        "design_csv": rules.identifiability_design.output.design,
+        "candidates_csv": rules.identifiability_design.output.candidates,
         "virtual_csv": VIRTUAL_RIGID,
         "setup_json": SETUP_JSON,
     },

@@ -10,14 +10,16 @@ No measured pull-off numbers behind Fig. 4 are published, so the question is ask
    from that level on perfect data.
 
 2. **What the data hold at all.** The local sensitivity of the simulated pull-off itself,
-   S_ij = d ln P_i / d ln theta_j (theta = w0, n, v0), by central differences of the virtual
-   experiment rerun with each parameter scaled by exp(+-h). For relative measurement scatter sigma the
-   Fisher information is S^T S / sigma^2 and the smallest attainable standard errors of ln theta are
-   the square roots of the diagonal of its inverse (Cramer-Rao). A parameter is called identifiable when
-   that relative standard error is below :data:`IDENTIFIABLE_RELATIVE_SE`, the threshold the fit uses
-   for v0. Since v0 enters only through omega_check = omega R / v0 (Eqs. 97, 105),
-   d ln P / d ln v0 = -d ln P / d ln omega: the v0 column can be checked against the frequency
-   dependence of the unperturbed rows.
+   S_ij = d ln P_i / d ln theta_j (theta = w0, n, v0), at the detachment point of each row's family by
+   the envelope theorem (:func:`envelope_sensitivity`: two warm-started orbits per parameter at the
+   fixed base offset of the pull-off, :func:`vibroadhesion.experiments.simulation_fit.envelope_log_derivatives`).
+   A row whose family ends without a pull-off keeps its status and has no derivative. For relative
+   measurement scatter sigma the Fisher information is S^T S / sigma^2 and the smallest attainable
+   standard errors of ln theta are the square roots of the diagonal of its inverse (Cramer-Rao). A
+   parameter is called identifiable when that relative standard error is below
+   :data:`IDENTIFIABLE_RELATIVE_SE`, the threshold the fit uses for v0. Since v0 enters only through
+   omega_check = omega R / v0 (Eqs. 97, 105), d ln P / d ln v0 = -d ln P / d ln omega: the v0 column
+   can be checked against the frequency dependence of the simulated rows.
 
 A static (h1 = 0) pull-off test, the JKR value P = (3 pi / 2) R w0 (Eq. 70 with w_eff = w0), adds the
 exact sensitivity row (1, 0, 0); :func:`information_table` reports the design with and without it.
@@ -26,7 +28,7 @@ exact sensitivity row (1, 0, 0); :func:`information_table` reports the design wi
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -34,28 +36,20 @@ import pandas as pd
 
 from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, jkr_mN, pulloff_problem
+from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
+from vibroadhesion.numerics.progress import ProgressBar
 
 PARAMETERS = ("w0", "n", "v0")
 
 #: Relative standard error above which a parameter is not identifiable (as ``max_relative_se_v0`` of the fit).
 IDENTIFIABLE_RELATIVE_SE = 0.5
 
-#: Step h in ln theta of the central differences (truncation error O(h^2), about 1e-3 relative here).
-LOG_STEP = 0.05
+#: Columns of the sensitivity table: the row, its status and force, and S_ij = d ln P_i / d ln theta_j.
+SENSITIVITY_COLUMNS = ["frequency_hz", "h1_um", "status", "pulloff_mN", *(f"dlnP_dln{n}" for n in PARAMETERS)]
 
 FIT_COLUMNS = ["model", "status", "w0", "w0_se", "w0_relative_bias", "n", "n_se", "n_relative_bias", "v0", "v0_se",
                "v0_relative_bias", "v0_identifiable", "rms_relative_residual", "max_relative_residual", "note"]
-
-
-def perturbed(
-    params: GentSchultzParameters, parameter: str, sign: int, step: float = LOG_STEP
-) -> GentSchultzParameters:
-    """``params`` with ``parameter`` multiplied by exp(sign * step)."""
-    if parameter not in PARAMETERS or sign not in (-1, 1):
-        raise ValueError(f"need a parameter in {PARAMETERS} and sign +-1, got {parameter!r}, {sign!r}")
-    values = {name: getattr(params, name) for name in PARAMETERS}
-    values[parameter] *= math.exp(sign * step)
-    return GentSchultzParameters(**values)
 
 
 def fit_level(rows: pd.DataFrame, model: str, truth: GentSchultzParameters, *, radius: float,
@@ -82,34 +76,40 @@ def fit_level(rows: pd.DataFrame, model: str, truth: GentSchultzParameters, *, r
     return row
 
 
-def log_sensitivity(base: pd.DataFrame, plus: Mapping[str, pd.DataFrame], minus: Mapping[str, pd.DataFrame],
-                    step: float = LOG_STEP) -> pd.DataFrame:
-    """S = d ln P / d ln theta per (frequency_hz, h1_um) row, central differences of the simulated pull-off.
+def envelope_sensitivity(params: GentSchultzParameters, frequency_hz: float, h1_um: Sequence[float], *,
+                         radius: float, reduced_modulus: float, progress: ProgressBar | None = None) -> pd.DataFrame:
+    """Rows of S = d ln P / d ln theta of the simulated pull-off at one frequency (Eqs. 4-11, 70), rigid fixation.
 
-    Every frame holds the simulated rows (columns frequency_hz, h1_um, status, pulloff_ratio,
-    pulloff_mN) of the base and the perturbed runs. A row whose base or perturbed run did not end in
-    a pull-off has no derivative: the function raises instead of dropping it silently.
+    Per amplitude: the virtual pull-off's family (:func:`~vibroadhesion.experiments.virtual_pulloff.traced_pulloff`
+    from the nominal point contact, as :func:`~vibroadhesion.experiments.virtual_pulloff.pulloff_table`), then the
+    envelope derivatives at its most tensile orbit (error O(1e-5), the module docstring of
+    :mod:`vibroadhesion.experiments.simulation_fit`). A family that ends without a pull-off keeps its status,
+    with no force and no derivative; a pull-off whose shifted orbits converge on neither side has the status
+    ``no_derivative`` and no derivative (NaN, never a number).
     """
-    key = ["frequency_hz", "h1_um"]
-    table = base[key + ["pulloff_mN"]].copy()
-    frames = [("base", base)] + [(f"{n}+", plus[n]) for n in PARAMETERS] + [(f"{n}-", minus[n]) for n in PARAMETERS]
-    for label, frame in frames:
-        failed = frame[frame["status"] != "pulloff"]
-        if len(failed):
-            f, h = failed.iloc[0][key]
-            status = failed.iloc[0]["status"]
-            raise ValueError(f"run {label}: no simulated pull-off at {f:g} Hz, h1 = {h:g} um ({status})")
-    for name in PARAMETERS:
-        up = table[key].merge(plus[name], on=key, how="left", validate="one_to_one")["pulloff_mN"].to_numpy(float)
-        down = table[key].merge(minus[name], on=key, how="left", validate="one_to_one")["pulloff_mN"].to_numpy(float)
-        table[f"dlnP_dln{name}"] = (np.log(up) - np.log(down)) / (2.0 * step)
-    return table
+    rows = []
+    for h1 in h1_um:
+        record, at = traced_pulloff(pulloff_problem(params, frequency_hz, h1, radius=radius,
+                                                    reduced_modulus=reduced_modulus))
+        row: dict[str, Any] = {"frequency_hz": frequency_hz, "h1_um": h1, "status": str(record.status),
+                               "pulloff_mN": float(record.pulloff_ratio) * jkr_mN(params.w0, radius)}
+        if at is not None:
+            derivatives = envelope_log_derivatives(params, frequency_hz, h1, at, PARAMETERS, radius=radius,
+                                                   reduced_modulus=reduced_modulus)
+            if np.all(np.isfinite(derivatives)):
+                row.update(zip(SENSITIVITY_COLUMNS[-3:], derivatives, strict=True))
+            else:
+                row["status"] = "no_derivative"
+        rows.append(row)
+        if progress is not None:
+            progress.advance(record.steady_states or 0, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {row['status']}")
+    return pd.DataFrame(rows).reindex(columns=SENSITIVITY_COLUMNS)
 
 
 def frequency_derivative(simulated: pd.DataFrame, at_hz: float) -> pd.DataFrame:
     """-d ln P / d ln omega at ``at_hz`` per amplitude, from the parabola in ln f through the simulated rows.
 
-    The independent check of the v0 column of :func:`log_sensitivity` (module docstring); needs
+    The independent check of the v0 column of :func:`envelope_sensitivity` (module docstring); needs
     three or more frequencies per amplitude (a least-squares parabola beyond three).
     """
     rows = []
@@ -124,8 +124,16 @@ def frequency_derivative(simulated: pd.DataFrame, at_hz: float) -> pd.DataFrame:
 
 
 def standard_errors(sensitivity: np.ndarray, noise: float) -> tuple[np.ndarray, np.ndarray]:
-    """Cramer-Rao standard errors of ln theta and the correlation matrix for relative scatter ``noise``."""
-    covariance = noise**2 * np.linalg.inv(sensitivity.T @ sensitivity)
+    """Cramer-Rao standard errors of ln theta and the correlation matrix for relative scatter ``noise``.
+
+    A singular S^T S (fewer usable rows than parameters, or dependent ones) determines no parameter:
+    infinite standard errors and no correlations (NaN).
+    """
+    try:
+        covariance = noise**2 * np.linalg.inv(sensitivity.T @ sensitivity)
+    except np.linalg.LinAlgError:
+        size = sensitivity.shape[1]
+        return np.full(size, math.inf), np.full((size, size), math.nan)
     se = np.sqrt(np.diag(covariance))
     return se, covariance / np.outer(se, se)
 
@@ -135,9 +143,11 @@ def information_table(sensitivity: pd.DataFrame, noises: Sequence[float]) -> pd.
 
     Designs: the rows as given (``virtual experiment``) and the same plus one static JKR pull-off
     (sensitivity row (1, 0, 0), exact). The singular values of S say how many combinations of
-    ln theta the pull-off data determine at all.
+    ln theta the pull-off data determine at all. Rows without a derivative (no pull-off, their status in
+    the sensitivity table) carry no information and are left out; ``rows`` counts those used.
     """
     s = sensitivity[[f"dlnP_dln{n}" for n in PARAMETERS]].to_numpy(float)
+    s = s[np.all(np.isfinite(s), axis=1)]
     designs = {"virtual experiment": s, "virtual experiment + static JKR pull-off": np.vstack([s, [1.0, 0.0, 0.0]])}
     rows = []
     for design, matrix in designs.items():

@@ -13,26 +13,26 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.experiments import identifiability, virtual_pulloff
+from vibroadhesion.experiments import identifiability
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.steps.inputs import rig
 
 
-def sensitivity_run(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, parameter: str,
-                    sign: str) -> None:
-    """Simulated pull-off with one parameter scaled by exp(+h) or exp(-h).
+def sensitivity_part(setup_json: str | Path, fit_json: str | Path | None, out: str | Path,
+                     frequencies_hz: Sequence[float], candidate_amplitudes_um: Sequence[float]) -> None:
+    """Envelope sensitivities of the simulated pull-off (rigid fixation) at the frequencies of one job.
 
-    Rigid fixation, every test frequency and amplitude of the rig; ``parameter`` is scaled by exp(+h)
-    when ``sign`` is "plus", by exp(-h) when it is "minus".
+    The amplitudes are the rig's and the design's candidates (h1 = 0, the static test, is exact and not
+    simulated): rows of :func:`vibroadhesion.experiments.identifiability.envelope_sensitivity`.
     """
     setup, params, _ = rig(setup_json, fit_json)
-    shifted = identifiability.perturbed(GentSchultzParameters(**params), parameter, {"plus": 1, "minus": -1}[sign])
-    h1 = np.asarray(setup.amplitudes_um, dtype=float)
-    progress = ProgressBar(len(h1) * len(setup.frequencies_hz), "amplitudes")
-    tables = [virtual_pulloff.pulloff_table(shifted, f, h1, radius=setup.radius, reduced_modulus=setup.reduced_modulus,
-                                            progress=progress, predictions=False) for f in setup.frequencies_hz]
+    h1 = sorted({float(h) for h in (*setup.amplitudes_um, *candidate_amplitudes_um) if h > 0})
+    progress = ProgressBar(len(h1) * len(frequencies_hz), "amplitudes")
+    tables = [identifiability.envelope_sensitivity(GentSchultzParameters(**params), f, h1, radius=setup.radius,
+                                                   reduced_modulus=setup.reduced_modulus, progress=progress)
+              for f in frequencies_hz]
     write_csv(pd.concat(tables, ignore_index=True), out)
 
 
@@ -55,17 +55,30 @@ def fit_level(
     print(f"{model}: {row['status']} in {time.perf_counter() - start:.1f} s; {row['note']}")
 
 
+def rig_sensitivity(virtual_csv: str | Path, sensitivity_parts: Sequence[str | Path]) -> pd.DataFrame:
+    """The sensitivity rows at the rig's test conditions: those of the simulated rigid rows, in their order.
+
+    The parts trace the same families as the virtual pull-off: a row whose status or force differs (the
+    parts computed at other parameters) is a ValueError, never a mixed table.
+    """
+    rows = _simulated_rigid_rows(virtual_csv)
+    parts = pd.concat([pd.read_csv(p) for p in sensitivity_parts], ignore_index=True)
+    table = rows[["frequency_hz", "h1_um"]].merge(parts, on=["frequency_hz", "h1_um"], how="left",
+                                                  validate="one_to_one")
+    same = (table["status"].fillna("") == rows["status"]) | (table["status"] == "no_derivative")
+    force = np.isclose(table["pulloff_mN"], rows["pulloff_mN"], rtol=1e-9, atol=0.0, equal_nan=True)
+    if not np.all(same & force):
+        bad = table[~(same & force)].iloc[0]
+        raise ValueError(f"sensitivity parts and the virtual pull-off disagree at {bad['frequency_hz']:g} Hz, "
+                         f"h1 = {bad['h1_um']:g} um (status {bad['status']}): were they computed at other parameters?")
+    return table
+
+
 def summary(virtual_csv: str | Path, sensitivity_parts: Sequence[str | Path], fit_parts: Sequence[str | Path],
             noise: Sequence[float], sensitivity_out: str | Path, information_out: str | Path,
             fits_out: str | Path) -> None:
-    """Log-sensitivities of the simulated pull-off, standard errors per design and relative noise, fits table."""
-    parts = {Path(p).stem: pd.read_csv(p) for p in sensitivity_parts}
-    missing = [f"{n}_{s}" for n in identifiability.PARAMETERS for s in ("plus", "minus") if f"{n}_{s}" not in parts]
-    if missing:
-        raise ValueError(f"sensitivity runs missing: {', '.join(missing)}")
-    sensitivity = identifiability.log_sensitivity(
-        _simulated_rigid_rows(virtual_csv), {n: parts[f"{n}_plus"] for n in identifiability.PARAMETERS},
-        {n: parts[f"{n}_minus"] for n in identifiability.PARAMETERS})
+    """Log-sensitivities of the simulated pull-off at the rig's tests, standard errors per design and noise, fits."""
+    sensitivity = rig_sensitivity(virtual_csv, sensitivity_parts)
     information = identifiability.information_table(sensitivity, noise)
     write_csv(sensitivity, sensitivity_out)
     write_csv(information, information_out)
