@@ -17,6 +17,10 @@ import pandas as pd
 from vibroadhesion.core import groups, levels
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.pipeline import data
+from vibroadhesion.pipeline.tables import Column
+
+#: How a page shows :func:`setup_table`: the values as typed in data/setup.yaml (all digits), the source as text.
+SETUP_COLUMNS = {"value": Column("value", format="exact"), "source": Column("source", format="text")}
 
 
 def setup_table(setup_json: str | Path) -> pd.DataFrame:
