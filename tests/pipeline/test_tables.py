@@ -15,9 +15,9 @@ from vibroadhesion.pipeline.tables import Column
 
 
 @pytest.mark.parametrize(("value", "text"), [
-    (0.236, "0.2360"), (1.00969, "1.010"), (172.87509505524881, "172.9"), (12345.6, "12350"), (200.0, "200"),
+    (0.236, "0.236"), (0.25, "0.25"), (0.2360001, "0.2360"), (1.00969, "1.010"), (172.87509505524881, "172.9"), (12345.6, "12350"), (200.0, "200"),
     (-0.33813384611164277, "-0.3381"), (0.0012345, "0.001234"), (4.45e-05, "4.450e-05"), (1.0e8, "1.000e+08"),
-    (0.0, "0"), (np.int64(14), "14"), (float("nan"), "—"), (None, "—"), ("pulloff", "pulloff"),
+    (0.0, "0"), (np.int64(14), "14"), (11.9994, "12.00"), (164.98, "165.0"), (99999.9, "1.000e+05"), (float("nan"), "—"), (None, "—"), ("pulloff", "pulloff"),
 ])
 def test_significant_figures(value: object, text: str) -> None:
     assert tables.significant(value) == text
@@ -52,6 +52,7 @@ def test_headers_carry_the_unit_and_dimensionless_numbers_none() -> None:
     assert tables.column("w0").header == "w0 (J/m²)"
     assert tables.column("refined error").format == "rel"
     assert tables.column("some_ratio") == Column("some ratio")
+    assert tables.column("A/a_m at 200 Hz") == Column("A/a_m at 200 Hz")  # a label already: kept
     assert tables.column("pulloff_mN", {"pulloff_mN": Column("measured", "mN")}).header == "measured (mN)"
 
 
@@ -81,3 +82,15 @@ def test_exact_format_shows_an_input_as_typed() -> None:
     shown = tables.formatted(pd.DataFrame({"value": [4.45e-05, 0.531, 2.8e6, "(20.0, 40.0)"]}), spec)
     assert shown["value"].tolist() == ["4.45e-05", "0.531", "2800000", "(20.0, 40.0)"]
     assert not math.isnan(float(shown["value"].iloc[0]))
+
+
+def test_a_table_of_errors_shows_every_number_as_a_relative_error() -> None:
+    frame = pd.DataFrame({"model": ["refined"], "w_eff_ratio": [0.33834041556742633], "points": [33]})
+    shown = tables.show(frame, {"points": Column("points", format="int")}, relative=True).frame
+    assert shown.iloc[0].tolist() == ["refined", "3.38e-01", "33"]
+
+
+def test_a_column_of_words_not_listed_is_text_aligned_left() -> None:
+    table = tables.show(pd.DataFrame({"method": ["fixed rule (72 nodes)"], "evals_per_s": [3.163e6]}))
+    assert table.frame.iloc[0].tolist() == ["fixed rule (72 nodes)", "3.163e+06"]
+    assert table.left == frozenset({"method"})

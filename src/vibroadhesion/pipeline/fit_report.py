@@ -17,7 +17,7 @@ import pandas as pd
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import data
-from vibroadhesion.pipeline.tables import Column, plus_minus, significant
+from vibroadhesion.pipeline.tables import Column, exact, plus_minus, significant
 
 #: Statuses of a fit that converged to an estimate (:mod:`vibroadhesion.experiments.fitting`).
 CONVERGED = ("fitted", "at_bound")
@@ -56,20 +56,17 @@ def estimate_text(name: str, summary: dict[str, Any]) -> str:
 
     ``at bound`` (the search ended on the box), ``not identifiable`` (fitted, but the rows do not determine it),
     ``published`` (no rows), ``fixed: published`` (not fitted by this level, e.g. v0 of a frequency-independent one).
+    Bounds and published values are shown as typed (:func:`~vibroadhesion.pipeline.tables.exact`).
     """
     entry = summary["parameters"][name]
     value = entry["estimate"]
     if entry["std_error"] is not None:
         return plus_minus(value, entry["std_error"])
     if name in summary.get("at_bound", ()):
-        why = "at bound"
-    elif name in summary.get("free_parameters", ()):
-        why = "not identifiable"
-    elif summary["status"] == "published":
-        why = "published"
-    else:
-        why = "fixed: published"
-    return f"{significant(value)} ({why})"
+        return f"{exact(value)} (at bound)"
+    if name in summary.get("free_parameters", ()):
+        return f"{significant(value)} (not identifiable)"
+    return f"{exact(value)} ({'published' if summary['status'] == 'published' else 'fixed: published'})"
 
 
 def estimates(fit: dict[str, Any]) -> pd.DataFrame:
@@ -146,6 +143,10 @@ def long_predictions(table: pd.DataFrame) -> pd.DataFrame:
     return pd.concat(parts, ignore_index=True).dropna(subset=["predicted_mN"])
 
 
+#: How :func:`published_table` reads: the values as published (all their digits).
+PUBLISHED_COLUMNS = {"value": Column("value", format="exact"), "unit": Column("unit", format="text")}
+
+
 def published_table(fit: dict[str, Any]) -> pd.DataFrame:
     """The published Gent–Schultz parameters (Fig. 4 caption) with their units."""
     published = fit["published"]
@@ -158,8 +159,8 @@ def summary_sentence(fit: dict[str, Any]) -> str:
     """What the page shows, in a sentence: the headline fit and its status, or that there are no measured rows."""
     if fit["data_rows"] == 0:
         return ("`data/pulloff.csv` holds no measured rows, so nothing is fitted: every level and every figure "
-                f"uses the published parameters (w0 = {significant(fit['published']['w0'])} J/m², n = "
-                f"{significant(fit['published']['n'])}, v0 = {significant(fit['published']['v0'])} m/s).")
+                f"uses the published parameters (w0 = {exact(fit['published']['w0'])} J/m², n = "
+                f"{exact(fit['published']['n'])}, v0 = {exact(fit['published']['v0'])} m/s).")
     lead = headline(fit)
     simulation = fit["fits"].get("simulation")
     if lead:

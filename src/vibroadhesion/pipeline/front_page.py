@@ -114,9 +114,11 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
     parts = [f"<p>Built from {html.escape(build())}.</p>"]
     if "fit_json" in artefacts:
         fit = fit_report.read_fit(artefacts["fit_json"])
+        used = (f"the figures use the <b>{html.escape(fit['figures_use'])}</b> fit (status: "
+                f"{html.escape(fit['fits'][fit['figures_use']]['status'])})" if fit["data_rows"] else
+                "nothing is fitted: the figures use the published parameters")
         parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>)</h2><p>{fit['data_rows']} measured rows in "
-                  f"<code>data/pulloff.csv</code>; the figures use the <b>{html.escape(fit['figures_use'])}</b> fit "
-                  f"(status: {html.escape(fit['fits'][fit['figures_use']]['status'])}).</p>",
+                  f"<code>data/pulloff.csv</code>; {used}.</p>",
                   _table(fit_summary(artefacts["fit_json"]), fit_report.ESTIMATE_COLUMNS)]
     if "virtual_csv" in artefacts:
         parts += ["<h2>Pull-off amplification per model level against the SIMULATED pull-off "

@@ -23,6 +23,19 @@ from vibroadhesion.pipeline.tables import Column
 SETUP_COLUMNS = {"value": Column("value", format="exact"), "source": Column("source", format="text")}
 
 
+#: How a page shows :func:`fit_table` (units in their own column: they differ per parameter).
+FIT_COLUMNS = {"parameter": Column("parameter", format="text"), "estimate": Column("estimate"),
+               "std_error": Column("standard error")}
+
+#: The counts of the validation's error summary (results/validation/rigid_error_summary.csv); the rest are errors.
+ERROR_SUMMARY_COLUMNS = {"points": Column("grid points", format="int"),
+                         "points_below_5pct": Column("grid points within 5 %", format="int")}
+
+#: How a page shows :func:`rule_timings`.
+TIMING_COLUMNS = {"rule": Column("rule", format="text"), "wall_s": Column("wall time", "s"),
+                  "max_rss_MB": Column("peak memory", "MB")}
+
+
 def setup_table(setup_json: str | Path) -> pd.DataFrame:
     """Every input value with its unit and source, as ingested from data/setup.yaml."""
     setup = data.read_canonical_setup(setup_json)

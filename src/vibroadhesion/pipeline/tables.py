@@ -14,7 +14,7 @@ import html
 import math
 import numbers
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Literal
 
 import numpy as np
@@ -53,10 +53,12 @@ COLUMNS: dict[str, Column] = {
     # rate law (§1)
     "w0": Column("w0", "J/m²"), "v0": Column("v0", "m/s"), "n": Column("n"),
     # steady state (§4) and fixation (§3)
-    "Abar": Column("Ā = ωA/v0"), "abar_m": Column("a_m/a_o"), "abar_cr": Column("a_cr/a_o"),
-    "w_eff_ratio": Column("w_eff/w0"), "A_over_am": Column("A/a_m"), "steady_states": Column("steady states",
-                                                                                           format="int"),
-    "kappa": Column("κ"), "zeta": Column("ζ"), "mu": Column("μ"), "nu0": Column("ν0"),
+    "Abar": Column("Ā = ωA/v0"), "Abar_cr": Column("Ā_cr"), "sqrt_w_eff_ratio": Column("√(w_eff/w0)"),
+    "abar_m": Column("a_m/a_o"), "abar_cr": Column("a_cr/a_o"), "w_eff_ratio": Column("w_eff/w0"),
+    "A_over_am": Column("A/a_m"), "pm_over_abs_pjkr": Column("P_m/|P_JKR|"),
+    "steady_states": Column("steady states", format="int"),
+    "kappa": Column("κ", format="exact"), "zeta": Column("ζ", format="exact"), "mu": Column("μ", format="exact"),
+    "nu0": Column("ν0"),
     # words
     **{name: Column(name.replace("model", "model level"), format="text")
        for name in ("source", "status", "model", "fixation", "quantity", "unit", "definition", "direction")},
@@ -68,18 +70,23 @@ _RELATIVE_ENDINGS = ("error", "_bias", "relative_residual")
 
 
 def significant(value: object, digits: int = SIGNIFICANT) -> str:
-    """``value`` to ``digits`` significant figures (trailing zeros kept: ``1.010``; whole numbers as integers).
+    """``value`` to ``digits`` significant figures; integers as such.
 
-    Plain notation from 1e-3 to 1e5, scientific outside (``1.235e-05``).
+    Trailing zeros are kept where the value was rounded (``1.010``, ``12.00``), none are added to a value that has
+    no more figures (``0.25``, not ``0.2500``). Plain notation from 1e-3 to 1e5, scientific outside (``1.235e-05``).
     """
     x = _number(value)
     if x is None:
         return MISSING if _missing(value) else str(value)
-    if x == 0.0 or not 1e-3 <= abs(x) < 1e5:
-        return "0" if x == 0.0 else f"{x:.{digits - 1}e}"
+    if x.is_integer() and abs(x) < 1e5:
+        return f"{x:.0f}"
     rounded = float(f"{x:.{digits}g}")
-    if rounded.is_integer():
-        return f"{rounded:.0f}"
+    if rounded == x and 1e-3 <= abs(x) < 1e5:  # no more figures than shown: no padding zeros (0.25, not 0.2500)
+        return repr(x)
+    if not 1e-3 <= abs(x) < 1e5:
+        return f"{x:.{digits - 1}e}"
+    if abs(rounded) >= 1e5:  # 99999.9 rounds out of the plain range
+        return f"{x:.{digits - 1}e}"
     return f"{rounded:.{max(0, digits - 1 - math.floor(math.log10(abs(rounded))))}f}"
 
 
@@ -89,6 +96,14 @@ def relative(value: object, digits: int = RELATIVE) -> str:
     if x is None:
         return MISSING if _missing(value) else str(value)
     return f"{x:.{digits - 1}e}"
+
+
+def exact(value: object) -> str:
+    """An input value as typed: the shortest repr that round-trips (``4.45e-05``, ``0.531``), integers as such."""
+    x = _number(value)
+    if x is None:
+        return MISSING if _missing(value) else str(value)
+    return f"{x:.0f}" if x.is_integer() else repr(x)
 
 
 def plus_minus(value: float, std_error: float) -> str:
@@ -105,38 +120,48 @@ def plus_minus(value: float, std_error: float) -> str:
     return text if exponent == 0 else f"({text})e{exponent:+03d}"
 
 
-def column(name: str, columns: Mapping[str, Column] | None = None) -> Column:
+def column(name: str, columns: Mapping[str, Column] | None = None, relative: bool = False) -> Column:
     """How column ``name`` is shown: from ``columns``, else :data:`COLUMNS`, else by its name.
 
-    A name is read with spaces for underscores; one ending in :data:`_RELATIVE_ENDINGS` is a relative error.
+    A CSV name (an identifier) is read with spaces for underscores; one ending in :data:`_RELATIVE_ENDINGS` is a
+    relative error, and so is every number of a table of ``relative`` errors.
     """
     if columns and name in columns:
         return columns[name]
-    if name in COLUMNS:
-        return COLUMNS[name]
-    return Column(name.replace("_", " "), format="rel" if name.endswith(_RELATIVE_ENDINGS) else "sig")
+    label = name.replace("_", " ") if name.isidentifier() else name  # a CSV name, not a label already
+    spec = COLUMNS.get(name) or Column(label, format="rel" if name.endswith(_RELATIVE_ENDINGS) else "sig")
+    return replace(spec, format="rel") if relative and spec.format == "sig" else spec
 
 
-def formatted(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None) -> pd.DataFrame:
+def specs(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
+          relative: bool = False) -> dict[str, Column]:
+    """How each column of ``frame`` (index reset) is shown (:func:`column`); a column of words not listed is text."""
+    out = {}
+    for name in frame.columns:
+        spec = column(str(name), columns, relative)
+        listed = (columns and name in columns) or name in COLUMNS
+        out[str(name)] = spec if listed or pd.api.types.is_numeric_dtype(frame[name]) else replace(spec, format="text")
+    return out
+
+
+def formatted(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
+              relative: bool = False) -> pd.DataFrame:
     """``frame`` as the page shows it: strings, headers ``label (unit)``, the index (if named) as leading columns."""
     if frame.index.names != [None]:
         frame = frame.reset_index()
-    shown = {}
-    for name in frame.columns:
-        spec = column(str(name), columns)
-        shown[spec.header] = [_cell(value, spec.format) for value in frame[name]]
-    return pd.DataFrame(shown)
+    return pd.DataFrame({spec.header: [_cell(value, spec.format) for value in frame[name]]
+                         for name, spec in specs(frame, columns, relative).items()})
 
 
 def _cell(value: object, format: Format) -> str:
     """One cell in ``format`` (see the module docstring)."""
     if format == "text":
         return MISSING if _missing(value) else str(value)
-    x = _number(value)
-    if format == "int" or (format == "exact" and x is not None and x.is_integer()):
+    if format == "int":
+        x = _number(value)
         return MISSING if x is None else f"{x:.0f}"
     if format == "exact":
-        return MISSING if _missing(value) else repr(x) if x is not None else str(value)
+        return exact(value)
     return relative(value) if format == "rel" else significant(value)
 
 
@@ -157,7 +182,8 @@ def _missing(value: object) -> bool:
 class Table:
     """A formatted table that a notebook displays: HTML without an index, plain text in the executed notebook.
 
-    Columns whose header is in ``left`` (text) are aligned left, numbers right.
+    Columns whose header is in ``left`` (text) are aligned left, numbers right; a table wider than the page
+    scrolls instead of being clipped.
     """
 
     frame: pd.DataFrame
@@ -165,21 +191,25 @@ class Table:
 
     def _repr_html_(self) -> str:
         """The HTML table a page shows (Jupyter's rich display)."""
-        align = ["left" if h in self.left else "right" for h in self.frame.columns]
+        align = ["left" if h in self.left else "right; white-space: nowrap" for h in self.frame.columns]
         head = "".join(f'<th style="text-align: {a}">{html.escape(str(h))}</th>'
                        for h, a in zip(self.frame.columns, align, strict=True))
         body = "".join("<tr>" + "".join(f'<td style="text-align: {a}">{html.escape(str(v))}</td>'
                                         for v, a in zip(row, align, strict=True)) + "</tr>"
                        for row in self.frame.itertuples(index=False))
-        return f'<table class="report-table"><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>'
+        return (f'<div style="overflow-x: auto"><table class="report-table"><thead><tr>{head}</tr></thead>'
+                f"<tbody>{body}</tbody></table></div>")
 
     def __repr__(self) -> str:
         """The table as plain text, without an index."""
         return self.frame.to_string(index=False)
 
 
-def show(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None) -> Table:
-    """The table a page displays for ``frame`` (:func:`formatted`; ``columns`` override :data:`COLUMNS`)."""
-    names = frame.reset_index().columns if frame.index.names != [None] else frame.columns
-    left = frozenset(column(str(n), columns).header for n in names if column(str(n), columns).format == "text")
-    return Table(formatted(frame, columns), left)
+def show(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None, relative: bool = False) -> Table:
+    """The table a page displays for ``frame`` (:func:`formatted`; ``columns`` override :data:`COLUMNS`).
+
+    ``relative``: every number not otherwise specified is a relative error (a table of errors).
+    """
+    shown = specs(frame.reset_index() if frame.index.names != [None] else frame, columns, relative)
+    return Table(formatted(frame, columns, relative),
+                 frozenset(spec.header for spec in shown.values() if spec.format == "text"))
