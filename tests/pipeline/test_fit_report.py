@@ -44,7 +44,7 @@ def _fit(rows: int) -> dict:
     leading = {
         "model": "leading", "rows": rows, "status": "at_bound", "free_parameters": ["w0", "n"], "at_bound": ["n"],
         "note": "n ends on its bound 0.05 1", "v0_identifiable": False, "v0_note": "v0 not identifiable: no v0",
-        "parameters": _parameters({"w0": 0.49, "n": 0.05, "v0": 4.45e-05}, {"w0": 0.12},
+        "parameters": _parameters({"w0": 0.49, "n": 0.05000000000000003, "v0": 4.45e-05}, {"w0": 0.12},
                                   {"w0": "fitted", "n": "fitted, on its bound (0.05, 4.0)"}),
         "residuals_mN": [{"line": 2, "residual": 17.0}, {"line": 3, "residual": -140.0},
                          {"line": 4, "residual": -280.0}],
@@ -79,14 +79,21 @@ def test_levels_in_the_registry_order_with_the_converged_simulation_as_headline(
 
 def test_estimates_give_value_plus_minus_se_or_why_there_is_none() -> None:
     table = fit_report.estimates(_fit(3)).set_index("status")
-    assert table.loc["fitted", "w0"] == "0.2361 ± 0.0012"
-    assert table.loc["fitted", "v0"] == "(4.503 ± 0.019)e-05"
-    assert table.loc["at_bound", "n"] == "0.05 (at bound)"
-    assert table.loc["at_bound", "v0"] == "4.45e-05 (fixed: published)"
+    assert table.loc["fitted", "w0"] == "0.2361\u00a0±\u00a00.0012"
+    assert table.loc["fitted", "v0"] == "(4.503\u00a0±\u00a00.019)e-05"
+    assert table.loc["at_bound", "n"] == "0.05 (at bound)"  # the end of the box, as in fitting.BOUNDS
+    assert table.loc["at_bound", "v0"] == "4.45e-05 (fixed: published)"  # as published, no padding zero
     assert table.loc["failed", "w0"] == "0.236 (fixed: published)" and "no root" in table.loc["failed", "reason"]
     assert table.loc["fitted", "rms_relative_residual"] == 0.5774
     assert math.isnan(table.loc["failed", "rms_relative_residual"])
     assert table.loc["fitted", "level"] == levels.level("simulation").label
+
+
+def test_figure_pages_show_the_fit_the_figures_use_and_the_headline() -> None:
+    fit = _fit(3)
+    assert fit_report.figures_fit(fit)["level"].tolist() == [levels.level("simulation").label]
+    fit["figures_use"] = "leading"
+    assert fit_report.figures_fit(fit)["level"].tolist() == [levels.level(n).label for n in ("simulation", "leading")]
 
 
 def test_measured_against_predicted_per_row_with_the_contact_loss_row_unpredicted(tmp_path: Path) -> None:
@@ -101,7 +108,7 @@ def test_measured_against_predicted_per_row_with_the_contact_loss_row_unpredicte
     assert len(plotted) == 5 and set(plotted["level"]) == {levels.level("simulation").label,
                                                            levels.level("leading").label}
     headers = fit_report.measured_vs_predicted_columns(table)
-    assert headers["predicted_mN:leading"].header == f"{levels.level('leading').label} (mN)"
+    assert headers["predicted_mN:leading"].header == "predicted, leading (mN)"
 
 
 @pytest.mark.parametrize("rows", [0, 3])
@@ -119,7 +126,7 @@ def test_fit_page_renders_with_and_without_measured_rows(tmp_path: Path, rows: i
         render_page(page, manager)
     html = page.html.read_text(encoding="utf-8")
     if rows:
-        assert "0.2361 ± 0.0012" in html and "contact_loss_before_extremum" in html and "image/png" in html
+        assert "0.2361\u00a0±\u00a00.0012" in html and "contact_loss_before_extremum" in html and "image/png" in html
     else:
         assert "holds no measured rows" in html and "Estimates per model level" not in html
     assert "0.236" in html

@@ -66,7 +66,7 @@ def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
     artefacts = {"fit_json": fit_json, "virtual_csv": tmp_path / "virtual.csv"}
     write_index(out, findings=front_page.findings(artefacts, summary))
     text = out.read_text()
-    assert "7 measured rows" in text and "0.2361 ± 0.0012" in text and "0.53 ± 0.25" in text
+    assert "7 measured rows" in text and "0.2361\u00a0±\u00a00.0012" in text and "0.53\u00a0±\u00a00.25" in text
     assert "4.45e-05 (fixed: published)" in text and "2.69e-05" in text
     assert "-2.50e-01" in text and "-2.00e-01" in text  # leading against the simulated pull-off
     assert "3.38e-01" in text and "1.51e-01" in text and "25 of 33" in text  # validation summary

@@ -9,6 +9,7 @@ headline when its fit converged (``fitted`` or ``at_bound``), the cheaper levels
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 from typing import Any
 
@@ -16,6 +17,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.core import levels
+from vibroadhesion.experiments.fitting import BOUNDS
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.tables import Column, exact, plus_minus, significant
 
@@ -63,7 +65,8 @@ def estimate_text(name: str, summary: dict[str, Any]) -> str:
     if entry["std_error"] is not None:
         return plus_minus(value, entry["std_error"])
     if name in summary.get("at_bound", ()):
-        return f"{exact(value)} (at bound)"
+        bound = min(BOUNDS[name], key=lambda end: abs(math.log(value / end)))  # the end of the box it ran to
+        return f"{exact(bound)} (at bound)"
     if name in summary.get("free_parameters", ()):
         return f"{significant(value)} (not identifiable)"
     return f"{exact(value)} ({'published' if summary['status'] == 'published' else 'fixed: published'})"
@@ -80,6 +83,14 @@ def estimates(fit: dict[str, Any]) -> pd.DataFrame:
                      "rms_relative_residual": summary.get("rms_relative_residual", np.nan),
                      "reason": "; ".join(reasons)})
     return pd.DataFrame(rows, columns=list(ESTIMATE_COLUMNS))
+
+
+def figures_fit(fit: dict[str, Any]) -> pd.DataFrame:
+    """:func:`estimates` of the fit the figures use, and of the headline fit when that is another level."""
+    shown = {headline(fit), fit["figures_use"]} - {None}
+    labels = [levels.level(name).label for name in ordered_levels(fit) if name in shown]
+    table = estimates(fit)
+    return table[table["level"].isin(labels)].reset_index(drop=True)
 
 
 def predicted_mN(summary: dict[str, Any], rows: pd.DataFrame) -> pd.Series | None:
@@ -120,12 +131,12 @@ def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame) -> pd.DataFra
 
 
 def measured_vs_predicted_columns(table: pd.DataFrame) -> dict[str, Column]:
-    """How :func:`measured_vs_predicted`'s columns read: the level's label and mN in the header."""
+    """How :func:`measured_vs_predicted`'s columns read: the level's name (short: the table is wide) and mN."""
     columns = {"pulloff_mN": Column("measured |P_cr|", "mN")}
     for name in table.columns:
         kind, _, level = str(name).partition(":")
         if kind == "predicted_mN":
-            columns[name] = Column(f"{levels.level(level).label}", "mN")
+            columns[name] = Column(f"predicted, {level.replace('_', ' ')}", "mN")
         elif kind == "relative_residual":
             columns[name] = Column(f"relative residual, {level}", format="rel")
         elif kind == "status":

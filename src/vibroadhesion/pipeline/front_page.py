@@ -81,15 +81,6 @@ def amplification(virtual_csv: str | Path) -> pd.DataFrame:
     return pd.DataFrame(out, columns=list(AMPLIFICATION_COLUMNS))
 
 
-def fit_summary(fit_json: str | Path) -> pd.DataFrame:
-    """The fit the figures use and the headline fit, as the fit page states them (:mod:`fit_report`)."""
-    fit = fit_report.read_fit(fit_json)
-    table = fit_report.estimates(fit)
-    shown = {fit_report.headline(fit), fit["figures_use"]} - {None}
-    labels = [levels.level(name).label for name in fit_report.ordered_levels(fit) if name in shown]
-    return table[table["level"].isin(labels)].drop(columns="reason")
-
-
 def validity(summary_csv: str | Path) -> pd.DataFrame:
     """Per level: the largest relative error against the simulation (test frequencies; applicable; outside)."""
     summary = pd.read_csv(summary_csv)
@@ -119,7 +110,7 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
                 "nothing is fitted: the figures use the published parameters")
         parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>)</h2><p>{fit['data_rows']} measured rows in "
                   f"<code>data/pulloff.csv</code>; {used}.</p>",
-                  _table(fit_summary(artefacts["fit_json"]), fit_report.ESTIMATE_COLUMNS)]
+                  _table(fit_report.figures_fit(fit).drop(columns="reason"), fit_report.ESTIMATE_COLUMNS)]
     if "virtual_csv" in artefacts:
         parts += ["<h2>Pull-off amplification per model level against the SIMULATED pull-off "
                   "(<a href=\"fig4.html\">Fig. 4</a>)</h2><p>P_cr/P_JKR over the test conditions (frequencies × "

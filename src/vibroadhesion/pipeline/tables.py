@@ -73,7 +73,8 @@ def significant(value: object, digits: int = SIGNIFICANT) -> str:
     """``value`` to ``digits`` significant figures; integers as such.
 
     Trailing zeros are kept where the value was rounded (``1.010``, ``12.00``), none are added to a value that has
-    no more figures (``0.25``, not ``0.2500``). Plain notation from 1e-3 to 1e5, scientific outside (``1.235e-05``).
+    no more figures (``0.25``, not ``0.2500``; ``4.45e-05``). Plain notation from 1e-3 to 1e5, scientific outside
+    (``1.235e-05``).
     """
     x = _number(value)
     if x is None:
@@ -84,7 +85,8 @@ def significant(value: object, digits: int = SIGNIFICANT) -> str:
     if rounded == x and 1e-3 <= abs(x) < 1e5:  # no more figures than shown: no padding zeros (0.25, not 0.2500)
         return repr(x)
     if not 1e-3 <= abs(x) < 1e5:
-        return f"{x:.{digits - 1}e}"
+        shortest = (text for k in range(digits - 1) if float(text := f"{x:.{k}e}") == x)
+        return next(shortest, f"{x:.{digits - 1}e}")
     if abs(rounded) >= 1e5:  # 99999.9 rounds out of the plain range
         return f"{x:.{digits - 1}e}"
     return f"{rounded:.{max(0, digits - 1 - math.floor(math.log10(abs(rounded))))}f}"
@@ -106,17 +108,21 @@ def exact(value: object) -> str:
     return f"{x:.0f}" if x.is_integer() else repr(x)
 
 
+#: ± between no-break spaces: a value and its error stay on one line.
+_PM = "\u00a0±\u00a0"
+
+
 def plus_minus(value: float, std_error: float) -> str:
     """``value ± std_error``: the error to 2 significant figures, the value to the same last decimal.
 
     Outside 1e-3 to 1e5 both share a power of ten: ``(4.450 ± 0.012)e-05``.
     """
     if not (math.isfinite(value) and math.isfinite(std_error)) or std_error <= 0:
-        return f"{significant(value)} ± {significant(std_error)}"
+        return f"{significant(value)}{_PM}{significant(std_error)}"
     exponent = 0 if value == 0 or 1e-3 <= abs(value) < 1e5 else math.floor(math.log10(abs(value)))
     scale = 10.0 ** exponent
     decimals = max(0, 1 - math.floor(math.log10(std_error / scale)))
-    text = f"{value / scale:.{decimals}f} ± {std_error / scale:.{decimals}f}"
+    text = f"{value / scale:.{decimals}f}{_PM}{std_error / scale:.{decimals}f}"
     return text if exponent == 0 else f"({text})e{exponent:+03d}"
 
 
@@ -182,8 +188,8 @@ def _missing(value: object) -> bool:
 class Table:
     """A formatted table that a notebook displays: HTML without an index, plain text in the executed notebook.
 
-    Columns whose header is in ``left`` (text) are aligned left, numbers right; a table wider than the page
-    scrolls instead of being clipped.
+    Columns whose header is in ``left`` (text) are aligned left and may wrap, numbers right on one line; a table
+    wider than the page scrolls instead of being clipped.
     """
 
     frame: pd.DataFrame
@@ -191,11 +197,12 @@ class Table:
 
     def _repr_html_(self) -> str:
         """The HTML table a page shows (Jupyter's rich display)."""
-        align = ["left" if h in self.left else "right; white-space: nowrap" for h in self.frame.columns]
+        align = ["left" if h in self.left else "right" for h in self.frame.columns]
         head = "".join(f'<th style="text-align: {a}">{html.escape(str(h))}</th>'
                        for h, a in zip(self.frame.columns, align, strict=True))
-        body = "".join("<tr>" + "".join(f'<td style="text-align: {a}">{html.escape(str(v))}</td>'
-                                        for v, a in zip(row, align, strict=True)) + "</tr>"
+        cell = [f"text-align: {a}" + ("" if a == "left" else "; white-space: nowrap") for a in align]
+        body = "".join("<tr>" + "".join(f'<td style="{c}">{html.escape(str(v))}</td>'
+                                        for v, c in zip(row, cell, strict=True)) + "</tr>"
                        for row in self.frame.itertuples(index=False))
         return (f'<div style="overflow-x: auto"><table class="report-table"><thead><tr>{head}</tr></thead>'
                 f"<tbody>{body}</tbody></table></div>")
