@@ -13,6 +13,7 @@ import pytest
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.pages import write_index
+from vibroadhesion.pipeline.steps.report import index_artefacts
 
 VIRTUAL = """fixation,kappa,zeta,frequency_hz,h1_um,model,status,pulloff_ratio,pulloff_mN,abar_m,abar_cr,steady_states
 rigid,,,200,20,simulation,pulloff,3.0,171.8,1.0,1.2,14
@@ -100,3 +101,9 @@ def test_marking_stale_pages_keeps_the_findings_of_the_index(tmp_path: Path) -> 
     assert text.count("<p>finding 42</p>") == 1 and "(out of date)" in text
     write_index(out, findings="")
     assert "finding 42" not in out.read_text()
+
+
+def test_an_index_reads_the_artefact_of_the_first_page_that_names_it() -> None:
+    pages = {"validation": {"virtual_csv": "all.csv", "summary_csv": "s.csv"},
+             "identifiability": {"virtual_csv": "rigid.csv", "fit_json": "fit.json"}}
+    assert index_artefacts(pages) == {"virtual_csv": "all.csv", "summary_csv": "s.csv", "fit_json": "fit.json"}

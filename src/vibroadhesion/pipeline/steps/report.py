@@ -107,6 +107,17 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
         for page in pages:
             reset_namespace(manager)
             render_page(page, manager)
-    artefacts = {name: path for values in parameters.values() for name, path in values.items()}
     for index in indexes:
-        write_index(index, findings=front_page.findings(artefacts))
+        write_index(index, findings=front_page.findings(index_artefacts(parameters)))
+
+
+def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
+    """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
+
+    The validation page comes first among its index's pages, so its ``virtual_csv`` (every fixation) is the one read.
+    """
+    artefacts: dict[str, str] = {}
+    for values in parameters.values():
+        for name, path in values.items():
+            artefacts.setdefault(name, path)
+    return artefacts
