@@ -49,7 +49,7 @@ PAGE_INPUTS = {
     "fit": {
         "fit_json": FIT_JSON,
         "setup_json": SETUP_JSON,
-        "pulloff_csv": rules.ingest.output.pulloff,
+        "pulloff_csv": rules.ingest_pulloff.output[0],
     },
     "identifiability": {
         "fits_csv": rules.identifiability.output.fits,
