@@ -56,6 +56,7 @@ def test_headers_carry_the_unit_and_dimensionless_numbers_none() -> None:
     assert tables.column("refined error").format == "rel"
     assert tables.column("some_ratio") == Column("some ratio")
     assert tables.column("A/a_m at 200 Hz") == Column("A/a_m at 200 Hz")  # a label already: kept
+    assert tables.column("exact_averaging error") == Column("exact averaging error", format="rel")
     assert tables.column("pulloff_mN", {"pulloff_mN": Column("measured", "mN")}).header == "measured (mN)"
 
 

@@ -129,12 +129,12 @@ def plus_minus(value: float, std_error: float) -> str:
 def column(name: str, columns: Mapping[str, Column] | None = None, relative: bool = False) -> Column:
     """How column ``name`` is shown: from ``columns``, else :data:`COLUMNS`, else by its name.
 
-    A CSV name (an identifier) is read with spaces for underscores; one ending in :data:`_RELATIVE_ENDINGS` is a
-    relative error, and so is every number of a table of ``relative`` errors.
+    A CSV name is read with spaces for underscores (not a label with a ratio in it); one ending in
+    :data:`_RELATIVE_ENDINGS` is a relative error, and so is every number of a table of ``relative`` errors.
     """
     if columns and name in columns:
         return columns[name]
-    label = name.replace("_", " ") if name.isidentifier() else name  # a CSV name, not a label already
+    label = name if "/" in name else name.replace("_", " ")  # A/a_m at 200 Hz is a label already
     spec = COLUMNS.get(name) or Column(label, format="rel" if name.endswith(_RELATIVE_ENDINGS) else "sig")
     return replace(spec, format="rel") if relative and spec.format == "sig" else spec
 
