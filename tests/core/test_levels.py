@@ -98,7 +98,7 @@ def test_canonical_order_is_the_row_order_of_every_artefact(pipeline_results: Pa
     validation = levels.names("validation_rigid")
     assert grid["model"].tolist() == list(validation) * (len(grid) // len(validation))
     for fixation in ("rigid", "compliant"):
-        virtual = pd.read_csv(pipeline_results / f"simulation/virtual_pulloff_{fixation}.csv")
+        virtual = pd.read_csv(pipeline_results / f"simulation/published/virtual_pulloff_{fixation}.csv")
         for _, rows in virtual.groupby("frequency_hz", sort=False):
             assert _first_appearance(rows["model"]) == levels.names("virtual_pulloff", fixation), fixation
     fits = pd.read_csv(pipeline_results / "validation/identifiability/fits.csv")

@@ -46,7 +46,11 @@ PAGE_INPUTS = {
         "virtual_csv": rules.virtual_pulloff_gather.output[0],
         "setup_json": SETUP_JSON,
     },
-    "fit": {"fit_json": FIT_JSON, "setup_json": SETUP_JSON},
+    "fit": {
+        "fit_json": FIT_JSON,
+        "setup_json": SETUP_JSON,
+        "pulloff_csv": rules.ingest_pulloff.output[0],
+    },
     "identifiability": {
         "fits_csv": rules.identifiability.output.fits,
         "information_csv": rules.identifiability.output.information,

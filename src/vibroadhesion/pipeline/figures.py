@@ -7,6 +7,7 @@ PNG without time stamps. The only module of the package that imports matplotlib.
 
 from __future__ import annotations
 
+import io
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -378,3 +379,32 @@ def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
     shade_amplitude_regions(ax)
     ax.legend(fontsize=7, loc="lower left")
     return fig
+
+
+# --- The fit page -----------------------------------------------------------------------------
+
+def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:
+    """Predicted against measured pull-off force (mN), one marker per model level, and the 1:1 line.
+
+    ``predictions`` has columns level, measured_mN, predicted_mN (:func:`vibroadhesion.pipeline.fit_report.
+    long_predictions`); each level's prediction is |P_cr| of its own fit (Eq. 71 or the simulated pull-off).
+    """
+    fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
+    values = pd.concat([predictions["measured_mN"], predictions["predicted_mN"]])
+    span = (0.0, 1.05 * float(values.max()))
+    ax.plot(span, span, "-", color="0.6", lw=1.0, label="1:1 (predicted = measured)")
+    for k, (level, rows) in enumerate(predictions.groupby("level", sort=False)):
+        ax.plot(rows["measured_mN"], rows["predicted_mN"], "os^Dv<>p"[k % 8], mfc="none", color=f"C{k}", ms=6,
+                ls="none", label=str(level))
+    ax.set(xlim=span, ylim=span, aspect="equal", xlabel="measured |P_cr| (mN)",
+           ylabel="predicted |P_cr| (mN)")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data
+    return fig
+
+
+def figure_png(fig: Figure) -> bytes:
+    """``fig`` as PNG bytes without a time stamp (for a page that draws it inline), then close it."""
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
+    plt.close(fig)
+    return buffer.getvalue()

@@ -52,8 +52,8 @@ _INDEX_TEXT = {
   forces are published in text form, so without your rows that fit is the published set. Series marked
   SIMULATED come from the direct simulation of the full model (a virtual experiment), never from measurements.</p>
   <p>The checks of every model level against the direct simulation, the identifiability of the
-  parameters and the speed-against-error benchmarks are built by <code>snakemake -c2 validation</code>:
-  <a href="validation_index.html">validation pages</a>.</p>"""),
+  parameters and the speed-against-error benchmarks are built by <code>snakemake -c2 validation</code>
+  (the validation pages, linked below once built).</p>"""),
     "validation_index": (
         "validation against the direct simulation",
         """<p>Built by <code>snakemake -c2 validation</code>.
@@ -64,19 +64,33 @@ _INDEX_TEXT = {
 
 
 
-def write_index(out: str | Path, stale: Collection[str] = ()) -> None:
+def write_index(out: str | Path, stale: Collection[str] = (), findings: str | None = None) -> None:
     """results/report/index.html (figure pages) or validation_index.html (validation pages), by the file name.
 
-    Pages named in ``stale`` (:func:`stale_pages`) are marked out of date, with a note above the list.
+    Pages named in ``stale`` (:func:`stale_pages`) are marked out of date, with a note above the list. ``findings``
+    is an HTML fragment placed before the list of pages (:mod:`vibroadhesion.pipeline.front_page`); None keeps those
+    of the index already there (:func:`refresh_indexes` marks stale pages without recomputing the findings).
     """
     stem = Path(out).stem
     if stem not in _INDEX_TEXT:
         raise ValueError(f"unknown index {out}: expected index.html or validation_index.html")
+    text = _index_html(stem, stale, _findings_of(out) if findings is None else findings)
     with atomic_path(out) as tmp:
-        tmp.write_text(_index_html(stem, stale), encoding="utf-8")
+        tmp.write_text(text, encoding="utf-8")
 
 
-def _index_html(stem: str, stale: Collection[str]) -> str:
+#: The comments around the findings of an index, so that a rewrite can keep them.
+_FINDINGS = ("<!-- findings -->", "<!-- /findings -->")
+
+
+def _findings_of(index: str | Path) -> str:
+    """The findings of the index file ``index`` (empty if it does not exist or has none)."""
+    text = Path(index).read_text(encoding="utf-8") if Path(index).exists() else ""
+    start, end = text.find(_FINDINGS[0]), text.find(_FINDINGS[1])
+    return text[start + len(_FINDINGS[0]):end] if 0 <= start < end else ""
+
+
+def _index_html(stem: str, stale: Collection[str], findings: str) -> str:
     """The text of the index ``stem`` (:func:`write_index`)."""
     subtitle, preamble = _INDEX_TEXT[stem]
     pages = PAGES if stem == "index" else VALIDATION_PAGES
@@ -92,8 +106,10 @@ def _index_html(stem: str, stale: Collection[str]) -> str:
     return f"""<!DOCTYPE html>
 <html lang="en">
 <head><meta charset="utf-8"><title>Vibroadhesion: {subtitle}</title>
-<style>body {{ font-family: sans-serif; max-width: 48em; margin: 2em auto; line-height: 1.5; }}
-.stale {{ color: #a00; }}</style></head>
+<style>body {{ font-family: sans-serif; max-width: 60em; margin: 2em auto; line-height: 1.5; }}
+.stale {{ color: #a00; }}
+table {{ border-collapse: collapse; font-size: 0.9em; }} th, td {{ padding: 0.2em 0.6em; }}
+th {{ border-bottom: 1px solid #888; }}</style></head>
 <body>
   <h1>An asymptotic model of vibroadhesion — {subtitle}</h1>
   <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>. Every page is a
@@ -101,6 +117,8 @@ def _index_html(stem: str, stale: Collection[str]) -> str:
   the numbers behind each figure are in <code>results/figN/figN.csv</code>.</p>
   {preamble}
   {warning}
+  {_FINDINGS[0]}{findings}{_FINDINGS[1]}
+  <h2>Pages</h2>
   <ul>
 {items}
   </ul>
@@ -139,6 +157,6 @@ def refresh_indexes(page_inputs: Mapping[str, Iterable[str | Path]], report_dir:
         if not index.exists():
             continue
         marked += [name for name, _ in (PAGES if stem == "index" else VALIDATION_PAGES) if name in stale]
-        if index.read_text(encoding="utf-8") != _index_html(stem, stale):
+        if index.read_text(encoding="utf-8") != _index_html(stem, stale, _findings_of(index)):
             write_index(index, stale)
     return marked

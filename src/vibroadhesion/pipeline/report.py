@@ -17,6 +17,19 @@ import pandas as pd
 from vibroadhesion.core import groups, levels
 from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.pipeline import data
+from vibroadhesion.pipeline.tables import Column
+
+#: How a page shows :func:`setup_table`: the values as typed in data/setup.yaml (all digits), the source as text.
+SETUP_COLUMNS = {"value": Column("value", format="exact"), "source": Column("source", format="text")}
+
+
+#: The counts of the validation's error summary (results/validation/rigid_error_summary.csv); the rest are errors.
+ERROR_SUMMARY_COLUMNS = {"points": Column("grid points", format="int"),
+                         "points_below_5pct": Column("grid points within 5 %", format="int")}
+
+#: How a page shows :func:`rule_timings`.
+TIMING_COLUMNS = {"rule": Column("rule", format="text"), "wall_s": Column("wall time", "s"),
+                  "max_rss_MB": Column("peak memory", "MB")}
 
 
 def setup_table(setup_json: str | Path) -> pd.DataFrame:
@@ -53,17 +66,6 @@ def derived_table(setup_json: str | Path, fit_json: str | Path | None = None) ->
     rows += [(f"omega_check at {f:g} Hz", float(groups.omega_check(f, v0, r)), "1", "omega R / v0, Eq. (105)")
              for f in setup.frequencies_hz]
     return pd.DataFrame(rows, columns=["quantity", "value", "unit", "definition"]).assign(parameters=which)
-
-
-def fit_table(fit_json: str | Path) -> pd.DataFrame:
-    """Estimates and standard errors of both fits, with where each value comes from."""
-    fit = json.loads(Path(fit_json).read_text())
-    rows = []
-    for model, summary in fit["fits"].items():
-        for name, entry in summary["parameters"].items():
-            rows.append({"model": model, "status": summary["status"], "parameter": name, "estimate": entry["estimate"],
-                         "std_error": entry["std_error"], "unit": entry["unit"], "source": entry["source"]})
-    return pd.DataFrame(rows)
 
 
 def rows_at(table: pd.DataFrame, column: str, values: Sequence[float]) -> pd.DataFrame:

@@ -20,6 +20,7 @@ import nbformat
 import papermill
 from jupyter_client.manager import KernelManager
 
+from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.atomic import atomic_path
 from vibroadhesion.pipeline.pages import write_index
 
@@ -95,7 +96,8 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
     """Render pages in one kernel, each from a fresh namespace, then write the index pages named in ``indexes``.
 
     ``parameters`` maps each page (the stem of ``notebooks/<page>.ipynb``) to its papermill parameters, in the
-    order of ``executed`` and ``html``, the paths of its executed notebook and of its HTML page.
+    order of ``executed`` and ``html``, the paths of its executed notebook and of its HTML page. The findings on an
+    index come from the artefacts its pages read (:func:`vibroadhesion.pipeline.front_page.findings`).
     """
     if not len(parameters) == len(executed) == len(html):
         raise ValueError(f"{len(parameters)} pages, {len(executed)} executed notebooks, {len(html)} HTML pages")
@@ -106,4 +108,16 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
             reset_namespace(manager)
             render_page(page, manager)
     for index in indexes:
-        write_index(index)
+        write_index(index, findings=front_page.findings(index_artefacts(parameters)))
+
+
+def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
+    """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
+
+    The validation page comes first among its index's pages, so its ``virtual_csv`` (every fixation) is the one read.
+    """
+    artefacts: dict[str, str] = {}
+    for values in parameters.values():
+        for name, path in values.items():
+            artefacts.setdefault(name, path)
+    return artefacts

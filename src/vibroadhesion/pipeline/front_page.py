@@ -1,0 +1,140 @@
+"""The findings on the report's index pages (results/report/index.html, validation_index.html), read from artefacts.
+
+Nothing here is typed in: the build (commit and its date, from git), the pull-off amplification of every model
+level against the SIMULATED pull-off at the test conditions (the virtual pull-off CSV), the fit (the fit JSON) and
+the validity of each level (the validation's error summary, when the ``validation`` target has built it). The date
+is the commit's, not the time of the build, so that the same tree gives the same page.
+"""
+
+from __future__ import annotations
+
+import html
+import subprocess
+from collections.abc import Mapping
+from pathlib import Path
+
+import pandas as pd
+
+from vibroadhesion.core import levels
+from vibroadhesion.pipeline import fit_report
+from vibroadhesion.pipeline.tables import Column, show, significant
+
+#: The validation's error summary: read when present (the default target does not build it and must not wait).
+VALIDATION_SUMMARY = Path("results/validation/rigid_error_summary.csv")
+
+AMPLIFICATION_COLUMNS = {
+    "level": Column("model level", format="text"),
+    "fixation": Column("fixation", format="text"),
+    "ratio_min": Column("P_cr/P_JKR, smallest"),
+    "ratio_max": Column("P_cr/P_JKR, largest"),
+    "error_min": Column("prediction/simulation − 1, from", format="rel"),
+    "error_max": Column("prediction/simulation − 1, to", format="rel"),
+    "points": Column("test conditions", format="int"),
+}
+
+VALIDITY_COLUMNS = {
+    "level": Column("model level", format="text"),
+    "max_error_experiments_applicable": Column("largest relative error at the test frequencies", format="rel"),
+    "max_error_applicable": Column("largest relative error, A ≤ 0.1 a_m", format="rel"),
+    "max_error_outside": Column("largest relative error, A > 0.1 a_m", format="rel"),
+    "within": Column("grid points within 5 %", format="text"),
+}
+
+
+def _git(repository: str | Path, *args: str) -> str:
+    """The output of ``git -C repository args`` (raises OSError or CalledProcessError)."""
+    return subprocess.run(["git", "-C", str(repository), *args], capture_output=True, text=True,
+                          check=True).stdout.strip()
+
+
+def build(repository: str | Path = ".") -> str:
+    """``commit <hash> of <date>`` of the tree the report is built from (``, with uncommitted changes``)."""
+    try:
+        commit, date = _git(repository, "log", "-1", "--format=%H %cs").split()
+        dirty = _git(repository, "status", "--porcelain", "--untracked-files=no", "--", "src", "workflow",
+                     "notebooks", "data")
+    except (OSError, subprocess.CalledProcessError, ValueError):
+        return "an unknown commit (not a git checkout)"
+    return f"commit {commit[:12]} of {date}" + (", with uncommitted changes" if dirty else "")
+
+
+def amplification(virtual_csv: str | Path) -> pd.DataFrame:
+    """Per fixation and level: P_cr/P_JKR over the test conditions and its error against the SIMULATED pull-off.
+
+    The simulation's own row gives its range (a virtual experiment: periodic steady states of Eqs. 4-11); each
+    prediction (Eq. 71 with its level's Abar_cr) is compared where the simulation found a pull-off.
+    """
+    virtual = pd.read_csv(virtual_csv)
+    out = []
+    for fixation, rows in virtual.groupby("fixation", sort=False):
+        ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
+        sim = rows[rows["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
+        simulated = ratio["simulation"].where(sim["status"].reindex(ratio.index) == "pulloff")
+        for name in [m for m in levels.names("virtual_pulloff") if m in ratio.columns]:
+            error = ratio[name] / simulated - 1
+            label = levels.level(name).label + (" (SIMULATED)" if name == "simulation" else "")
+            out.append({"level": label, "fixation": fixation, "ratio_min": ratio[name].min(),
+                        "ratio_max": ratio[name].max(),
+                        "error_min": None if name == "simulation" else error.min(),
+                        "error_max": None if name == "simulation" else error.max(),
+                        "points": int(error.notna().sum())})
+    return pd.DataFrame(out, columns=list(AMPLIFICATION_COLUMNS))
+
+
+def validity(summary_csv: str | Path) -> pd.DataFrame:
+    """Per level: the largest relative error against the simulation (test frequencies; applicable; outside)."""
+    summary = pd.read_csv(summary_csv)
+    order = [name for name in levels.names("validation_rigid") if name in set(summary["model"])]
+    summary = summary.set_index("model").loc[order].reset_index()
+    summary["level"] = [levels.level(name).label for name in summary["model"]]
+    summary["within"] = [f"{int(k)} of {int(n)}" for k, n in zip(summary["points_below_5pct"], summary["points"],
+                                                                   strict=True)]
+    return summary[list(VALIDITY_COLUMNS)]
+
+
+def _table(frame: pd.DataFrame, columns: Mapping[str, Column]) -> str:
+    return show(frame, columns)._repr_html_()
+
+
+def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY) -> str:
+    """The HTML of the findings: build, measured rows, the fit, the amplification per level, the validity per level.
+
+    ``artefacts`` are the papermill parameters of the index's pages (``fit_json``, ``virtual_csv``); the validity
+    comes from ``validation_summary`` when it exists (with a warning when it is older than the fit).
+    """
+    parts = [f"<p>Built from {html.escape(build())}.</p>"]
+    if "fit_json" in artefacts:
+        fit = fit_report.read_fit(artefacts["fit_json"])
+        used = (f"the figures use the <b>{html.escape(fit['figures_use'])}</b> fit (status: "
+                f"{html.escape(fit['fits'][fit['figures_use']]['status'])})" if fit["data_rows"] else
+                "nothing is fitted: the figures use the published parameters")
+        parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>)</h2><p>{fit['data_rows']} measured rows in "
+                  f"<code>data/pulloff.csv</code>; {used}.</p>",
+                  _table(fit_report.figures_fit(fit).drop(columns="reason"), fit_report.ESTIMATE_COLUMNS)]
+    if "virtual_csv" in artefacts:
+        parts += ["<h2>Pull-off amplification per model level against the SIMULATED pull-off "
+                  "(<a href=\"fig4.html\">Fig. 4</a>)</h2><p>P_cr/P_JKR over the test conditions (frequencies × "
+                  "amplitudes) of the virtual pull-off experiment, a simulation of the full model, not a measurement, "
+                  "and each level's relative error against it.</p>",
+                  _table(amplification(artefacts["virtual_csv"]), AMPLIFICATION_COLUMNS)]
+    parts.append(_validity_part(Path(artefacts.get("summary_csv", validation_summary)), artefacts.get("fit_json")))
+    return "\n".join(parts)
+
+
+def _validity_part(summary_csv: Path, fit_json: str | Path | None) -> str:
+    """The validity of each level, or how to build it; a warning when it is older than the fit."""
+    head = "<h2>Validity of each level against the simulation"
+    if not summary_csv.exists():
+        return (f"{head}</h2><p>Not built yet: run <code>snakemake -c2 validation</code> for the validation pages "
+                "(every level against the direct simulation).</p>")
+    stale = ""
+    if fit_json is not None and summary_csv.stat().st_mtime < Path(fit_json).stat().st_mtime:
+        stale = ("<p><b>Warning:</b> the validation is older than the fit; rerun <code>snakemake -c2 validation"
+                 "</code>.</p>")
+    table = validity(summary_csv)
+    best = table.loc[table["max_error_experiments_applicable"].idxmin()]
+    return (f"{head} (<a href=\"validation_index.html\">validation pages</a>)</h2>{stale}<p>Largest relative "
+            "errors of Ā, ā_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the periodic steady states of the full "
+            f"model. The most accurate level at the test frequencies, {html.escape(best['level'])}, errs by up to "
+            f"{significant(100 * best['max_error_experiments_applicable'], 2)} %.</p>"
+            + _table(table, VALIDITY_COLUMNS))

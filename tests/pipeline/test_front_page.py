@@ -1,0 +1,109 @@
+"""The front page: its numbers are those of the artefacts it reads, and it says what is not built yet.
+
+The artefacts are written here by hand (a virtual pull-off CSV, a fit summary, a validation error summary), so each
+expected number is arithmetic on the fixture: prediction / simulation - 1 and the shown roundings.
+"""
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from vibroadhesion.core import levels
+from vibroadhesion.pipeline import front_page
+from vibroadhesion.pipeline.pages import write_index
+from vibroadhesion.pipeline.steps.report import index_artefacts
+
+VIRTUAL = """fixation,kappa,zeta,frequency_hz,h1_um,model,status,pulloff_ratio,pulloff_mN,abar_m,abar_cr,steady_states
+rigid,,,200,20,simulation,pulloff,3.0,171.8,1.0,1.2,14
+rigid,,,200,40,simulation,pulloff,8.0,458.2,1.3,1.6,18
+rigid,,,200,60,simulation,contact_loss_before_extremum,,,,,3
+rigid,,,200,20,leading,ok,2.4,137.4,,,
+rigid,,,200,40,leading,ok,6.0,343.6,,,
+rigid,,,200,60,leading,ok,9.0,515.5,,,
+"""
+
+SUMMARY = ("model,max_error_applicable,max_error_outside,max_error_experiments_applicable,"
+           "max_error_experiments_outside,points,points_below_5pct\n") + """\
+refined,0.36319642951418363,0.12711986555662846,0.33834041556742633,,33,0
+leading,0.36319594834484814,0.1536646465138114,0.33813384611164277,,33,0
+exact_averaging,0.2296544227080406,0.28412306859331204,0.15149715242435424,,33,25
+"""
+
+
+def _fit_json(tmp_path: Path) -> Path:
+    parameters = {"w0": {"estimate": 0.2361234, "std_error": 0.001234, "unit": "J/m^2", "source": "fitted"},
+                  "n": {"estimate": 0.531, "std_error": 0.25, "unit": "1", "source": "fitted"},
+                  "v0": {"estimate": 4.45e-05, "std_error": None, "unit": "m/s",
+                         "source": "published (Fig. 4 caption)"}}
+    fit = {"data_rows": 7, "figures_use": "simulation", "published": {"w0": 0.236, "n": 0.531, "v0": 4.45e-05},
+           "fits": {"simulation": {"status": "fitted", "note": "", "v0_note": "", "free_parameters": ["w0", "n"],
+                                   "parameters": parameters, "rms_relative_residual": 2.693e-05}}}
+    path = tmp_path / "fit.json"
+    path.write_text(json.dumps(fit))
+    return path
+
+
+def test_amplification_is_each_level_against_the_simulated_pulloff(tmp_path: Path) -> None:
+    (tmp_path / "virtual.csv").write_text(VIRTUAL)
+    table = front_page.amplification(tmp_path / "virtual.csv").set_index("level")
+    leading = table.loc[levels.level("leading").label]
+    assert leading["error_min"] == pytest.approx(6.0 / 8.0 - 1, rel=1e-15)  # -0.25
+    assert leading["error_max"] == pytest.approx(2.4 / 3.0 - 1, rel=1e-15)  # -0.2
+    assert leading["points"] == 2  # the contact-loss condition is not compared
+    assert (leading["ratio_min"], leading["ratio_max"]) == (2.4, 9.0)
+    simulated = table.loc[levels.level("simulation").label + " (SIMULATED)"]
+    assert (simulated["ratio_min"], simulated["ratio_max"], simulated["points"]) == (3.0, 8.0, 2)
+
+
+def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
+    (tmp_path / "virtual.csv").write_text(VIRTUAL)
+    summary = tmp_path / "summary.csv"
+    summary.write_text(SUMMARY)
+    fit_json = _fit_json(tmp_path)
+    os.utime(summary, (os.stat(fit_json).st_mtime + 10,) * 2)  # validation newer than the fit: no warning
+    out = tmp_path / "index.html"
+    artefacts = {"fit_json": fit_json, "virtual_csv": tmp_path / "virtual.csv"}
+    write_index(out, findings=front_page.findings(artefacts, summary))
+    text = out.read_text()
+    assert "7 measured rows" in text and "0.2361\u00a0±\u00a00.0012" in text and "0.53\u00a0±\u00a00.25" in text
+    assert "4.45e-05 (fixed: published)" in text and "2.69e-05" in text
+    assert "-2.50e-01" in text and "-2.00e-01" in text  # leading against the simulated pull-off
+    assert "3.38e-01" in text and "1.51e-01" in text and "25 of 33" in text  # validation summary
+    assert "up to 15 %" in text  # the most accurate level at the test frequencies: exact averaging, 0.1515
+    assert text.index(levels.level("leading").label) < text.index(levels.level("refined").label)
+    assert 'href="fit.html"' in text and 'href="fig4.html"' in text and 'href="validation_index.html"' in text
+    assert "Warning" not in text and "Built from commit " in text
+
+
+def test_front_page_without_validation_says_how_to_build_it_and_warns_when_it_is_stale(tmp_path: Path) -> None:
+    fit_json = _fit_json(tmp_path)
+    missing = front_page.findings({"fit_json": fit_json}, tmp_path / "absent.csv")
+    assert "run <code>snakemake -c2 validation</code>" in missing and "validation_index.html" not in missing
+    summary = tmp_path / "summary.csv"
+    summary.write_text(SUMMARY)
+    os.utime(summary, (os.stat(fit_json).st_mtime - 10,) * 2)
+    assert "the validation is older than the fit" in front_page.findings({"fit_json": fit_json}, summary)
+
+
+def test_build_names_the_commit_not_the_time(tmp_path: Path) -> None:
+    assert front_page.build(tmp_path) == "an unknown commit (not a git checkout)"
+    here = front_page.build(Path(__file__).parent)
+    assert here.startswith("commit ") and " of 20" in here
+
+
+def test_marking_stale_pages_keeps_the_findings_of_the_index(tmp_path: Path) -> None:
+    out = tmp_path / "index.html"
+    write_index(out, findings="<p>finding 42</p>")
+    write_index(out, stale=["fig4"])  # what refresh_indexes does after a run
+    text = out.read_text()
+    assert text.count("<p>finding 42</p>") == 1 and "(out of date)" in text
+    write_index(out, findings="")
+    assert "finding 42" not in out.read_text()
+
+
+def test_an_index_reads_the_artefact_of_the_first_page_that_names_it() -> None:
+    pages = {"validation": {"virtual_csv": "all.csv", "summary_csv": "s.csv"},
+             "identifiability": {"virtual_csv": "rigid.csv", "fit_json": "fit.json"}}
+    assert index_artefacts(pages) == {"virtual_csv": "all.csv", "summary_csv": "s.csv", "fit_json": "fit.json"}
