@@ -77,8 +77,8 @@ rule validation:
 # After every run, finished or stopped by a failed job, the indexes mark the pages older than an artefact they
 # show: the report never presents a mix of outputs of two runs as one state.
 onsuccess:
-    mark_stale_pages()
+    refresh_report()
 
 
 onerror:
-    mark_stale_pages()
+    refresh_report()

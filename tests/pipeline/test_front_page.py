@@ -12,8 +12,8 @@ import pytest
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import front_page
-from vibroadhesion.pipeline.pages import write_index
-from vibroadhesion.pipeline.steps.report import index_artefacts
+from vibroadhesion.pipeline.pages import findings_of, write_index
+from vibroadhesion.pipeline.steps.report import index_artefacts, refresh_findings
 
 VIRTUAL = """fixation,kappa,zeta,frequency_hz,h1_um,model,status,pulloff_ratio,pulloff_mN,abar_m,abar_cr,steady_states
 rigid,,,200,20,simulation,pulloff,3.0,171.8,1.0,1.2,14
@@ -77,14 +77,16 @@ def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
     assert "Warning" not in text and "Built from commit " in text
 
 
-def test_front_page_without_validation_says_how_to_build_it_and_warns_when_it_is_stale(tmp_path: Path) -> None:
+def test_front_page_without_validation_says_how_to_build_it_and_with_it_links_it(tmp_path: Path) -> None:
+    """The validation runs at the published parameters, so a summary older than the fit is not stale: no warning."""
     fit_json = _fit_json(tmp_path)
     missing = front_page.findings({"fit_json": fit_json}, tmp_path / "absent.csv")
     assert "run <code>snakemake -c2 validation</code>" in missing and "validation_index.html" not in missing
     summary = tmp_path / "summary.csv"
     summary.write_text(SUMMARY)
     os.utime(summary, (os.stat(fit_json).st_mtime - 10,) * 2)
-    assert "the validation is older than the fit" in front_page.findings({"fit_json": fit_json}, summary)
+    built = front_page.findings({"fit_json": fit_json}, summary)
+    assert "validation_index.html" in built and "older than the fit" not in built
 
 
 def test_build_names_the_commit_not_the_time(tmp_path: Path) -> None:
@@ -107,3 +109,24 @@ def test_an_index_reads_the_artefact_of_the_first_page_that_names_it() -> None:
     pages = {"validation": {"virtual_csv": "all.csv", "summary_csv": "s.csv"},
              "identifiability": {"virtual_csv": "rigid.csv", "fit_json": "fit.json"}}
     assert index_artefacts(pages) == {"virtual_csv": "all.csv", "summary_csv": "s.csv", "fit_json": "fit.json"}
+
+
+def test_refresh_reads_the_findings_again_from_what_the_run_left(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """`snakemake -c2 all validation` may write the index before the validation summary exists: the end-of-run
+    refresh (Snakefile onsuccess) puts the validity in; an unchanged index is not rewritten; an index whose artefacts
+    are not all there (a run that stopped midway) keeps its findings."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "virtual.csv").write_text(VIRTUAL)
+    index = tmp_path / "index.html"
+    pages = {"fit": {"fit_json": str(_fit_json(tmp_path))}, "fig4": {"virtual_csv": str(tmp_path / "virtual.csv")}}
+    write_index(index, findings="<p>written by the report job</p>")
+    assert refresh_findings({str(index): pages}) == [str(index)]
+    assert "run <code>snakemake -c2 validation</code>" in findings_of(index)
+    front_page.VALIDATION_SUMMARY.parent.mkdir(parents=True)
+    front_page.VALIDATION_SUMMARY.write_text(SUMMARY)
+    assert refresh_findings({str(index): pages}) == [str(index)]
+    assert "validation_index.html" in findings_of(index)
+    assert refresh_findings({str(index): pages}) == []
+    (tmp_path / "virtual.csv").unlink()
+    before = index.read_text()
+    assert refresh_findings({str(index): pages}) == [] and index.read_text() == before

@@ -58,9 +58,19 @@ def parameter_inputs(wildcards):
     return FITTED if wildcards.parameters == "fitted" else PUBLISHED
 
 
-def mark_stale_pages():
-    """Mark on the indexes the pages missing or older than an artefact they show (pipeline.pages.refresh_indexes),
-    and print them: the Snakefile's onsuccess and onerror (PAGE_INPUTS of report.smk)."""
+def refresh_report():
+    """The Snakefile's onsuccess and onerror: the indexes' findings read again from the artefacts the run left
+    (pipeline.steps.report.refresh_findings, imported here: the numerics stack only once the jobs are done), then the
+    pages missing or older than an artefact they show marked on them (pipeline.pages.refresh_indexes) and printed."""
+    from vibroadhesion.pipeline.steps.report import refresh_findings
+
+    refresh_findings(
+        {
+            f"results/report/{index}.html": {stem: page_parameters(stem) for stem in pages}
+            for index, pages in REPORT_JOBS.values()
+            if index
+        }
+    )
     stale = refresh_indexes({page: list(inputs.values()) for page, inputs in PAGE_INPUTS.items()}, "results/report")
     if stale:
         print(f"report: out of date, marked on the index: {', '.join(stale)}", file=sys.stderr)

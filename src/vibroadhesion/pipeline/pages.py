@@ -74,7 +74,7 @@ def write_index(out: str | Path, stale: Collection[str] = (), findings: str | No
     stem = Path(out).stem
     if stem not in _INDEX_TEXT:
         raise ValueError(f"unknown index {out}: expected index.html or validation_index.html")
-    text = _index_html(stem, stale, _findings_of(out) if findings is None else findings)
+    text = _index_html(stem, stale, findings_of(out) if findings is None else findings)
     with atomic_path(out) as tmp:
         tmp.write_text(text, encoding="utf-8")
 
@@ -83,7 +83,7 @@ def write_index(out: str | Path, stale: Collection[str] = (), findings: str | No
 _FINDINGS = ("<!-- findings -->", "<!-- /findings -->")
 
 
-def _findings_of(index: str | Path) -> str:
+def findings_of(index: str | Path) -> str:
     """The findings of the index file ``index`` (empty if it does not exist or has none)."""
     text = Path(index).read_text(encoding="utf-8") if Path(index).exists() else ""
     start, end = text.find(_FINDINGS[0]), text.find(_FINDINGS[1])
@@ -157,6 +157,6 @@ def refresh_indexes(page_inputs: Mapping[str, Iterable[str | Path]], report_dir:
         if not index.exists():
             continue
         marked += [name for name, _ in (PAGES if stem == "index" else VALIDATION_PAGES) if name in stale]
-        if index.read_text(encoding="utf-8") != _index_html(stem, stale, _findings_of(index)):
+        if index.read_text(encoding="utf-8") != _index_html(stem, stale, findings_of(index)):
             write_index(index, stale)
     return marked

@@ -22,7 +22,7 @@ from jupyter_client.manager import KernelManager
 
 from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.atomic import atomic_path
-from vibroadhesion.pipeline.pages import write_index
+from vibroadhesion.pipeline.pages import findings_of, write_index
 
 #: The tag (and, here, the cell id) of the cell in which papermill injects a page's parameters.
 INJECTED = "injected-parameters"
@@ -109,6 +109,27 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
             render_page(page, manager)
     for index in indexes:
         write_index(index, findings=front_page.findings(index_artefacts(parameters)))
+
+
+def refresh_findings(indexes: Mapping[str, Mapping[str, Mapping[str, str]]]) -> list[str]:
+    """After every run (the Snakefile's onsuccess and onerror): rewrite the findings of each index that exists.
+
+    ``indexes`` maps each index file to the papermill parameters of its pages (as :func:`render`). The job that
+    writes an index may run before the artefacts of another target it reports on (the validity, built by the
+    ``validation`` target in the same run); read again at the end, the findings show what the run left. An index
+    whose artefacts are not all there (a run that stopped midway) keeps its findings: its stale marks say why. Each
+    index is rewritten only when its findings change; returns the indexes rewritten.
+    """
+    rewritten = []
+    for index, parameters in indexes.items():
+        artefacts = index_artefacts(parameters)
+        if not Path(index).exists() or not all(Path(path).exists() for path in artefacts.values()):
+            continue
+        text = front_page.findings(artefacts)
+        if text != findings_of(index):
+            write_index(index, findings=text)
+            rewritten.append(index)
+    return rewritten
 
 
 def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
