@@ -50,6 +50,21 @@ include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/report.smk"
 
 
+# Under a cluster executor (profiles/slurm) these run on the submit host, as the plot and report rules do
+# (`localrule: True`): each reads or gathers small files in seconds and under 200 MB (peak RSS and wall time measured
+# on a `snakemake -c2 all validation` run, listed in profiles/slurm/config.yaml), less than a job's start on a node.
+localrules:
+    ingest_setup,
+    ingest_pulloff,
+    simulation_rigid_grid,
+    virtual_pulloff_fixation,
+    virtual_pulloff_gather,
+    validation_errors,
+    validation_plot,
+    validation_compliant_plot,
+    identifiability,
+
+
 rule all:
     default_target: True
     input:

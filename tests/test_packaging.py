@@ -60,6 +60,15 @@ def test_every_pin_has_a_hash_and_the_header_compiles_extras_and_build() -> None
     assert "uv pip compile pyproject.toml --extra test --group build --generate-hashes" in LOCK.splitlines()[1]
 
 
+def test_the_slurm_executor_is_locked_in_the_cluster_group() -> None:
+    """profiles/slurm's executor plugin (and the jobstep plugin it runs inside a job) comes from the lock, hashed."""
+    assert "--group cluster" in LOCK.splitlines()[1]
+    (plugin,) = map(Requirement, PYPROJECT["dependency-groups"]["cluster"])
+    pins = _pins()
+    assert plugin.specifier.contains(pins[canonicalize_name(plugin.name)][0])
+    assert pins["snakemake-executor-plugin-slurm"][1] and pins["snakemake-executor-plugin-slurm-jobstep"][1]
+
+
 @pytest.mark.parametrize("tool", ["pytest", "ruff", "mypy", "snakefmt"])
 def test_test_tools_are_in_the_extra_and_the_lock(tool: str) -> None:
     assert tool in {Requirement(r).name for r in PYPROJECT["project"]["optional-dependencies"]["test"]}
