@@ -42,6 +42,7 @@ def test_relative_errors_in_scientific_notation(value: float, text: str) -> None
     (0.2361234, 0.001234, "0.2361\u00a0±\u00a00.0012"), (0.531, 0.25, "0.53\u00a0±\u00a00.25"),
     (1234.5, 56.0, "1234\u00a0±\u00a056"),
     (4.503121e-05, 1.87152e-07, "(4.503\u00a0±\u00a00.019)e-05"), (0.6473955, 1.343, "0.6\u00a0±\u00a01.3"),
+    (0.00336433, 191717168.0, "0.003364\u00a0±\u00a01.917e+08"),  # rounded to the error's decimal it would read 0
 ])
 def test_value_plus_minus_standard_error(value: float, se: float, text: str) -> None:
     assert tables.plus_minus(value, se) == text

@@ -115,13 +115,17 @@ _PM = "\u00a0±\u00a0"
 def plus_minus(value: float, std_error: float) -> str:
     """``value ± std_error``: the error to 2 significant figures, the value to the same last decimal.
 
-    Outside 1e-3 to 1e5 both share a power of ten: ``(4.450 ± 0.012)e-05``.
+    Outside 1e-3 to 1e5 both share a power of ten: ``(4.450 ± 0.012)e-05``. Where that rounding would show a
+    nonzero value as 0 (an error orders of magnitude above the value: a parameter the rows do not determine), both
+    are shown to 4 significant figures instead.
     """
     if not (math.isfinite(value) and math.isfinite(std_error)) or std_error <= 0:
         return f"{significant(value)}{_PM}{significant(std_error)}"
     exponent = 0 if value == 0 or 1e-3 <= abs(value) < 1e5 else math.floor(math.log10(abs(value)))
     scale = 10.0 ** exponent
     decimals = max(0, 1 - math.floor(math.log10(std_error / scale)))
+    if value != 0 and abs(value / scale) < 0.5 * 10.0**-decimals:
+        return f"{significant(value)}{_PM}{significant(std_error)}"
     text = f"{value / scale:.{decimals}f}{_PM}{std_error / scale:.{decimals}f}"
     return text if exponent == 0 else f"({text})e{exponent:+03d}"
 
