@@ -303,6 +303,9 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
         ax.plot(folds["omega_bar"], folds["A_over_am"], "kx", ms=6, label="fold" if len(folds) else None)
         tests = here[here["kind"] == "experiment"]
         ax.plot(tests["omega_bar"], tests["A_over_am"], "o", mfc="none", color="0.3", ms=5, label="200/300/400 Hz")
+        ended = here[~here["kind"].isin(["fold", "experiment"])]  # pieces that cannot be continued
+        ax.plot(ended["omega_bar"], ended["A_over_am"].clip(upper=10.0), "r^", ms=6,
+                label="branch ended (" + ", ".join(sorted(ended["kind"].unique())) + ")" if len(ended) else None)
         top = tests[tests["frequency_hz"] == highlight_hz]
         ax.plot(top["omega_bar"], top["A_over_am"], "o", color="k", ms=7, label=f"{highlight_hz:g} Hz (paper's dot)")
         ax.axvline(1.0, color="0.6", lw=0.6, ls=":")
