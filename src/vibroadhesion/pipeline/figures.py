@@ -313,8 +313,11 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
                title=rf"$\kappa$ = {kappa:g}")
         ax.set_ylim(1e-10, 10.0)
         shade_amplitude_regions(ax)
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="outside lower center", ncol=4, fontsize=8)
+    entries: dict[str, Any] = {}  # label -> handle over all panels: a branch ended in one panel only is listed too
+    for ax in axes[0]:
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            entries.setdefault(label, handle)
+    fig.legend(list(entries.values()), list(entries), loc="outside lower center", ncol=4, fontsize=8)
     return fig
 
 
