@@ -25,7 +25,6 @@ from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.models.compliant import (
-    NOTCH_FLOOR,
     amplitude_residual_on_closure,
     mean_balance_excess,
     newton_at_frequency,
@@ -34,10 +33,10 @@ from vibroadhesion.models.compliant import (
     residual_linear,
     solutions_by_scan,
     static_abar_0,
-    trace_response_curve,
 )
 from vibroadhesion.models.leading_pulloff import pulloff_closure
 from vibroadhesion.models.refined import nominal_point_contact, pulloff_refined
+from vibroadhesion.models.response_curve import NOTCH_FLOOR, trace_response_curve
 from vibroadhesion.numerics.continuation import (
     ContinuationSettings,
     _corrected_at,

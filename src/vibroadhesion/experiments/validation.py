@@ -36,8 +36,8 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState
-from vibroadhesion.models.compliant import trace_response_curve
 from vibroadhesion.models.refined import APPLICABILITY_LIMIT  # applied as a user would: to the refined A/a_m
+from vibroadhesion.models.response_curve import trace_response_curve
 from vibroadhesion.numerics.progress import ProgressBar
 
 #: The registry's functions this module resolves (vibroadhesion.core.levels): the rigid steady states.

@@ -35,15 +35,13 @@ logarithms of the two amplitudes. The anti-resonance of the base-excited system 
 at omega_bar = 1 with zeta = 0 the right-hand side of Eq. (90) vanishes, so xi = 0 forces
 Jc1 = 0, i.e. Abar = 0 exactly and abar_m equals its static value (Eq. 82). In x that point is at
 ln Abar = -infinity: the solution curve splits into a branch below and a branch above
-omega_bar = 1, each traced towards the notch until A/a_m falls below ``NOTCH_FLOOR``, and the
-point omega_bar = 1 itself is returned exactly.
+omega_bar = 1 (traced in :mod:`vibroadhesion.models.response_curve`, Fig. 5).
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
 from functools import partial
 
 import numpy as np
@@ -58,14 +56,10 @@ from vibroadhesion.core.records import Pulloff, SteadyState, stacked
 from vibroadhesion.models.leading_order import mean_indentation, pm_over_abs_pjkr
 from vibroadhesion.models.leading_pulloff import pulloff_closure, pulloff_from_internal_variable
 from vibroadhesion.models.refined import displacement_harmonics
-from vibroadhesion.numerics.continuation import ContinuationSettings, Curve, crossings, jacobian, locate_folds, trace
+from vibroadhesion.numerics.continuation import ContinuationSettings, jacobian
 from vibroadhesion.numerics.roots import NoRootError
 
 Array = NDArray[np.float64]
-
-#: A/a_m below which a branch approaching the anti-resonance notch (zeta = 0) is ended.
-NOTCH_FLOOR = 1e-12
-
 
 def mean_balance_parts(abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float) -> tuple[Array, Array]:
     """Eq. (87) as (positive part, J0 part): the equation is ``positive == negative``."""
@@ -327,114 +321,3 @@ def _no_root(omega_bar: float, equations: str, log_Abar: Array) -> str:
     """The message of a scan without a sign change (the grid ``log_Abar`` in ln Abar, Eqs. 87, 90)."""
     return (f"{equations}: no root at omega_bar = {omega_bar:.6g} for Abar in "
             f"[{math.exp(log_Abar[0]):.3g}, {math.exp(log_Abar[-1]):.3g}]")
-
-
-def _A_over_am(x: Array, fixation: Fixation, chi0: float) -> Array:
-    """A/a_m at points x = (ln omega_bar, ln abar_m, ln Abar) (corrected Eq. 98, omega_check = omega_bar/nu0)."""
-    return groups.A_over_am(np.exp(x[:, 2]), np.exp(x[:, 1]), chi0, np.exp(x[:, 0]) / fixation.nu0)
-
-
-# --- The response curve, Fig. 5 --------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class ResponseCurve:
-    """The traced solution curve: pieces (split at the exact anti-resonance) and their folds."""
-
-    fixation: Fixation
-    chi0: float  # Eq. (64)
-    eta1: float  # h1 / R, Eq. (65)
-    pieces: tuple[Curve, ...]  # points x = (ln omega_bar, ln abar_m, ln Abar) in trace order
-    folds: Array  # (k, 3) fold points in x
-
-    def A_over_am(self, x: Array) -> Array:
-        """A/a_m along points x (corrected Eq. 98)."""
-        return _A_over_am(x, self.fixation, self.chi0)
-
-    def count_at(self, omega_bar: float) -> int:
-        """Number of solutions on the traced curve at ``omega_bar`` (crossings of the curve)."""
-        return sum(len(crossings(piece, math.log(omega_bar))) for piece in self.pieces)
-
-    def steady_states_at(self, omega_bar: float, law: RateLaw) -> SteadyState:
-        """Every solution on the traced curve at ``omega_bar``, polished by Newton: one record of level ``refined``.
-
-        One element per crossing of the curve (:func:`newton_at_frequency`), the solutions by increasing
-        Abar, then any crossing where Newton did not converge (``not_converged``); no crossing (outside the
-        traced range) gives one element of status ``no_solution``.
-        """
-        s = math.log(omega_bar)
-        case = (self.fixation, self.chi0, self.eta1, law)
-        states = [newton_at_frequency(omega_bar, *case, (math.exp(g[1]), math.exp(g[2])))
-                  for piece in self.pieces for g in crossings(piece, s)]
-        if not states:
-            return SteadyState.unsolved("refined", "no_solution", f"the traced curve does not reach omega_bar = "
-                                        f"{omega_bar:.6g}", shape=(1,))
-        return stacked(sorted(states, key=_solutions_first_by_Abar))
-
-
-def _solutions_first_by_Abar(state: SteadyState) -> tuple[bool, float]:
-    """Sort key of the elements of a record: the solutions by increasing Abar, then the unsolved ones."""
-    return not bool(state.ok), float(state.Abar)
-
-
-def _start(omega_bar: float, fixation: Fixation, chi0: float, eta1: float, law: RateLaw) -> Array:
-    """The one solution x = (ln omega_bar, ln abar_m, ln Abar) of Eqs. (87), (90) at an end of the range."""
-    roots = solutions_by_scan(omega_bar, fixation, chi0, eta1, law, np.linspace(-60.0, 60.0, 2401))
-    found = int(np.count_nonzero(roots.ok))
-    if found != 1:
-        raise NoRootError(
-            f"Eqs. (87), (90): expected one solution at the end omega_bar = {omega_bar:.6g} to start from, "
-            f"found {found}"
-        )
-    return np.array([math.log(omega_bar), math.log(float(roots.abar_m[0])), math.log(float(roots.Abar[0]))])
-
-
-def trace_response_curve(
-    fixation: Fixation, chi0: float, eta1: float, law: RateLaw, omega_bar_range: tuple[float, float] = (0.1, 50.0),
-    settings: ContinuationSettings = ContinuationSettings(),
-) -> ResponseCurve:
-    """Trace Eqs. (87), (90) over ``omega_bar_range`` by pseudo-arclength continuation (Fig. 5).
-
-    One piece from the low end to the high end when zeta > 0; two pieces when zeta = 0, each from
-    one end towards omega_bar = 1, ended when A/a_m < NOTCH_FLOOR (the exact solution Abar = 0 at
-    omega_bar = 1 is added by the caller). Folds are located on every piece.
-    """
-    lo, hi = (math.log(v) for v in omega_bar_range)
-    res = partial(residual, fixation=fixation, chi0=chi0, eta1=eta1, law=law)
-    split = fixation.zeta == 0.0 and lo < 0.0 < hi  # the exact anti-resonance Abar = 0 at omega_bar = 1 (App. B)
-    into_notch = partial(_into_notch, fixation=fixation, chi0=chi0)
-    ends: list[tuple[float, float, Callable[[Array], bool]]]
-    if split:
-        ends = [(lo, 1.0, into_notch), (hi, -1.0, into_notch)]
-    else:
-        ends = [(lo, 1.0, lambda x: x[0] >= hi)]
-    pieces = []
-    for s0, sign, stop in ends:
-        curve = trace(res, _start(math.exp(s0), fixation, chi0, eta1, law), np.array([sign, 0.0, 0.0]), stop, settings)
-        pieces.append(_clip(curve, fixation, chi0, eta1, law, (lo, hi)))
-    folds = np.concatenate([locate_folds(res, c, settings) for c in pieces])
-    return ResponseCurve(fixation, chi0, eta1, tuple(pieces), folds)
-
-
-def _into_notch(x: Array, fixation: Fixation, chi0: float) -> bool:
-    """A/a_m < NOTCH_FLOOR at x = (ln omega_bar, ln abar_m, ln Abar) (Eq. 98 corrected).
-
-    A branch approaching the anti-resonance omega_bar = 1, where Eq. (90) has the exact solution
-    Abar = 0 for zeta = 0 (Appendix B).
-    """
-    return _A_over_am(x[None, :], fixation, chi0)[0] < NOTCH_FLOOR
-
-
-def _clip(curve: Curve, fixation: Fixation, chi0: float, eta1: float, law: RateLaw,
-          bounds: tuple[float, float]) -> Curve:
-    """Replace a last point beyond the range ``bounds`` of ln omega_bar by the solution at its end (Eqs. 87, 90)."""
-    lo, hi = bounds
-    last = curve.points[-1]
-    if lo <= last[0] <= hi:
-        return curve
-    edge = hi if last[0] > hi else lo
-    guess = (math.exp(last[1]), math.exp(last[2]))
-    abar_m, Abar = _newton(math.exp(edge), fixation, chi0, eta1, law, guess)
-    points = curve.points.copy()
-    points[-1] = [edge, math.log(abar_m), math.log(Abar)]
-    return Curve(points, curve.tangents, curve.residuals)

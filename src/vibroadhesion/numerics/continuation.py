@@ -17,7 +17,8 @@ to machine precision by a bracketed root of that component along the curve (:fun
 
 The Jacobian is taken by central differences from one vectorised call of F on the 2(N+1)
 perturbed points (``residual`` must accept an (m, N+1) array and return (m, N)). Failure of the
-corrector at the smallest step raises :class:`ContinuationError`: the trace never jumps.
+corrector at the smallest step raises :class:`ContinuationError`, which carries the curve traced so
+far: the trace never jumps.
 """
 
 from __future__ import annotations
@@ -34,7 +35,16 @@ Residual = Callable[[Array], Array]
 
 
 class ContinuationError(ArithmeticError):
-    """The corrector did not converge even at the smallest allowed step."""
+    """The corrector did not converge even at the smallest allowed step.
+
+    ``partial`` is the curve traced up to the failure (None where no step was taken), so that a caller
+    can report where the trace ended instead of losing it.
+    """
+
+    def __init__(self, message: str, partial: Curve | None = None) -> None:
+        """The failure ``message`` and the points traced before it."""
+        super().__init__(message)
+        self.partial = partial
 
 
 @dataclass(frozen=True)
@@ -57,6 +67,11 @@ class Curve:
     points: Array  # (m, N+1)
     tangents: Array  # (m, N+1)
     residuals: Array  # (m,) max-norm of F at each point
+
+
+def _as_curve(points: list[Array], tangents: list[Array], norms: list[float]) -> Curve:
+    """The :class:`Curve` of the points, tangents and residual norms accepted so far."""
+    return Curve(np.array(points), np.array(tangents), np.array(norms))
 
 
 def jacobian(residual: Residual, x: Array, fd_step: float) -> Array:
@@ -88,7 +103,8 @@ def correct(
     bordered = np.vstack([jac, normal])
     x = predictor.copy()
     for _ in range(settings.max_newton):
-        f = residual(x[None, :])[0]
+        with np.errstate(over="ignore", invalid="ignore"):  # a diverging iterate: non-finite F, rejected below
+            f = residual(x[None, :])[0]
         if not np.all(np.isfinite(f)):
             return None
         norm = float(np.max(np.abs(f)))
@@ -124,21 +140,23 @@ def trace(
             if accepted is None:
                 h *= 0.5
                 if h < settings.min_step:
-                    raise ContinuationError(f"corrector failed at step {h:.3g} from x = {x.tolist()}")
+                    raise ContinuationError(f"corrector failed at step {h:.3g} from x = {x.tolist()}",
+                                            _as_curve(points, tangents, norms))
         x_new, norm = accepted
         jac_new = jacobian(residual, x_new, settings.fd_step)
         t_new = tangent(jac_new, t)
         if t_new @ t < 0.5:  # tangent turned by more than 60 degrees: the step jumped a sharp bend
             h *= 0.5
             if h < settings.min_step:
-                raise ContinuationError(f"cannot resolve a sharp turn of the curve at x = {x.tolist()}")
+                raise ContinuationError(f"cannot resolve a sharp turn of the curve at x = {x.tolist()}",
+                                        _as_curve(points, tangents, norms))
             continue
         x, t, jac = x_new, t_new, jac_new
         points.append(x)
         tangents.append(t)
         norms.append(norm)
         h = min(settings.max_step, 1.5 * h) if t_new @ tangents[-2] > 0.99 else h
-    return Curve(np.array(points), np.array(tangents), np.array(norms))
+    return _as_curve(points, tangents, norms)
 
 
 def _corrected_at(

@@ -304,6 +304,9 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
         ax.plot(folds["omega_bar"], folds["A_over_am"], "kx", ms=6, label="fold" if len(folds) else None)
         tests = here[here["kind"] == "experiment"]
         ax.plot(tests["omega_bar"], tests["A_over_am"], "o", mfc="none", color="0.3", ms=5, label="200/300/400 Hz")
+        ended = here[~here["kind"].isin(["fold", "experiment"])]  # pieces that cannot be continued
+        ax.plot(ended["omega_bar"], ended["A_over_am"].clip(upper=10.0), "r^", ms=6,
+                label="branch ended (" + ", ".join(sorted(ended["kind"].unique())) + ")" if len(ended) else None)
         top = tests[tests["frequency_hz"] == highlight_hz]
         ax.plot(top["omega_bar"], top["A_over_am"], "o", color="k", ms=7, label=f"{highlight_hz:g} Hz (paper's dot)")
         ax.axvline(1.0, color="0.6", lw=0.6, ls=":")
@@ -311,8 +314,11 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
                title=rf"$\kappa$ = {kappa:g}")
         ax.set_ylim(1e-10, 10.0)
         shade_amplitude_regions(ax)
-    handles, labels = axes[0][0].get_legend_handles_labels()
-    fig.legend(handles, labels, loc="outside lower center", ncol=4, fontsize=8)
+    entries: dict[str, Any] = {}  # label -> handle over all panels: a branch ended in one panel only is listed too
+    for ax in axes[0]:
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            entries.setdefault(label, handle)
+    fig.legend(list(entries.values()), list(entries), loc="outside lower center", ncol=4, fontsize=8)
     return fig
 
 

@@ -12,7 +12,8 @@ import pandas as pd
 
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.models.compliant import ResponseCurve, static_abar_0, trace_response_curve
+from vibroadhesion.models.compliant import static_abar_0
+from vibroadhesion.models.response_curve import OPEN_ENDS, ResponseCurve, trace_response_curve
 
 FIG5_COLUMNS = ["chi0", "eta1", "nu0", "zeta", "kappa", "mu", "branch", "omega_bar", "Abar", "abar_m", "A_over_am"]
 FIG5_MARKER_COLUMNS = ["kind", "frequency_hz", *FIG5_COLUMNS]
@@ -38,22 +39,27 @@ def fig5_tables(
     omega_bar.
 
     ``branch`` names the monotone segment of the curve in trace order: "lower-k"/"upper-k" for the
-    two pieces below/above the exact anti-resonance (zeta = 0), "full-k" otherwise; k counts the
-    folds passed. The exact anti-resonance point (Abar = 0 at omega_bar = 1, zeta = 0) is a row
-    with branch "anti-resonance". The markers of the test frequencies are the solutions on the traced
-    curve there (:meth:`vibroadhesion.models.compliant.ResponseCurve.steady_states_at`), by increasing Abar.
+    two pieces below/above the exact anti-resonance (zeta = 0), "full-k" otherwise, and "<piece>_reverse-k"
+    for a part traced back (:func:`vibroadhesion.models.response_curve.trace_response_curve`); k counts the
+    folds passed. A piece that cannot be continued (``OPEN_ENDS``: it runs to unbounded amplitude, or the
+    corrector fails) has a marker of that ``kind`` at its last point. The exact anti-resonance point (Abar = 0
+    at omega_bar = 1, zeta = 0) is a row with branch "anti-resonance". The markers of the test frequencies are
+    the solutions on the traced curve there (:meth:`vibroadhesion.models.response_curve.ResponseCurve.
+    steady_states_at`), by increasing Abar.
     """
     law = GentSchultz(n)
     curves, markers, counts = [], [], []
     grid = np.geomspace(*omega_bar_range, count_points)
     for p in fixations:
         curve = trace_response_curve(p, chi0, eta1, law, omega_bar_range)
-        names = ("lower", "upper") if len(curve.pieces) == 2 else ("full",)
-        for name, piece in zip(names, curve.pieces, strict=True):
+        for name, piece, end in zip(curve.names, curve.pieces, curve.ends, strict=True):
             turns = np.sign(piece.tangents[1:, 0]) != np.sign(piece.tangents[:-1, 0])
             segment = np.concatenate([[0], np.cumsum(turns)])
             curves.append(_fig5_rows([f"{name}-{k}" for k in segment], piece.points, curve))
-        if len(curve.pieces) == 2:  # split at the exact anti-resonance: Abar = 0 there
+            if end in OPEN_ENDS:  # the piece could not be continued: its last point, with why
+                markers.append(_fig5_rows([f"{name}-{segment[-1]}"], piece.points[-1:], curve)
+                               .assign(kind=end, frequency_hz=np.nan))
+        if "lower" in curve.names:  # split at the exact anti-resonance: Abar = 0 there
             anti = np.array([[0.0, np.log(static_abar_0(p, chi0)), -np.inf]])
             curves.append(_fig5_rows(["anti-resonance"], anti, curve))
         markers.append(_fig5_rows(["fold"] * len(curve.folds), curve.folds, curve)

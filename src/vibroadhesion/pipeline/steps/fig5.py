@@ -36,5 +36,8 @@ def fig5_data(setup_json: str | Path, fit_json: str | Path | None, out: str | Pa
     for (kappa, zeta), rows in markers[markers["kind"] == "fold"].groupby(["kappa", "zeta"]):
         folds = ", ".join(f"{w:.6f}" for w in rows["omega_bar"])
         print(f"kappa = {kappa:g}, zeta = {zeta:g}: folds at omega_bar = {folds}")
+    for row in markers[~markers["kind"].isin(["fold", "experiment"])].itertuples():
+        print(f"kappa = {row.kappa:g}, zeta = {row.zeta:g}: branch {row.branch} ended ({row.kind}) at omega_bar = "
+              f"{row.omega_bar:.6f}, A/a_m = {row.A_over_am:.3g}")
     several = counts[counts["solutions"] > 1]
     print(f"{len(curves)} points traced; {len(several)} of {len(counts)} grid frequencies with more than one solution")
