@@ -13,6 +13,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import matplotlib.pyplot as plt
+import numpy as np
 import pandas as pd
 import pytest
 
@@ -95,3 +96,13 @@ def test_create_beside_never_reuses_an_existing_name(tmp_path: Path) -> None:
     names = {create_beside(target) for _ in range(50)}
     assert len(names) == 50
     assert all(p.exists() and p.stat().st_size == 0 for p in names)
+
+
+def test_csv_floats_are_the_shortest_text_that_reads_back_to_the_same_double(tmp_path: Path) -> None:
+    """Python's repr is the shortest round-tripping decimal (0.05, 4.45e-05; the old %.17g wrote
+    0.050000000000000003): the text of typed values stays as typed, and any double reads back bit for bit."""
+    values = np.random.default_rng(0).standard_normal(1000) * 10.0 ** np.random.default_rng(1).integers(-300, 300, 1000)
+    write_csv(pd.DataFrame({"x": [0.05, 4.45e-05, 20.0, *values]}), tmp_path / "t.csv")
+    lines = (tmp_path / "t.csv").read_text().splitlines()
+    assert lines[1:4] == ["0.05", "4.45e-05", "20.0"]
+    assert np.array_equal(pd.read_csv(tmp_path / "t.csv")["x"].to_numpy()[3:], values)

@@ -2,8 +2,8 @@
 
 Figures are written by :func:`vibroadhesion.pipeline.figures.save_figure`.
 
-Same inputs give the same bytes: CSVs use a fixed float format and line ending, and every file is
-written to a temporary name in its folder and moved into place
+Same inputs give the same bytes: CSVs write floats as repr (the shortest text that round-trips) with
+one line ending, and every file is written to a temporary name in its folder and moved into place
 (:func:`~vibroadhesion.pipeline.atomic.atomic_path`: mode 0o666 & ~umask, like any file the user
 creates), so a failed step leaves no partial output behind. Standard library only (pandas for
 types): a step that writes no figure does not pay for matplotlib.
@@ -24,9 +24,12 @@ __all__ = ["write_csv", "write_json"]
 
 
 def write_csv(table: pd.DataFrame, path: str | Path) -> None:
-    r"""CSV with 17 significant digits (round-trips doubles), '\n' line ends, no index."""
+    r"""CSV with each float as repr, '\n' line ends, no index.
+
+    repr is the shortest text that reads back to the same double: 0.05, not 0.050000000000000003.
+    """
     with atomic_path(path) as tmp:
-        table.to_csv(tmp, index=False, float_format="%.17g", lineterminator="\n")
+        table.to_csv(tmp, index=False, lineterminator="\n")
 
 
 def write_json(data: Any, path: str | Path) -> None:
