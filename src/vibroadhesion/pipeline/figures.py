@@ -198,11 +198,23 @@ def _mark_frequencies(ax: Axes, experiment_omega_check: Mapping[float, float]) -
 
 
 def shade_amplitude_regions(ax: Axes) -> None:
-    """Shade A > a_m (geometrically impossible) and A <= 0.1 a_m (the model applies) on an A/a_m axis."""
+    """Shade A > a_m (geometrically impossible) and A <= 0.1 a_m (the model applies) on an A/a_m axis.
+
+    The axis keeps the data's lower limit and reaches at least 2, so that the impossible region shows.
+    """
     lo, hi = ax.get_ylim()
-    ax.axhspan(1.0, max(hi, 10.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
-    ax.axhspan(min(lo, 1e-7), APPLICABILITY_LIMIT, color="C2", alpha=0.12, label=r"$A \leq 0.1\,a_m$: model applies")
-    ax.set_ylim(min(lo, 1e-7), max(hi, 10.0))
+    ax.axhspan(1.0, max(hi, 2.0), color="C3", alpha=0.15, label=r"$A > a_m$: impossible")
+    ax.axhspan(lo, APPLICABILITY_LIMIT, color="C2", alpha=0.12, label=r"$A \leq 0.1\,a_m$: model applies")
+    ax.set_ylim(lo, max(hi, 2.0))
+
+
+def legend_below(fig: Figure, axes: Sequence[Axes], **style: Any) -> None:
+    """One legend for ``axes`` below the panels (each label once, from the first panel that has it): off the data."""
+    entries: dict[str, Any] = {}
+    for ax in axes:
+        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
+            entries.setdefault(label, handle)
+    fig.legend(list(entries.values()), list(entries), loc="outside lower center", **style)
 
 
 def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float],
@@ -231,8 +243,7 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
     shade_amplitude_regions(ax_d)
     for ax in axes[1]:
         ax.set_xlabel(OMEGA_CHECK_AXIS)
-    axes.flat[0].legend()
-    ax_d.legend(loc="lower left")
+    legend_below(fig, [axes.flat[0], ax_d], ncol=4)
     return fig
 
 
@@ -283,7 +294,7 @@ def plot_fig8(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
         ax.set(xscale="log", xlabel=OMEGA_CHECK_AXIS, ylabel=label, title=f"({letter})")
     axes[0].axhline(1.0, color="k", lw=0.6, ls="--")
     axes[0].axhline(1.0 / 3.0, color="k", lw=0.6, ls=":")
-    axes[0].legend()
+    legend_below(fig, [axes[0]], ncol=6)
     return fig
 
 
@@ -314,11 +325,7 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
                title=rf"$\kappa$ = {kappa:g}")
         ax.set_ylim(1e-10, 10.0)
         shade_amplitude_regions(ax)
-    entries: dict[str, Any] = {}  # label -> handle over all panels: a branch ended in one panel only is listed too
-    for ax in axes[0]:
-        for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
-            entries.setdefault(label, handle)
-    fig.legend(list(entries.values()), list(entries), loc="outside lower center", ncol=4, fontsize=8)
+    legend_below(fig, axes[0], ncol=4, fontsize=8)  # a branch ended in one panel only is listed too
     return fig
 
 
@@ -383,7 +390,7 @@ def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
     ax.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$", ylabel=r"$A/a_m$",
            xlim=(sweep["omega_bar"].min(), sweep["omega_bar"].max()))
     shade_amplitude_regions(ax)
-    ax.legend(fontsize=7, loc="lower left")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # beside the data
     return fig
 
 
