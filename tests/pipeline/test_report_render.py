@@ -9,6 +9,7 @@ import nbformat
 import pytest
 from papermill.exceptions import PapermillExecutionError
 
+from vibroadhesion.pipeline.pages import VALIDATION_PAGES
 from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
 
 
@@ -71,3 +72,15 @@ def test_a_page_shows_outputs_and_no_code(tmp_path: Path) -> None:
     assert "marker_variable" not in html and "In&nbsp;[" not in html
     assert "marker_variable" in page.executed.read_text(encoding="utf-8")
 
+
+
+def test_a_page_has_its_title_and_a_link_back_to_its_index(tmp_path: Path) -> None:
+    """The title of pipeline.pages (not the notebook's file name) and a link to the index that lists the page."""
+    page = _page(tmp_path, "identifiability", "print(6 * 7)")
+    with shared_kernel() as manager:
+        render_page(page, manager)
+    html = page.html.read_text(encoding="utf-8")
+    title = dict(VALIDATION_PAGES)["identifiability"]
+    assert f"<title>Vibroadhesion: {title}</title>" in html.replace("&amp;", "&")
+    assert '<a href="validation_index.html">&larr; back to the report index</a>' in html
+    assert html.index("back to the report index") < html.index("<pre>42")

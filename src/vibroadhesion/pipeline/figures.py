@@ -103,23 +103,25 @@ def plot_fig3(table: pd.DataFrame, n: float, panel_exponents: Sequence[float]) -
     rows = table[np.isclose(table["n"], n)]
     Abar = rows["Abar"].to_numpy()
     asym = j_integrals_large_Abar(Abar, n)
-    for (label, column, sign), a, color in zip(
+    for (label, column, sign), a, color, width in zip(
         [(r"$\mathcal{J}_0$", "J0", 1), (r"$-\mathcal{J}_{c1}$", "Jc1", -1), (r"$\mathcal{J}_1$", "J1", 1)],
         asym,
         ["C0", "C1", "C2"],
+        [3.0, 1.8, 1.0],  # J0 and J1 coincide for Abar < 1 (both -> 1): the wider line stays visible beneath
         strict=True,
     ):
-        ax_a.loglog(Abar, sign * rows[column], color=color, label=label)
+        ax_a.loglog(Abar, sign * rows[column], color=color, lw=width, label=label)
         ax_a.loglog(Abar, sign * a, "--", color=color, lw=0.9, label=f"{label}, large-$\\bar A$ asymptote")
     ax_a.set_ylim(1e-4, None)
-    ax_a.set(xlabel=r"$\bar A$", title=f"(a) n = {n:.4g}")
+    ax_a.set(xlabel=r"$\bar A$", ylabel="J-integral (Eqs. 28, 29, 36)", title=f"(a) n = {n:.4g}")
     ax_a.legend(ncol=2)
     for k, exponent in enumerate(panel_exponents):
         rows = table[np.isclose(table["n"], exponent)]
         ax_b.loglog(rows["Abar"], rows["J0"], color=f"C{k}", label=rf"$\mathcal{{J}}_0$, n = {exponent:g}")
         ax_b.loglog(rows["Abar"], -rows["Jc1"], ":", color=f"C{k}", label=rf"$-\mathcal{{J}}_{{c1}}$, n = {exponent:g}")
     ax_b.set_ylim(1e-4, None)
-    ax_b.set(xlabel=r"$\bar A$", title="(b) effect of the exponent n")
+    ax_b.set(xlabel=r"$\bar A$", ylabel=r"$\mathcal{J}_0$ and $-\mathcal{J}_{c1}$",
+             title="(b) effect of the exponent n")
     ax_b.legend(ncol=2)
     return fig
 

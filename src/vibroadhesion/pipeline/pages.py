@@ -32,6 +32,18 @@ VALIDATION_PAGES: list[tuple[str, str]] = [
     ("benchmarks", "Speed against error: every model level, J-integrals, simulation, rule timings"),
 ]
 
+def page_title_and_index(stem: str) -> tuple[str, str]:
+    """The title of page ``stem`` and the index that lists it (``index`` or ``validation_index``).
+
+    A notebook that no index lists (one of your own) is titled by its stem and links to ``index``.
+    """
+    for pages, index in ((PAGES, "index"), (VALIDATION_PAGES, "validation_index")):
+        for name, title in pages:
+            if name == stem:
+                return title, index
+    return stem, "index"
+
+
 #: The report jobs: rule -> (the index it writes, or None; the pages it renders in one kernel). The default
 #: target's pages in two jobs, split by parameter set: Figs. 4 and 7 and the fit page show the measured rows and
 #: the fit (an edit of data/pulloff.csv reruns them; they also wait for the simulated pull-off, the longest chain

@@ -10,6 +10,7 @@ of its own. Modules imported by an earlier page stay imported, as in any Python 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -22,7 +23,7 @@ from jupyter_client.manager import KernelManager
 
 from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.atomic import atomic_path
-from vibroadhesion.pipeline.pages import findings_of, write_index
+from vibroadhesion.pipeline.pages import findings_of, page_title_and_index, write_index
 
 #: The tag (and, here, the cell id) of the cell in which papermill injects a page's parameters.
 INJECTED = "injected-parameters"
@@ -76,7 +77,8 @@ def render_page(page: Page, manager: KernelManager) -> None:
     source and stays executable; the executed notebook keeps both.
 
     ``page.parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell, in a cell
-    whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page.
+    whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page. The
+    page carries its title (:data:`~vibroadhesion.pipeline.pages.PAGES`) and a link back to its index.
     """
     with atomic_path(page.executed) as tmp:
         nb = papermill.execute_notebook(str(page.notebook), str(tmp), parameters=dict(page.parameters),
@@ -85,10 +87,17 @@ def render_page(page: Page, manager: KernelManager) -> None:
             if INJECTED in cell.metadata.get("tags", ()):
                 cell.id = INJECTED
         nbformat.write(nb, tmp)
-    body, _ = nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True,
-                                     exclude_output_prompt=True).from_notebook_node(nb)
+    title, index = page_title_and_index(page.notebook.stem)
+    exporter = nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True)
+    body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": f"Vibroadhesion: {title}"}})
     with atomic_path(page.html) as tmp:
-        tmp.write_text(body, encoding="utf-8")
+        tmp.write_text(with_index_link(body, index), encoding="utf-8")
+
+
+def with_index_link(body: str, index: str) -> str:
+    """The HTML page ``body`` with a link back to its index (``index.html`` or ``validation_index.html``) at the top."""
+    link = f'<p style="margin: 1em 2em"><a href="{index}.html">&larr; back to the report index</a></p>'
+    return re.sub(r"(<body[^>]*>)", lambda match: match.group(1) + link, body, count=1)
 
 
 def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str | Path], html: Sequence[str | Path],
