@@ -3,6 +3,7 @@
 Checked on small notebooks written here, executed in a real kernel (a few seconds).
 """
 
+import re
 from pathlib import Path
 
 import nbformat
@@ -84,3 +85,4 @@ def test_a_page_has_its_title_and_a_link_back_to_its_index(tmp_path: Path) -> No
     assert f"<title>Vibroadhesion: {title}</title>" in html.replace("&amp;", "&")
     assert '<a href="validation_index.html">&larr; back to the report index</a>' in html
     assert html.index("back to the report index") < html.index("<pre>42")
+    assert re.findall(r"<script[^>]*src=\"http[^\"]*\"", html) == [] and "cdnjs" not in html  # offline: nothing fetched

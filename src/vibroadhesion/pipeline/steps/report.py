@@ -28,6 +28,9 @@ from vibroadhesion.pipeline.pages import findings_of, page_title_and_index, writ
 #: The tag (and, here, the cell id) of the cell in which papermill injects a page's parameters.
 INJECTED = "injected-parameters"
 
+#: nbconvert templates of the pages: ``offline`` is JupyterLab's page without the scripts it fetches from a CDN.
+TEMPLATES = Path(__file__).resolve().parents[1] / "templates"
+
 #: The code that gives a running IPython kernel the namespace of a fresh one.
 RESET = "get_ipython().reset(new_session=True, aggressive=False)"
 
@@ -78,7 +81,8 @@ def render_page(page: Page, manager: KernelManager) -> None:
 
     ``page.parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell, in a cell
     whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page. The
-    page carries its title (:data:`~vibroadhesion.pipeline.pages.PAGES`) and a link back to its index.
+    page carries its title (:data:`~vibroadhesion.pipeline.pages.PAGES`) and a link back to its index, and loads
+    nothing from the network (template ``offline``: no MathJax, no require.js; the pages have no math or widgets).
     """
     with atomic_path(page.executed) as tmp:
         nb = papermill.execute_notebook(str(page.notebook), str(tmp), parameters=dict(page.parameters),
@@ -88,7 +92,8 @@ def render_page(page: Page, manager: KernelManager) -> None:
                 cell.id = INJECTED
         nbformat.write(nb, tmp)
     title, index = page_title_and_index(page.notebook.stem)
-    exporter = nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True)
+    exporter = nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True,
+                                      template_name="offline", extra_template_basedirs=[str(TEMPLATES)])
     body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": f"Vibroadhesion: {title}"}})
     with atomic_path(page.html) as tmp:
         tmp.write_text(with_index_link(body, index), encoding="utf-8")
