@@ -84,7 +84,9 @@ def report_inputs(pages):
     if "benchmarks" in pages:
         inputs["rule_tsvs"] = [getattr(rules, r).benchmark for r in TIMED_RULES]
     notebooks = [f"notebooks/{page}.ipynb" for page in pages]
-    return {**inputs, "notebooks": notebooks, "code": code("report", *notebooks)}
+    # The page template is code too: editing it re-renders the pages.
+    template = "src/vibroadhesion/pipeline/templates/offline/index.html.j2"
+    return {**inputs, "notebooks": notebooks, "code": code("report", *notebooks) + [template]}
 
 
 # One job per entry of REPORT_JOBS renders its pages in one kernel (pipeline.steps.report): starting a kernel per
