@@ -31,8 +31,8 @@ import pandas as pd
 
 from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.experiments.fitting import fit_gent_schultz
-from vibroadhesion.experiments.pulloff import GentSchultzParameters
-from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, jkr_mN, pulloff_problem
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
+from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, pulloff_problem
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff, traced_pulloff
 
 RADIUS = 51.5e-3

@@ -42,11 +42,10 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
-from scipy.optimize import least_squares
+from scipy.optimize import OptimizeResult, least_squares
 
 from vibroadhesion.core import levels
-from vibroadhesion.core.jkr import pulloff_force
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.progress import Heartbeat
 from vibroadhesion.numerics.roots import NoRootError
 
@@ -76,7 +75,7 @@ def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: n
 
     :func:`predict_pulloff` solves the level once per distinct condition; :class:`FitError` where it has no solution.
     """
-    out = np.full(h1.shape, -pulloff_force(params.w0, geometry["radius"]) * 1e3)
+    out = np.full(h1.shape, jkr_mN(params.w0, geometry["radius"]))
     dynamic = h1 > 0
     if np.any(dynamic):
         pulloff = predict_pulloff(model, params, freq[dynamic], h1[dynamic], **geometry)
@@ -126,15 +125,24 @@ def _least_squares(
         raise FitError(f"{model} fit of {free}: {exc}") from exc
     if result.status <= 0:
         raise FitError(f"{model} fit of {free} did not converge: {result.message}")
+    return fit_record(params_of(result.x), result, result.fun, free, (lo, hi))
+
+
+def fit_record(params: GentSchultzParameters, result: OptimizeResult, residuals: np.ndarray, free: tuple[str, ...],
+               log_bounds: tuple[np.ndarray, np.ndarray]) -> dict[str, Any]:
+    """The fit record of a finished search in ln(free) (every level's, the simulation's too).
+
+    ``params`` and ``residuals`` at ``result.x``; the free parameters within 1e-6 of ln of a bound are
+    ``at_bound``; s^2 = RSS/(m - p) over the m rows and p free parameters.
+    """
+    lo, hi = log_bounds
     on_bound = (result.x - lo < _ON_BOUND) | (hi - result.x < _ON_BOUND)
-    m, p = len(rows), len(free)
-    rss = float(result.fun @ result.fun)
     return {
-        "params": params_of(result.x),
+        "params": params,
         "jac": result.jac,
         "at_bound": [name for name, b in zip(free, on_bound, strict=True) if b],
-        "s2": rss / (m - p),
-        "residuals": result.fun,
+        "s2": float(residuals @ residuals) / (len(residuals) - len(free)),
+        "residuals": residuals,
         "nfev": int(result.nfev),
         "message": str(result.message),
     }
@@ -184,7 +192,7 @@ def fit_gent_schultz(
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frequencies = sorted(set(rows.loc[rows["h1_um"] > 0, "frequency_hz"].tolist()))
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
-    v0_note = _v0_note_before_fit(model, len(frequencies), len(rows))
+    v0_note = v0_note_before_fit(model, len(frequencies), len(rows))
     if rows.empty:
         return summary | _unfitted(published, "published", "no rows: published values kept", v0_note)
     forces = rows["pulloff_mN"].to_numpy(float)
@@ -216,7 +224,7 @@ def _unfitted(published: GentSchultzParameters, status: str, note: str, v0_note:
 def _fit_and_summarise(rows: pd.DataFrame, model: str, published: GentSchultzParameters, geometry: dict[str, float],
                        v0_note: str, max_relative_se_v0: float, noise_floor: float,
                        progress: Heartbeat | None) -> dict[str, Any]:
-    """Fit (w0, n), then v0 as well where it is identifiable; the summary (:func:`_fitted_summary`)."""
+    """Fit (w0, n), then v0 as well where it is identifiable; the summary (:func:`fitted_summary`)."""
     free: tuple[str, ...] = ("w0", "n")
     fit = _least_squares(rows, model, published, free, geometry, progress)
     if not v0_note:
@@ -227,10 +235,10 @@ def _fit_and_summarise(rows: pd.DataFrame, model: str, published: GentSchultzPar
                 v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
             else:
                 free, fit = ("w0", "n", "v0"), with_v0
-    return _fitted_summary(rows, fit, free, v0_note)
+    return fitted_summary(rows, fit, free, v0_note)
 
 
-def _v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
+def v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
     """Why v0 cannot be freed whatever the fit gives (empty if it may be).
 
     v0 enters only the frequency-dependent levels (the refined one: Eq. 106 through omega R/v0, Eq. 105),
@@ -247,7 +255,7 @@ def _v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
     return ""
 
 
-def _fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...], v0_note: str) -> dict[str, Any]:
+def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...], v0_note: str) -> dict[str, Any]:
     """Status, estimates, covariance (Gauss-Newton, J^T J at the optimum, in logarithms), residuals."""
     inside = tuple(name for name in free if name not in fit["at_bound"])
     columns = [free.index(name) for name in inside]

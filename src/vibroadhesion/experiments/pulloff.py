@@ -78,6 +78,11 @@ def predict_pulloff(
     return pulloff.taken(np.reshape(back, eta1_each.shape))
 
 
+def jkr_mN(w0: float, radius: float) -> float:
+    """|P_cr^JKR| = (3 pi/2) R w0 in mN (Eq. 70): the force scale of the pull-off ratio (Eq. 71)."""
+    return float(-pulloff_force(w0, radius)) * 1e3
+
+
 def pulloff_mN(pulloff: Pulloff, w0: float, radius: float) -> NDArray[np.float64]:
     """|P_cr| in mN: P_cr/P_cr^JKR times |P_cr^JKR| = (3 pi/2) R w0 (Eqs. 70–71)."""
     return -pulloff_force(w0, radius) * pulloff.pulloff_ratio * 1e3

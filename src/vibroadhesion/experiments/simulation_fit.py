@@ -48,18 +48,11 @@ from scipy.optimize import least_squares
 
 from vibroadhesion import simulation
 from vibroadhesion.core import groups
-from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState
-from vibroadhesion.experiments.fitting import (
-    _ON_BOUND,
-    BOUNDS,
-    FitError,
-    _fitted_summary,
-    _v0_note_before_fit,
-)
-from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.experiments.fitting import BOUNDS, FitError, fit_record, fitted_summary, v0_note_before_fit
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
 from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
 from vibroadhesion.numerics.progress import Heartbeat
 
@@ -83,11 +76,6 @@ def pulloff_problem(params: GentSchultzParameters, frequency_hz: float, h1_um: f
     """The rigidly fixed problem of one test (Eqs. 4-11): chi0 (Eq. 64), eta1 (Eq. 65), omega_check (Eq. 105)."""
     return Problem(GentSchultz(params.n), groups.chi0(params.w0, reduced_modulus, radius), h1_um * 1e-6 / radius,
                    float(groups.omega_check(frequency_hz, params.v0, radius)), base_offset=base_offset)
-
-
-def jkr_mN(w0: float, radius: float) -> float:
-    """|P_cr^JKR| = (3 pi/2) R w0 in mN (Eq. 70)."""
-    return float(-pulloff_force(w0, radius)) * 1e3
 
 
 def envelope_log_derivatives(params: GentSchultzParameters, frequency_hz: float, h1_um: float, at: Extremum,
@@ -263,13 +251,7 @@ def _least_squares(rows: pd.DataFrame, base: GentSchultzParameters, free: tuple[
     if found <= len(free):
         raise FitError(f"simulation fit of {free}: {found} of {len(families.pairs)} (f, h1) pairs have a simulated "
                        f"pull-off at the end of the search ({params}): too few to determine {len(free)} parameters")
-    on_bound = (result.x - lo < _ON_BOUND) | (hi - result.x < _ON_BOUND)
-    return {
-        "params": params, "jac": result.jac,
-        "at_bound": [name for name, b in zip(free, on_bound, strict=True) if b],
-        "s2": float(residuals @ residuals) / (len(rows) - len(free)), "residuals": residuals,
-        "nfev": int(result.nfev), "message": str(result.message),
-    }
+    return fit_record(params, result, residuals, free, (lo, hi))
 
 
 def _v0_relative_se(rows: pd.DataFrame, fit: dict[str, Any], families: _Families, noise_floor: float) -> float:
@@ -300,7 +282,7 @@ def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radi
     families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus}, progress=progress)
     free: tuple[str, ...] = ("w0", "n")
     fit = _least_squares(rows, published, free, families)
-    v0_note = _v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))
+    v0_note = v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))
     if not v0_note:
         rel_se = _v0_relative_se(rows, fit, families, noise_floor)
         if rel_se > max_relative_se_v0:
@@ -314,7 +296,7 @@ def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radi
             else:
                 free, fit = ("w0", "n", "v0"), with_v0
                 v0_note = f"v0 identifiable: relative standard error {rel_se:.3g}"
-    summary = _fitted_summary(rows, fit, free, v0_note)
+    summary = fitted_summary(rows, fit, free, v0_note)
     return summary | _row_statuses(rows, fit["params"], families, summary["note"])
 
 

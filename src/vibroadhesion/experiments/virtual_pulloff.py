@@ -90,11 +90,10 @@ from vibroadhesion import simulation
 from vibroadhesion.core import groups, levels
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import PHAT_JKR, contact_radius_ratio
-from vibroadhesion.core.jkr import pulloff_force
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import OrbitDiagnostics, Pulloff, PulloffStatus, SteadyState
-from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN, predict_pulloff
 from vibroadhesion.models.compliant import pulloff_by_scan
 from vibroadhesion.models.leading_pulloff import PULLOFF_SCAN, pulloff_closure, pulloff_leading
 from vibroadhesion.numerics.progress import ProgressBar
@@ -381,7 +380,6 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
     omega_check = float(groups.omega_check(frequency_hz, params.v0, radius))
-    jkr_mN = float(-pulloff_force(params.w0, radius)) * 1e3
     h1_um = np.asarray(h1_um, dtype=float)
     eta1 = h1_um * 1e-6 / radius
     rows = []
@@ -394,7 +392,7 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     if predictions:
         rows += _predicted_rows(params, frequency_hz, h1_um, fixation, radius=radius, reduced_modulus=reduced_modulus)
     table = pd.DataFrame(rows).assign(frequency_hz=frequency_hz, **fixation.csv_constants)
-    table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN
+    table["pulloff_mN"] = table["pulloff_ratio"] * jkr_mN(params.w0, radius)
     return table.reindex(columns=COLUMNS)
 
 

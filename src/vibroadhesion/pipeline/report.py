@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.core import groups, levels
-from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.experiments.pulloff import jkr_mN
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.tables import Column
 
@@ -59,7 +59,7 @@ def derived_table(setup_json: str | Path, fit_json: str | Path | None = None) ->
         ("E*", e_star, "Pa", "f_storage E / (1 - nu^2) (Sec. 3.4, App. A)"),
         ("chi0", groups.chi0(w0, e_star, r), "1", "(9 pi w0 / (E* R))^(1/3), Eq. (64)"),
         ("a_o", groups.contact_radius_scale(w0, e_star, r), "m", "(2 pi w0 R^2 / E*)^(1/3), Eq. (86)"),
-        ("|P_JKR|", float(-pulloff_force(w0, r)) * 1e3, "mN", "(3 pi / 2) R w0, Eq. (71)"),
+        ("|P_JKR|", jkr_mN(w0, r), "mN", "(3 pi / 2) R w0, Eq. (71)"),
     ]
     rows += [(f"eta1 at h1 = {h:g} um", float(groups.eta1(h * 1e-6, r)), "1", "h1 / R, Eq. (65)")
              for h in setup.amplitudes_um]

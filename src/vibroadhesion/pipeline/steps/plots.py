@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
-from vibroadhesion.core.jkr import pulloff_force
+from vibroadhesion.experiments.pulloff import jkr_mN
 from vibroadhesion.pipeline import figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
 from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, parameter_label, rig, setup_number
@@ -43,8 +43,8 @@ def fig4_plot(setup_json: Path_, fit_json: Path_, pulloff_csv: Path_, virtual_cs
     """
     setup = read_canonical_setup(setup_json)
     params = fitted(fit_json)
-    jkr_mN = float(-pulloff_force(params["w0"], setup.radius)) * 1e3
-    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN, pd.read_csv(virtual_csv))
+    fig = figures.plot_fig4(pd.read_csv(csv), read_canonical_pulloff(pulloff_csv), jkr_mN(params["w0"], setup.radius),
+                            pd.read_csv(virtual_csv))
     _save_named(fig, setup_json, fit_json, pdf, png)
 
 
