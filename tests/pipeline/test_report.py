@@ -99,3 +99,17 @@ def test_rule_timings_give_wall_and_cpu_time_and_peak_memory_of_each_rule(tmp_pa
     table = report.rule_timings([tsv])
     assert table.to_dict("records") == [{"rule": "fig3_data", "wall_s": 3.84, "cpu_s": 0.86, "max_rss_MB": 117.49}]
 
+
+def test_index_shows_each_page_figure_as_a_thumbnail_linking_to_the_page(tmp_path: Path) -> None:
+    """The run's figure of each page (relative to results/report/), inside a link to that page; the fit page, which
+    has none, by its title only."""
+    out = tmp_path / "index.html"
+    write_index(out)
+    text = out.read_text()
+    for stem in ("fig3", "fig5", "fig8"):
+        assert f'<a href="{stem}.html"><img src="../{stem}/{stem}.png"' in text
+    assert '<li><a href="fit.html">' in text and "fit.png" not in text
+    write_index(tmp_path / "validation_index.html")
+    validation = (tmp_path / "validation_index.html").read_text()
+    assert '<a href="validation.html"><img src="../validation/rigid_error_maps.png"' in validation
+    assert '<a href="benchmarks.html"><img src="../benchmarks/speed_vs_error.png"' in validation
