@@ -3,7 +3,8 @@
 Usage: python benchmarks/j_integrals.py [OUT_CSV [OUT_TXT]]
 
 Prints the table; writes it as CSV and text when paths are given. The 30-digit reference is
-the tests' own mpmath evaluation of Eqs. (28), (29), (36) (tests/mpmath_reference.py).
+the tests' own mpmath evaluation of Eqs. (28), (29), (36) (tests/mpmath_reference.py). Each method
+is timed REPEATS times, the two in turn (min and median), with the machine's load before and after.
 """
 
 import sys
@@ -13,12 +14,20 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 
 from mpmath_reference import j_integrals_mp  # noqa: E402
 
-from vibroadhesion.experiments.benchmarking import benchmark_j_integrals, format_table  # noqa: E402
+from vibroadhesion.experiments.benchmarking import (  # noqa: E402
+    benchmark_j_integrals,
+    format_table,
+    load_average,
+    load_note,
+)
 from vibroadhesion.pipeline.artefacts import write_csv  # noqa: E402
 from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 
-table = benchmark_j_integrals(j_integrals_mp)
-text = format_table(table)
+REPEATS = 5
+
+before = load_average()
+table = benchmark_j_integrals(j_integrals_mp, repeats=REPEATS)
+text = format_table(table, REPEATS, load_note(before))
 print(text, end="")
 if len(sys.argv) > 1:
     write_csv(table, sys.argv[1])

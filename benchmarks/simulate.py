@@ -3,7 +3,8 @@
 Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON]
 
 For each case it prints
-* the time per steady state (min and median of 5 of process CPU time, median of wall time),
+* the time per steady state (min and median of 5 of process CPU time, median of wall time), with the
+  machine's load before and after the timings (a shared machine: the minimum is the least disturbed run),
 * the periods integrated by the shooting,
 * the self-consistency error: the largest relative change of a_m, Abar, w_eff/w0 and Pm when
   rtol goes from the default 1e-12 to 1e-13,
@@ -33,7 +34,7 @@ import numpy as np
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.experiments.benchmarking import machine_description
+from vibroadhesion.experiments.benchmarking import load_average, load_note, machine_description
 from vibroadhesion.simulation import steady_state, transient
 
 CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5
@@ -114,16 +115,17 @@ def row(label, problem):
     return line
 
 
-def format_rows(rows):
-    header = (f"{'case':<26}{'omega_check':>12}{'status':>14}{'periods':>8}{'cpu min':>9}{'cpu med':>9}{'wall ms':>9}"
-              f"{'rtol 1e-13 diff':>16}{'|m|max':>11}{'transient periods':>18}{'transient s':>12}{'speed-up':>10}")
-    lines = [f"Shooting benchmark on {machine_description()}", "", header]
+def format_rows(rows, load):
+    """The table, at most 140 characters wide (a report page shows it unwrapped); "tr.": the brute-force transient."""
+    header = (f"{'case':<23}{'omega_check':>11}{'status':>13}{'periods':>8}{'cpu min':>9}{'cpu med':>9}{'wall ms':>9}"
+              f"{'rtol 1e-13 diff':>16}{'|m|max':>9}{'tr. periods':>12}{'tr. s':>12}{'speed-up':>9}")
+    lines = [f"Shooting benchmark on {machine_description()}", load, "", header]
     for r in rows:
-        text = (f"{r['case']:<26}{r['omega_check']:>12.0e}{r['status']:>14}{r['periods']:>8}"
+        text = (f"{r['case']:<23}{r['omega_check']:>11.0e}{r['status']:>13}{r['periods']:>8}"
                 f"{r['cpu_min_ms']:>9.2f}{r['cpu_ms']:>9.2f}{r['wall_ms']:>9.2f}")
         if "self_consistency" in r:
-            text += (f"{r['self_consistency']:>16.1e}{r['multiplier']:>11.6f}{r['transient_periods']:>18.3g}"
-                     f"{r['transient_s']:>12.3g}{r['speedup']:>10.3g}")
+            text += (f"{r['self_consistency']:>16.1e}{r['multiplier']:>9.6f}{r['transient_periods']:>12.3g}"
+                     f"{r['transient_s']:>12.3g}{r['speedup']:>9.3g}")
         lines.append(text)
     cpu = [r["cpu_ms"] for r in rows if r["status"] == "ok" and r["case"].startswith("rigid n=0.531")]
     lines += ["", f"rigid n = 0.531, ok: median {statistics.median(cpu):.2f} ms, max {max(cpu):.2f} ms CPU "
@@ -178,7 +180,9 @@ if __name__ == "__main__":
         at = args.index("--against")
         against = args[at + 1]
         del args[at : at + 2]
-    text = format_rows([row(*case) for case in cases()])
+    before = load_average()
+    rows = [row(*case) for case in cases()]
+    text = format_rows(rows, load_note(before))
     print(text, end="", flush=True)
     if against is not None:
         comparison = side_by_side(against)

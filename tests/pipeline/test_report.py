@@ -89,3 +89,27 @@ def test_virtual_pulloff_tables_give_one_table_per_fixation_with_errors_against_
     assert compliant.loc[(200, 20), "leading error"] == pytest.approx(6.0 / 5.0 - 1, rel=1e-15)
     assert rigid.loc[(200, 20), "SIMULATED"] == 4.0 and compliant.loc[(200, 20), "steady states"] == 30
     assert "80–80 %" in rigid_remark and "90–90 %" in compliant_remark
+
+
+def test_rule_timings_give_wall_and_cpu_time_and_peak_memory_of_each_rule(tmp_path: Path) -> None:
+    """The columns s, cpu_time and max_rss of Snakemake's benchmark file (one run of the rule), named by the file."""
+    tsv = tmp_path / "fig3_data.tsv"
+    tsv.write_text("s\th:m:s\tmax_rss\tmax_vms\tmax_uss\tmax_pss\tio_in\tio_out\tmean_load\tcpu_time\n"
+                   "3.84\t0:00:03\t117.49\t278.80\t88.57\t95.68\t0.03\t0.01\t18.77\t0.86\n")
+    table = report.rule_timings([tsv])
+    assert table.to_dict("records") == [{"rule": "fig3_data", "wall_s": 3.84, "cpu_s": 0.86, "max_rss_MB": 117.49}]
+
+
+def test_index_shows_each_page_figure_as_a_thumbnail_linking_to_the_page(tmp_path: Path) -> None:
+    """The run's figure of each page (relative to results/report/), inside a link to that page; the fit page, which
+    has none, by its title only."""
+    out = tmp_path / "index.html"
+    write_index(out)
+    text = out.read_text()
+    for stem in ("fig3", "fig5", "fig8"):
+        assert f'<a href="{stem}.html"><img src="../{stem}/{stem}.png"' in text
+    assert '<li><a href="fit.html">' in text and "fit.png" not in text
+    write_index(tmp_path / "validation_index.html")
+    validation = (tmp_path / "validation_index.html").read_text()
+    assert '<a href="validation.html"><img src="../validation/rigid_error_maps.png"' in validation
+    assert '<a href="benchmarks.html"><img src="../benchmarks/speed_vs_error.png"' in validation

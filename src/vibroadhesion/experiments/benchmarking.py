@@ -7,8 +7,10 @@ Two methods are measured on the same machine in one run:
   ``points=[pi/2]`` and ``epsrel=1e-12``, one Abar at a time (three integrals per Abar).
 
 Throughput is the number of Abar values for which all three integrals are returned per
-second; the error is the largest relative error (absolute where the reference is 0) of any of
-the three against a high-precision reference passed in by the caller.
+second, from the minimum and from the median wall time of repeated runs, the methods in turn
+(:func:`timed_in_turn`); the error is the largest relative error (absolute where the reference is
+0) of any of the three against a high-precision reference passed in by the caller. The machine is
+shared: every benchmark states its load (:func:`load_average`) before and after its timings.
 
 :func:`compare_j_integrals` times two or more versions of the rule (e.g. this checkout's and
 the one a change starts from) in turn, repeat after repeat, so that the machine's load hits
@@ -24,6 +26,7 @@ import statistics
 import time
 import warnings
 from collections.abc import Callable, Mapping, Sequence
+from functools import partial
 
 import numpy as np
 import pandas as pd
@@ -69,41 +72,68 @@ def machine_description() -> str:
     return f"{cpu}, {os.cpu_count()} logical cores, Python {platform.python_version()}, numpy {np.__version__}"
 
 
+def load_average() -> str:
+    """The machine's load: its 1, 5 and 15 min load averages (runnable processes) against its logical cores."""
+    one, five, fifteen = os.getloadavg()
+    return (f"load average {one:.2f} (1 min), {five:.2f} (5 min), {fifteen:.2f} (15 min) on {os.cpu_count()} "
+            "logical cores")
+
+
+def load_note(before: str) -> str:
+    """Two lines: the load before the timings (``before``, a :func:`load_average` taken then) and now, after them."""
+    return f"machine load before the timings: {before}\nmachine load after the timings:  {load_average()}"
+
+
+def timed_in_turn(calls: Mapping[str, Callable[[], object]], repeats: int) -> dict[str, list[float]]:
+    """Wall seconds of ``repeats`` runs of each of ``calls``, the calls in turn repeat after repeat.
+
+    On a loaded machine one timing says little: in turn, a change of load hits every call alike, and the minimum
+    (the run least disturbed) and the median of the repeats say how fast and how fast typically.
+    """
+    seconds: dict[str, list[float]] = {label: [] for label in calls}
+    for _ in range(repeats):
+        for label, call in calls.items():
+            start = time.perf_counter()
+            call()
+            seconds[label].append(time.perf_counter() - start)
+    return seconds
+
+
+def _quad_all(Abar: np.ndarray, n: float) -> None:
+    """:func:`j_integrals_quad` at each of ``Abar`` (the baseline's throughput run)."""
+    for a in Abar:
+        j_integrals_quad(float(a), n)
+
+
 def benchmark_j_integrals(
     reference: Reference,
     exponents: Sequence[float] = (0.05, 0.531, 4.0),
     error_Abar: Sequence[float] = (0.0, 1e-12, 1e-3, 0.3, 1.0, 3.0, 30.0, 1e3, 1e5, 1e7, 1e10),
     throughput_size: int = 200_000,
     quad_size: int = 60,
+    repeats: int = 5,
 ) -> pd.DataFrame:
-    """Table of throughput and maximal error of both methods (one row per method and n)."""
+    """Throughput (minimum and median time of ``repeats``, in turn) and maximal error of both methods, per n.
+
+    The speed-ups over quad are minimum over minimum and median over median.
+    """
     rows = []
     error_points = np.asarray(error_Abar, dtype=float)
-    timing_abar = np.logspace(-3, 10, throughput_size)
-    quad_abar = np.logspace(-3, 10, quad_size)
+    sizes = {"fixed": throughput_size, "quad": quad_size}
     for n in exponents:
         ref = np.array([[float(v) for v in reference(float(a), n)] for a in error_points])
-        fast = np.stack(j_integrals(error_points, n), axis=1)
-        slow = np.array([j_integrals_quad(float(a), n) for a in error_points])
-        start = time.perf_counter()
-        j_integrals(timing_abar, n)
-        fast_rate = throughput_size / (time.perf_counter() - start)
-        start = time.perf_counter()
-        for a in quad_abar:
-            j_integrals_quad(float(a), n)
-        quad_rate = quad_size / (time.perf_counter() - start)
-        rows.append({"method": f"fixed rule ({len(folded_rule()[0])} nodes)", "n": n, "evaluations_per_s": fast_rate,
-                     "max_relative_error": _max_error(fast, ref), "speedup_vs_quad": fast_rate / quad_rate})
-        rows.append({"method": "scipy quad (epsrel 1e-12)", "n": n, "evaluations_per_s": quad_rate,
-                     "max_relative_error": _max_error(slow, ref), "speedup_vs_quad": 1.0})
+        errors = {"fixed": _max_error(np.stack(j_integrals(error_points, n), axis=1), ref),
+                  "quad": _max_error(np.array([j_integrals_quad(float(a), n) for a in error_points]), ref)}
+        seconds = timed_in_turn({"fixed": partial(j_integrals, np.logspace(-3, 10, throughput_size), n),
+                                 "quad": partial(_quad_all, np.logspace(-3, 10, quad_size), n)}, repeats)
+        per_s = {k: (sizes[k] / min(t), sizes[k] / statistics.median(t)) for k, t in seconds.items()}
+        for key, method in (("fixed", f"fixed rule ({len(folded_rule()[0])} nodes)"),
+                            ("quad", "scipy quad (epsrel 1e-12)")):
+            rows.append({"method": method, "n": n, "evaluations_per_s_min_time": per_s[key][0],
+                         "evaluations_per_s_median_time": per_s[key][1], "max_relative_error": errors[key],
+                         "speedup_vs_quad_min": per_s[key][0] / per_s["quad"][0],
+                         "speedup_vs_quad_median": per_s[key][1] / per_s["quad"][1]})
     return pd.DataFrame(rows)
-
-
-def _timed_seconds(rule: Rule, Abar: np.ndarray, n: float) -> float:
-    """Wall seconds of one call of ``rule`` on the whole array."""
-    start = time.perf_counter()
-    rule(Abar, n)
-    return time.perf_counter() - start
 
 
 def compare_j_integrals(
@@ -128,12 +158,9 @@ def compare_j_integrals(
     rows = []
     for n in exponents:
         ref = np.array([[float(v) for v in reference(float(a), n)] for a in error_points])
-        seconds: dict[str, list[float]] = {label: [] for label in rules}
         for rule in rules.values():
             rule(timing_abar[:1000], n)
-        for _ in range(repeats):
-            for label, rule in rules.items():
-                seconds[label].append(_timed_seconds(rule, timing_abar, n))
+        seconds = timed_in_turn({label: partial(rule, timing_abar, n) for label, rule in rules.items()}, repeats)
         first = next(iter(rules))
         for label, rule in rules.items():
             rows.append({"rule": label, "n": n, "evaluations_per_s_min_time": size / min(seconds[label]),
@@ -155,10 +182,13 @@ def format_comparison(table: pd.DataFrame, repeats: int) -> str:
     return "\n".join(lines) + "\n"
 
 
-def format_table(table: pd.DataFrame) -> str:
-    """Plain-text table for the terminal and the log."""
-    lines = [f"J-integral benchmark on {machine_description()}", "",
-             f"{'method':<28}{'n':>7}{'evals/s':>14}{'max rel err':>14}{'speed-up':>11}"]
+def format_table(table: pd.DataFrame, repeats: int, load: str) -> str:
+    """Plain-text table of :func:`benchmark_j_integrals` (``repeats`` per method, in turn) with the ``load`` line."""
+    lines = [f"J-integral benchmark on {machine_description()}, {repeats} repeats in turn", load, "",
+             f"{'method':<28}{'n':>7}{'evals/s, min t':>16}{'median t':>10}{'max rel err':>13}"
+             f"{'speed-up min':>14}{'median':>8}"]
     for row in table.itertuples():
-        lines.append(f"{row.method:<28}{row.n:>7g}{row.evaluations_per_s:>14.4g}{row.max_relative_error:>14.2e}{row.speedup_vs_quad:>11.0f}")
+        lines.append(f"{row.method:<28}{row.n:>7g}{row.evaluations_per_s_min_time:>16.4g}"
+                     f"{row.evaluations_per_s_median_time:>10.4g}{row.max_relative_error:>13.2e}"
+                     f"{row.speedup_vs_quad_min:>14.0f}{row.speedup_vs_quad_median:>8.0f}")
     return "\n".join(lines) + "\n"

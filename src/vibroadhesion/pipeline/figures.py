@@ -2,7 +2,8 @@
 
 Each ``plot_figN`` draws the table that :mod:`vibroadhesion.experiments.figure_tables` computed (and nothing it
 would have to recompute with a solver), so restyling a plot never reruns a solve. :func:`save_figure` writes PDF and
-PNG without time stamps. The only module of the package that imports matplotlib.
+PNG without time stamps. With :mod:`vibroadhesion.pipeline.error_maps` (the validation's error maps, in this
+style), the only modules of the package that import matplotlib.
 """
 
 from __future__ import annotations
@@ -20,7 +21,6 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
-from matplotlib.patches import Rectangle  # noqa: E402
 
 from vibroadhesion.core.integrals import j_integrals_large_Abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
@@ -307,11 +307,7 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
     kappas = sorted(curves["kappa"].unique())
     fig, axes = plt.subplots(1, len(kappas), figsize=(4.6 * len(kappas), 4.6), layout="constrained", squeeze=False)
     for ax, kappa in zip(axes[0], kappas, strict=True):
-        for k, (zeta, rows) in enumerate(curves[curves["kappa"] == kappa].groupby("zeta", sort=True)):
-            for j, (branch, seg) in enumerate(rows[rows["A_over_am"] > 0].groupby("branch", sort=False)):
-                middle = branch.endswith("-1")  # between two folds: the unstable middle branch of a saddle-node pair
-                ax.plot(seg["omega_bar"], seg["A_over_am"], color=f"C{k}", ls="--" if middle else "-",
-                        label=rf"$\zeta$ = {zeta:g}" if j == 0 else None)
+        _plot_fig5_curves(ax, curves[curves["kappa"] == kappa])
         here = markers[markers["kappa"] == kappa]
         folds = here[here["kind"] == "fold"]
         ax.plot(folds["omega_bar"], folds["A_over_am"], "kx", ms=6, label="fold" if len(folds) else None)
@@ -327,48 +323,47 @@ def plot_fig5(curves: pd.DataFrame, markers: pd.DataFrame, highlight_hz: float) 
                title=rf"$\kappa$ = {kappa:g}")
         ax.set_ylim(1e-10, 10.0)
         shade_amplitude_regions(ax)
+        if len(folds):
+            fold_inset(ax, curves[curves["kappa"] == kappa], folds)
     legend_below(fig, axes[0], ncol=4, fontsize=8)  # a branch ended in one panel only is listed too
     return fig
 
 
-# --- Validation: every model level against the simulation ------------------------------------
+def _plot_fig5_curves(ax: Axes, curves: pd.DataFrame) -> None:
+    """A/a_m against omega_bar (Eqs. 87, 90), one colour per zeta; the unstable middle branch dashed."""
+    for k, (zeta, rows) in enumerate(curves.groupby("zeta", sort=True)):
+        for j, (branch, seg) in enumerate(rows[rows["A_over_am"] > 0].groupby("branch", sort=False)):
+            middle = branch.endswith("-1")  # between two folds: the unstable middle branch of a saddle-node pair
+            ax.plot(seg["omega_bar"], seg["A_over_am"], color=f"C{k}", ls="--" if middle else "-",
+                    label=rf"$\zeta$ = {zeta:g}" if j == 0 else None)
 
 
-def plot_validation_maps(
-    grid: pd.DataFrame, errors: pd.DataFrame, experiment_omega_check: Mapping[float, float]
-) -> Figure:
-    """One error map per model level.
+#: Where the zoom on the folds of Fig. 5 sits in its panel (axes fraction: left, bottom, width, height): the lower
+#: right, below the curves' high-frequency tail (A/a_m < 1e-5 there, the curves lie above 1e-4).
+FOLD_INSET = (0.55, 0.05, 0.42, 0.36)
 
-    The largest relative error over Abar, abar_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the simulation, per (h1,
-    omega_check); cells outside the paper's applicability rule (refined A/a_m > 0.1) hatched, cells where the
-    simulation loses contact left blank.
+
+def fold_inset(ax: Axes, curves: pd.DataFrame, folds: pd.DataFrame) -> Axes:
+    """An inset of ``ax`` zooming on the folds (saddle-node points of Eqs. 87, 90) on a linear omega_bar axis.
+
+    At decade scale the two folds of a panel are a few per cent apart in omega_bar and the S between them is a
+    vertical stroke; the inset spans the folds plus their distance on each side (at least 2 % of omega_bar) and the
+    A/a_m the curves take there, so the three branches and the folds separate.
     """
-    worst = errors.groupby(["model", "h1_um", "omega_check"], sort=True).agg(
-        error=("relative_error", "max"), applicable=("applicable", "first")).reset_index()
-    models = [m for m in dict.fromkeys(grid["model"]) if m != "simulation"]
-    amplitudes = sorted(grid["h1_um"].unique())
-    omegas = sorted(grid["omega_check"].unique())
-    fig, axes = plt.subplots(1, len(models), figsize=(3.3 * len(models), 3.6), layout="constrained", sharey=True)
-    for ax, model in zip(np.atleast_1d(axes), models, strict=True):
-        rows = worst[worst["model"] == model]
-        cells = np.full((len(amplitudes), len(omegas)), np.nan)
-        for r in rows.itertuples():
-            cells[amplitudes.index(r.h1_um), omegas.index(r.omega_check)] = r.error
-        image = ax.imshow(np.log10(cells), origin="lower", aspect="auto", cmap="viridis", vmin=-6, vmax=0)
-        for r in rows.itertuples():
-            i, j = amplitudes.index(r.h1_um), omegas.index(r.omega_check)
-            ax.text(j, i, f"{100 * r.error:.2g}%", ha="center", va="center", fontsize=6,
-                    color="w" if r.error < 1e-2 else "k")
-            if not r.applicable:
-                ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, fill=False, hatch="///", lw=0, color="C3"))
-        ax.set_xticks(range(len(omegas)), [f"{w:.2g}" for w in omegas], rotation=90, fontsize=7)
-        ax.set_yticks(range(len(amplitudes)), [f"{h:g}" for h in amplitudes])
-        ax.set(title=model, xlabel=OMEGA_CHECK_AXIS)
-    np.atleast_1d(axes)[0].set_ylabel(r"$h_1$ (µm)")
-    fig.colorbar(image, ax=axes, label="log10 max relative error vs simulation", shrink=0.9)
-    fig.suptitle("Error against the direct simulation (hatched: refined A/a_m > 0.1; blank: no steady state); "
-                 "test frequencies: " + ", ".join(f"{f:g} Hz" for f in sorted(experiment_omega_check)), fontsize=8)
-    return fig
+    lo, hi = float(folds["omega_bar"].min()), float(folds["omega_bar"].max())
+    pad = max(hi - lo, 0.02 * hi)
+    near = curves[curves["omega_bar"].between(lo - pad, hi + pad) & (curves["A_over_am"] > 0)]["A_over_am"]
+    inset = ax.inset_axes(FOLD_INSET)
+    _plot_fig5_curves(inset, curves)
+    inset.plot(folds["omega_bar"], folds["A_over_am"], "kx", ms=5)
+    inset.set(xlim=(lo - pad, hi + pad), yscale="log", ylim=(near.min() / 1.5, near.max() * 1.5))
+    inset.tick_params(labelsize=6)
+    inset.set_title("zoom on the folds (linear " + r"$\bar\omega$)", fontsize=6.5, pad=2)
+    ax.indicate_inset_zoom(inset, edgecolor="0.3")
+    return inset
+
+
+# --- Validation: every model level against the simulation ------------------------------------
 
 
 def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:

@@ -32,6 +32,16 @@ VALIDATION_PAGES: list[tuple[str, str]] = [
     ("benchmarks", "Speed against error: every model level, J-integrals, simulation, rule timings"),
 ]
 
+#: The figure of each page, as its thumbnail on the index: a path relative to results/report/ (the run's figure, not a
+#: copy). A page without one (the fit page draws its plot only with measured rows; identifiability is tables) is
+#: listed by its title alone.
+THUMBNAILS: dict[str, str] = {
+    **{f"fig{k}": f"../fig{k}/fig{k}.png" for k in range(3, 9)},
+    "validation": "../validation/rigid_error_maps.png",
+    "benchmarks": "../benchmarks/speed_vs_error.png",
+}
+
+
 def page_title_and_index(stem: str) -> tuple[str, str]:
     """The title of page ``stem`` and the index that lists it (``index`` or ``validation_index``).
 
@@ -106,7 +116,7 @@ def _index_html(stem: str, stale: Collection[str], findings: str) -> str:
     """The text of the index ``stem`` (:func:`write_index`)."""
     subtitle, preamble = _INDEX_TEXT[stem]
     pages = PAGES if stem == "index" else VALIDATION_PAGES
-    items = "\n".join(f'    <li><a href="{html.escape(name)}.html">{html.escape(title)}</a>'
+    items = "\n".join(f'    <li>{_thumbnail(name)}<a href="{html.escape(name)}.html">{html.escape(title)}</a>'
                       f'{_STALE_MARK if name in stale else ""}</li>' for name, title in pages)
     warning = ""
     if any(name in stale for name, _ in pages):
@@ -121,7 +131,12 @@ def _index_html(stem: str, stale: Collection[str], findings: str) -> str:
 <style>body {{ font-family: sans-serif; max-width: 60em; margin: 2em auto; line-height: 1.5; }}
 .stale {{ color: #a00; }}
 table {{ border-collapse: collapse; font-size: 0.9em; }} th, td {{ padding: 0.2em 0.6em; }}
-th {{ border-bottom: 1px solid #888; }}</style></head>
+th {{ border-bottom: 1px solid #888; }}
+ul.pages {{ list-style: none; padding: 0; display: grid; grid-template-columns: repeat(auto-fill, minmax(17em, 1fr));
+  gap: 1em; }}
+ul.pages img {{ display: block; box-sizing: border-box; width: 100%; height: 10em; object-fit: contain;
+  border: 1px solid #ccc; }}
+</style></head>
 <body>
   <h1>An asymptotic model of vibroadhesion — {subtitle}</h1>
   <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>. Every page is a
@@ -131,7 +146,7 @@ th {{ border-bottom: 1px solid #888; }}</style></head>
   {warning}
   {_FINDINGS[0]}{findings}{_FINDINGS[1]}
   <h2>Pages</h2>
-  <ul>
+  <ul class="pages">
 {items}
   </ul>
 </body>
@@ -140,6 +155,14 @@ th {{ border-bottom: 1px solid #888; }}</style></head>
 
 
 _STALE_MARK = ' <strong class="stale">(out of date)</strong>'
+
+
+def _thumbnail(name: str) -> str:
+    """The thumbnail of page ``name`` (:data:`THUMBNAILS`) linking to the page, or nothing."""
+    if name not in THUMBNAILS:
+        return ""
+    return (f'<a href="{html.escape(name)}.html"><img src="{html.escape(THUMBNAILS[name])}" '
+            f'alt="figure of the page {html.escape(name)}"></a>')
 
 
 def stale_pages(page_inputs: Mapping[str, Iterable[str | Path]], report_dir: str | Path) -> list[str]:

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 from vibroadhesion.experiments.pulloff import jkr_mN
-from vibroadhesion.pipeline import figures
+from vibroadhesion.pipeline import error_maps, figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
 from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, parameter_label, rig, setup_number
 
@@ -109,8 +109,8 @@ def all_figures(inputs: Mapping[str, Path_], outputs: Mapping[str, Path_], panel
 def validation_plot(setup_json: Path_, fit_json: Path_ | None, grid_csv: Path_, errors_csv: Path_, pdf: Path_,
                     png: Path_) -> None:
     """Error maps of every model level against the simulation on the rigid grid."""
-    fig = figures.plot_validation_maps(pd.read_csv(grid_csv), pd.read_csv(errors_csv),
-                                       _test_frequencies(setup_json, fit_json))
+    fig = error_maps.plot_validation_maps(pd.read_csv(grid_csv), pd.read_csv(errors_csv),
+                                          _test_frequencies(setup_json, fit_json))
     figures.save_figure(fig, pdf, png)
 
 
