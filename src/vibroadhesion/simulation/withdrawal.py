@@ -21,13 +21,15 @@ What the instrument records: the load-cell force, in units of E* a_o^3/R (Eq. 4'
 * compliant fixation: the spring force, mu/c_o^3 - (kappa/c_o) xbar = (mu/(kappa c_o^2) - xbar)/(c_o/kappa)
   (Eq. 3' without its inertia and damping terms: m g - k x_s in units of E* a_o^3/R), equal to Phat statically.
 
-The pull-off is the most tensile load-cell force over the whole withdrawal, located between the
-accepted steps by a bounded Brent minimisation on re-integrated states (to 1e-10 in tau), with its
-tau and base offset. Along with it, the most tensile one-period mean of the load-cell force (the
-reading of a load cell that averages over a period), from the quadratures of the compiled state over
-each period [2 pi k, 2 pi (k+1)] and a parabola through the three periods around the smallest: as
-V -> 0 it tends to the quasi-static pull-off of :mod:`vibroadhesion.experiments.virtual_pulloff` (the
-most tensile mean force of the family of steady states).
+The pull-off is the most tensile load-cell force over the whole withdrawal: every interval of accepted
+steps where its rate dF/dtau turns from negative to positive holds a local minimum, estimated by the
+cubic Hermite interpolant through the interval's ends; the _CANDIDATES lowest estimates are refined by
+Brent's method on dF/dtau = 0 at re-integrated states (to 1e-12 in tau), with its tau and base offset.
+Along with it, the most tensile one-period mean of the load-cell force (the reading of a load cell that
+averages over a period), from the quadratures of the compiled state over each period [2 pi k, 2 pi (k+1)]
+and a parabola through the three periods around the smallest: as V -> 0 it tends to the quasi-static
+pull-off of :mod:`vibroadhesion.experiments.virtual_pulloff` (the most tensile mean force of the family
+of steady states).
 
 Status (:data:`WithdrawalStatus`): ``pulloff`` when the period-mean force passed a tensile minimum
 before the contact was lost; ``detached_before_mean_extremum`` when the contact was lost first (e.g.
@@ -45,7 +47,7 @@ from typing import Literal, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
-from scipy.optimize import minimize_scalar
+from scipy.optimize import brentq
 
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.simulation import kernel
@@ -63,8 +65,8 @@ _PHAT_QUADRATURE = 6
 _XI_QUADRATURE = 19
 #: Steps allowed per period (a period of the steady state takes ~100-300).
 _STEPS_PER_PERIOD = 20_000
-#: Periods whose most tensile accepted step is refined: successive periods have nearly equal force
-#: minima (they differ by ~ramp 2 pi dPhat/dbase_offset), and the accepted steps alone may rank them wrongly.
+#: Candidate minima refined: successive periods have nearly equal force minima (they differ by ~ramp 2 pi
+#: dF/dbase_offset), which the cubic Hermite estimates rank to O(step^4) only.
 _CANDIDATES = 4
 
 
@@ -88,15 +90,16 @@ def ramp_rate(problem: Problem, speed_ratio: float) -> float:
 
 
 class _Best(NamedTuple):
-    """The period holding the most tensile load-cell force at an accepted step, and that step."""
+    """A candidate of the most tensile load-cell force: an interval of accepted steps of one period."""
 
-    force: float
+    force: float  # its estimate (cubic Hermite through the interval's ends), or the sampled value
     period: Period
     constants: Array
     tau0: float  # tau at the start of that period
     taus: Array
     cores: Array
-    step: int  # the accepted step of the period with the most tensile force
+    step: int  # the interval [taus[step], taus[step + 1]] where dF/dtau changes sign, or the sampled step
+    bracketed: bool  # whether dF/dtau changes sign from - to + in that interval
 
 
 def cell_forces(period: Period, constants: Array, taus: Array, cores: Array) -> Array:
@@ -112,6 +115,22 @@ def cell_forces(period: Period, constants: Array, taus: Array, cores: Array) -> 
     return np.asarray(2.0 * abar * d - (2.0 / 3.0) * abar**3, dtype=float)
 
 
+def cell_force_rates(period: Period, constants: Array, taus: Array, cores: Array) -> Array:
+    """dF/dtau of the load-cell force of :func:`cell_forces` (Eqs. 3', 4', 6', 11').
+
+    Compliant: -xbar'/(c_o/kappa). Rigid: dPhat/dtau = 2 abar' deltabar + 2 abar deltabar' - 2 abar^2 abar' with
+    abar' = x/speed_scale (Eq. 6') and deltabar' = -ramp - etahat cos tau.
+    """
+    m = period.m
+    if m.compliant:
+        return np.asarray(-cores[:, 1] * period.x_scale / m.compliance, dtype=float)
+    abar = (period.b0 + period.v_scale * cores[:, -1]) / m.speed_scale
+    d = constants[_OFFSET] - constants[_RAMP] * taus - m.etahat * np.sin(taus)
+    a_rate = kernel.speeds(abar, d, m.inv_n, m.log_cap) / m.speed_scale
+    d_rate = -constants[_RAMP] - m.etahat * np.cos(taus)
+    return np.asarray(2.0 * a_rate * (d - abar * abar) + 2.0 * abar * d_rate, dtype=float)
+
+
 def _period_mean(period: Period, y: Array) -> float:
     """One-period mean of the load-cell force from the quadratures of the full state (Eqs. 3', 4')."""
     m = period.m
@@ -120,24 +139,36 @@ def _period_mean(period: Period, y: Array) -> float:
     return float(y[_PHAT_QUADRATURE] / TWO_PI)
 
 
-def _force_at(tau: float, best: _Best, lo: float, start: Array, rtol: float) -> float:
-    """Load-cell force at ``tau`` integrated from ``start`` at ``lo`` in the best period (Eqs. 3', 6', 4')."""
+#: Points per interval at which the cubic Hermite estimate of a force minimum is evaluated (a ranking only).
+_HERMITE = np.linspace(0.0, 1.0, 17)
+
+
+def _interval_minima(taus: Array, forces: Array, rates: Array) -> tuple[Array, Array]:
+    """(intervals where dF/dtau goes from - to +, cubic Hermite estimate of the minimum in each)."""
+    j = np.flatnonzero((rates[:-1] < 0.0) & (rates[1:] >= 0.0))
+    h, s = (taus[j + 1] - taus[j])[:, None], _HERMITE[None, :]
+    f0, f1, g0, g1 = forces[j, None], forces[j + 1, None], rates[j, None] * h, rates[j + 1, None] * h
+    cubic = (f0 * (1 + 2 * s) * (1 - s) ** 2 + g0 * s * (1 - s) ** 2 + f1 * s * s * (3 - 2 * s)
+             + g1 * s * s * (s - 1))
+    return j, cubic.min(axis=1)
+
+
+def _rate_at(tau: float, best: _Best, rtol: float) -> float:
+    """dF/dtau at ``tau`` integrated from the start of the candidate's interval (Eqs. 3', 6', 4')."""
+    lo, state = float(best.taus[best.step]), best.cores[best.step]
     if tau > lo:
-        start = kernel.integrate(best.constants, start, lo, tau, rtol, _STEPS_PER_PERIOD, -math.inf).y
-    return float(cell_forces(best.period, best.constants, np.array([tau]), start[None, :])[0])
+        state = kernel.integrate(best.constants, state, lo, tau, rtol, _STEPS_PER_PERIOD, -math.inf).y
+    return float(cell_force_rates(best.period, best.constants, np.array([tau]), state[None, :])[0])
 
 
 def _refine(best: _Best, rtol: float) -> tuple[float, float]:
-    """(force, local tau) of the most tensile load-cell force near the best step: Brent on re-integrated states."""
-    taus, cores, i = best.taus, best.cores, best.step
-    lo, hi = float(taus[max(i - 1, 0)]), float(taus[min(i + 1, len(taus) - 1)])
-    if hi <= lo:
+    """(force, local tau) of the candidate: the root of dF/dtau in its interval (Brent on re-integrated states)."""
+    lo, start = float(best.taus[best.step]), best.cores[best.step]
+    if not best.bracketed:
         return best.force, lo
-    result = minimize_scalar(_force_at, bounds=(lo, hi), args=(best, lo, cores[max(i - 1, 0)], rtol),
-                             method="bounded", options={"xatol": 1e-10})
-    if result.fun < best.force:
-        return float(result.fun), float(result.x)
-    return best.force, float(taus[i])
+    root = float(brentq(_rate_at, lo, float(best.taus[best.step + 1]), args=(best, rtol), xtol=1e-12))
+    state = kernel.integrate(best.constants, start, lo, root, rtol, _STEPS_PER_PERIOD, -math.inf).y
+    return float(cell_forces(best.period, best.constants, np.array([root]), state[None, :])[0]), root
 
 
 def _parabola_minimum(values: list[float], k: int) -> tuple[float, float]:
@@ -164,10 +195,13 @@ class _Trace:
         """Note the accepted steps of one period (and its mean if it completed)."""
         self.steps += len(run.taus) - 1
         forces = cell_forces(period, constants, run.taus, run.cores)
-        i = int(np.argmin(forces))
-        if len(self.best) < _CANDIDATES or forces[i] < self.best[-1].force:
-            candidate = _Best(float(forces[i]), period, constants, tau0, run.taus, run.cores, i)
-            self.best = sorted([*self.best, candidate], key=attrgetter("force"))[:_CANDIDATES]
+        steps, estimates = _interval_minima(run.taus, forces, cell_force_rates(period, constants, run.taus, run.cores))
+        candidates = [_Best(float(f), period, constants, tau0, run.taus, run.cores, int(j), True)
+                      for j, f in zip(steps, estimates, strict=True)]
+        if not candidates:
+            i = int(np.argmin(forces))
+            candidates = [_Best(float(forces[i]), period, constants, tau0, run.taus, run.cores, i, False)]
+        self.best = sorted([*self.best, *candidates], key=attrgetter("force"))[:_CANDIDATES]
         if run.code == kernel.REACHED:
             self.means.append(_period_mean(period, run.y))
 
