@@ -46,7 +46,7 @@ from operator import attrgetter
 from typing import Literal, NamedTuple
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from vibroadhesion.core.problem import Problem
@@ -143,14 +143,14 @@ def _period_mean(period: Period, y: Array) -> float:
 _HERMITE = np.linspace(0.0, 1.0, 17)
 
 
-def _interval_minima(taus: Array, forces: Array, rates: Array) -> tuple[Array, Array]:
+def _interval_minima(taus: Array, forces: Array, rates: Array) -> tuple[NDArray[np.intp], Array]:
     """(intervals where dF/dtau goes from - to +, cubic Hermite estimate of the minimum in each)."""
     j = np.flatnonzero((rates[:-1] < 0.0) & (rates[1:] >= 0.0))
     h, s = (taus[j + 1] - taus[j])[:, None], _HERMITE[None, :]
     f0, f1, g0, g1 = forces[j, None], forces[j + 1, None], rates[j, None] * h, rates[j + 1, None] * h
     cubic = (f0 * (1 + 2 * s) * (1 - s) ** 2 + g0 * s * (1 - s) ** 2 + f1 * s * s * (3 - 2 * s)
              + g1 * s * s * (s - 1))
-    return j, cubic.min(axis=1)
+    return j, np.asarray(cubic.min(axis=1), dtype=float)
 
 
 def _rate_at(tau: float, best: _Best, rtol: float) -> float:
