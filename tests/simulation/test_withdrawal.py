@@ -99,3 +99,14 @@ def test_contact_kept_within_the_period_budget_is_reported(rigid_200hz: tuple[Pr
 def test_speed_must_be_positive() -> None:
     with pytest.raises(ValueError):
         withdraw(Problem(GentSchultz(N_PUBLISHED), CHI0, 0.0, 1e6), 0.0)
+
+
+def test_excitation_switched_off_is_the_rate_dependent_jkr_pulloff() -> None:
+    # switched off from the start, a vibrating problem withdrawn from the static state is the h1 = 0 one
+    vibrating = Problem(GentSchultz(N_PUBLISHED), CHI0, ETA1_20UM, 1e6, base_offset=0.5)
+    off = withdraw(vibrating, 0.5, initial_state=[sim.static_state(vibrating).abar_0], excitation_off_below=1.0)
+    force, _ = rate_dependent_jkr_pulloff_mp(0.5, 0.5 / vibrating.c_o, N_PUBLISHED)
+    assert off.force == pytest.approx(float(force), rel=1e-8)
+    # switched off once the base passed 0, the contact first vibrates: a different, more tensile history
+    later = withdraw(vibrating, 0.5, initial_state=[sim.static_state(vibrating).abar_0], excitation_off_below=0.0)
+    assert later.force < off.force

@@ -59,6 +59,7 @@ WithdrawalStatus = Literal["pulloff", "detached_before_mean_extremum", "not_deta
 #: Index of the withdrawal ramp and of the variational switch in the kernel's constants.
 _RAMP = kernel.CONSTANTS.index("ramp")
 _OFFSET = kernel.CONSTANTS.index("base_offset")
+_ETAHAT = kernel.CONSTANTS.index("etahat")
 _VARIATIONAL = kernel.CONSTANTS.index("variational")
 #: Index of the quadrature of Phat (rigid) and of xi (compliant) in the full compiled state.
 _PHAT_QUADRATURE = 6
@@ -111,7 +112,7 @@ def cell_forces(period: Period, constants: Array, taus: Array, cores: Array) -> 
     abar = (period.b0 + period.v_scale * cores[:, -1]) / m.speed_scale
     if m.compliant:
         return np.asarray((m.force_offset - cores[:, 0] * period.x_scale) / m.compliance, dtype=float)
-    d = constants[_OFFSET] - constants[_RAMP] * taus - m.etahat * np.sin(taus)
+    d = constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * np.sin(taus)
     return np.asarray(2.0 * abar * d - (2.0 / 3.0) * abar**3, dtype=float)
 
 
@@ -125,9 +126,9 @@ def cell_force_rates(period: Period, constants: Array, taus: Array, cores: Array
     if m.compliant:
         return np.asarray(-cores[:, 1] * period.x_scale / m.compliance, dtype=float)
     abar = (period.b0 + period.v_scale * cores[:, -1]) / m.speed_scale
-    d = constants[_OFFSET] - constants[_RAMP] * taus - m.etahat * np.sin(taus)
+    d = constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * np.sin(taus)
     a_rate = kernel.speeds(abar, d, m.inv_n, m.log_cap) / m.speed_scale
-    d_rate = -constants[_RAMP] - m.etahat * np.cos(taus)
+    d_rate = -constants[_RAMP] - constants[_ETAHAT] * np.cos(taus)
     return np.asarray(2.0 * a_rate * (d - abar * abar) + 2.0 * abar * d_rate, dtype=float)
 
 
@@ -213,11 +214,14 @@ class _Trace:
 
 
 def withdraw(problem: Problem, speed_ratio: float, *, initial_state: ArrayLike | None = None,
-             max_periods: int = 100_000, rtol: float = 1e-11, contact_loss_abar: float = 1e-3) -> Withdrawal:
+             max_periods: int = 100_000, rtol: float = 1e-11, contact_loss_abar: float = 1e-3,
+             excitation_off_below: float = -math.inf) -> Withdrawal:
     """Withdraw the base of ``problem`` at V = ``speed_ratio`` v0 from its base offset to detachment (module docstring).
 
     Starts from ``initial_state`` (abar,) or (xbar, xbar', abar) at tau = 0 (the periodic steady state at
     ``problem.base_offset``, :func:`vibroadhesion.simulation.steady_state`), or from the static state.
+    ``excitation_off_below``: the excitation is switched off (etahat = 0 in Eq. 11) from the first period that
+    starts at a base offset below it, the Discussion's suggestion of a time-dependent excitation (default: never).
     """
     if not (math.isfinite(speed_ratio) and speed_ratio > 0):
         raise ValueError(f"speed_ratio must be positive, got {speed_ratio}")
@@ -231,6 +235,8 @@ def withdraw(problem: Problem, speed_ratio: float, *, initial_state: ArrayLike |
         constants = period.kernel_constants.copy()
         offset = problem.base_offset - ramp * TWO_PI * k  # Eq. (11') at the start of period k
         constants[_OFFSET], constants[_RAMP], constants[_VARIATIONAL] = offset, ramp, 0.0
+        if offset < excitation_off_below:
+            constants[_ETAHAT] = 0.0
         run = kernel.integrate(constants, np.array(period.full_start()), 0.0, TWO_PI, rtol, _STEPS_PER_PERIOD,
                                contact_loss_abar)
         code = run.code
