@@ -98,9 +98,9 @@ def _limit(speeds: np.ndarray, deviation: np.ndarray, tolerance: float) -> tuple
     """Largest V/v0 below which every simulated speed is within ``tolerance`` (log-interpolated), and a note."""
     inside = np.abs(deviation) <= tolerance
     if not inside[0]:
-        return math.nan, f"not within {tolerance:g} even at the slowest simulated speed {speeds[0]:g}"
+        return math.nan, f"not within {100 * tolerance:g} % even at the slowest simulated speed {speeds[0]:g} v0"
     if inside.all():
-        return math.nan, f"within {tolerance:g} up to the fastest simulated speed {speeds[-1]:g}"
+        return math.nan, f"within {100 * tolerance:g} % up to the fastest simulated speed {speeds[-1]:g} v0"
     k = int(np.argmin(inside))  # first speed outside
     lo, hi = np.log(speeds[k - 1]), np.log(speeds[k])
     d_lo, d_hi = math.log(abs(deviation[k - 1]) or 1e-300), math.log(abs(deviation[k]))

@@ -406,25 +406,24 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
     period-mean force passed its extremum (the instantaneous reading).
     """
     fixations = list(dict.fromkeys(sweep["fixation"]))
-    fig, axes = plt.subplots(1, len(fixations), figsize=(5.0 * len(fixations), 4.2), layout="constrained",
+    amplitudes, frequencies = sorted(set(sweep["h1_um"])), sorted(set(sweep["frequency_hz"]))
+    fig, axes = plt.subplots(1, len(fixations), figsize=(5.2 * len(fixations), 4.4), layout="constrained",
                              squeeze=False)
     for ax, fixation in zip(axes[0], fixations, strict=True):
         rows = sweep[sweep["fixation"] == fixation]
-        for k, ((frequency, h1), test) in enumerate(rows.groupby(["frequency_hz", "h1_um"], sort=True)):
+        for (frequency, h1), test in rows.groupby(["frequency_hz", "h1_um"], sort=True):
             test = test.sort_values("V_over_v0")
-            color, marker = f"C{k % 10}", "osD^v"[int(frequency // 100) % 5]
-            label = f"{frequency:g} Hz, {h1:g} µm"
-            ax.plot(test["V_over_v0"], test["mean_pulloff_ratio"], "-", color=color, lw=1.0, label=label)
+            color, marker = f"C{amplitudes.index(h1) % 10}", "os^Dv"[frequencies.index(frequency) % 5]
             done = test["status"] == "pulloff"
+            ax.plot(test["V_over_v0"], test["mean_pulloff_ratio"], "-", color=color, lw=0.8, marker=marker, ms=4,
+                    mfc="none", label=f"{frequency:g} Hz, {h1:g} µm")
             ax.plot(test.loc[done, "V_over_v0"], test.loc[done, "mean_pulloff_ratio"], marker, color=color, ms=4)
-            ax.plot(test.loc[~done, "V_over_v0"], test.loc[~done, "mean_pulloff_ratio"], marker, color=color, ms=4,
-                    mfc="none")
             v_min = float(test["V_over_v0"].min())
             ax.plot([v_min / 4.0, v_min], [test["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
         ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
                ylabel=r"simulated pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation (simulated)")
-    axes[0][-1].legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0,
-                       title="dashed: quasi-static", title_fontsize=6)
+        ax.legend(fontsize=5.5, ncols=3, loc="best", title="dashed: quasi-static (V → 0); open: detached "
+                  "before the mean extremum", title_fontsize=5.5)
     return fig
 
 
