@@ -67,6 +67,12 @@ PAGE_INPUTS = {
         "speed_txt": rules.benchmark_speed_vs_error.output.txt,
         "speed_png": rules.benchmark_speed_vs_error.output.png,
     },
+    "withdrawal": {
+        "withdrawal_csv": rules.withdrawal_gather.output.csv,
+        "withdrawal_limits_csv": rules.withdrawal_gather.output.limits,
+        "withdrawal_png": rules.withdrawal_plot.output.png,
+        "setup_json": SETUP_JSON,
+    },
 }
 
 

@@ -391,6 +391,37 @@ def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
     return fig
 
 
+# --- Withdrawal at a finite speed (issue 15) ----------------------------------------------------
+
+def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
+    """Simulated period-mean pull-off P/|P_JKR| (Eqs. 4', 70) against V/v0, one panel per fixation.
+
+    One line per (frequency, h1) of :mod:`vibroadhesion.experiments.speed_sweep`; the quasi-static family value
+    (the V -> 0 asymptote) as a dashed tick at the left of each line; open markers: detached before the
+    period-mean force passed its extremum (the instantaneous reading).
+    """
+    fixations = list(dict.fromkeys(sweep["fixation"]))
+    amplitudes, frequencies = sorted(set(sweep["h1_um"])), sorted(set(sweep["frequency_hz"]))
+    fig, axes = plt.subplots(1, len(fixations), figsize=(5.2 * len(fixations), 4.4), layout="constrained",
+                             squeeze=False)
+    for ax, fixation in zip(axes[0], fixations, strict=True):
+        rows = sweep[sweep["fixation"] == fixation]
+        for (frequency, h1), test in rows.groupby(["frequency_hz", "h1_um"], sort=True):
+            test = test.sort_values("V_over_v0")
+            color, marker = f"C{amplitudes.index(h1) % 10}", "os^Dv"[frequencies.index(frequency) % 5]
+            done = test["status"] == "pulloff"
+            ax.plot(test["V_over_v0"], test["mean_pulloff_ratio"], "-", color=color, lw=0.8, marker=marker, ms=4,
+                    mfc="none", label=f"{frequency:g} Hz, {h1:g} µm")
+            ax.plot(test.loc[done, "V_over_v0"], test.loc[done, "mean_pulloff_ratio"], marker, color=color, ms=4)
+            v_min = float(test["V_over_v0"].min())
+            ax.plot([v_min / 4.0, v_min], [test["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
+        ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
+               ylabel=r"simulated pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation (simulated)")
+        ax.legend(fontsize=5.5, ncols=3, loc="best", title="dashed: quasi-static (V → 0); open: detached "
+                  "before the mean extremum", title_fontsize=5.5)
+    return fig
+
+
 # --- The fit page -----------------------------------------------------------------------------
 
 def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:

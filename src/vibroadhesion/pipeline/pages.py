@@ -30,6 +30,7 @@ VALIDATION_PAGES: list[tuple[str, str]] = [
     ("validation", "Validation — every model level against the direct simulation"),
     ("identifiability", "Identifiability — what simulated pull-off data determine, and with which model"),
     ("benchmarks", "Speed against error: every model level, J-integrals, simulation, rule timings"),
+    ("withdrawal", "Withdrawal speed — simulated pull-off at a finite withdrawal speed"),
 ]
 
 #: The figure of each page, as its thumbnail on the index: a path relative to results/report/ (the run's figure, not a

@@ -1,0 +1,52 @@
+# Pull-off at a finite withdrawal speed (issue 15): the full model integrated in time with the base withdrawn
+# at V (simulated), one job per fixation and test frequency, at the published parameters; part of `validation`.
+
+
+rule withdrawal:
+    """Every amplitude of the rig withdrawn at the speeds of config withdrawal.speed_ratios (simulated)."""
+    input:
+        **PUBLISHED,
+        kernels=rules.simulation_kernels.output[0],
+        code=code("withdrawal"),
+    output:
+        "results/withdrawal/{fixation}_{frequency}Hz.csv",
+    log:
+        "results/logs/withdrawal_{fixation}_{frequency}Hz.log",
+    benchmark:
+        "results/benchmarks/rules/withdrawal_{fixation}_{frequency}Hz.tsv"
+    wildcard_constraints:
+        fixation="rigid|compliant",
+        frequency=r"[0-9.]+",
+    params:
+        speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
+    script:
+        "../scripts/withdrawal.py"
+
+
+rule withdrawal_gather:
+    """speed_sweep.csv (both fixations, every test) and the speeds below which the quasi-static value holds."""
+    input:
+        parts=expand(rules.withdrawal.output[0], fixation=["rigid", "compliant"], frequency=FREQUENCIES),
+        code=code("withdrawal_gather"),
+    output:
+        csv="results/withdrawal/speed_sweep.csv",
+        limits="results/withdrawal/quasi_static_limits.csv",
+    log:
+        "results/logs/withdrawal_gather.log",
+    localrule: True
+    script:
+        "../scripts/withdrawal_gather.py"
+
+
+rule withdrawal_plot:
+    input:
+        csv=rules.withdrawal_gather.output.csv,
+        code=code("withdrawal_plot"),
+    output:
+        pdf="results/withdrawal/speed_sweep.pdf",
+        png=report("results/withdrawal/speed_sweep.png", caption="../report/withdrawal.rst", category="Validation"),
+    log:
+        "results/logs/withdrawal_plot.log",
+    localrule: True
+    script:
+        "../scripts/withdrawal_plot.py"

@@ -1,0 +1,9 @@
+"""Rule withdrawal: vibroadhesion.pipeline.steps.withdrawal.withdrawal_part."""
+
+from vibroadhesion.pipeline.steps import logged
+from vibroadhesion.pipeline.steps.withdrawal import withdrawal_part
+
+wc = snakemake.wildcards
+with logged(snakemake.log[0], snakemake.rule):
+    withdrawal_part(snakemake.input.setup, snakemake.output[0], wc.fixation, float(wc.frequency),
+                    snakemake.params.speed_ratios)

@@ -1,0 +1,7 @@
+"""Rule withdrawal_gather: vibroadhesion.pipeline.steps.withdrawal.withdrawal_gather."""
+
+from vibroadhesion.pipeline.steps import logged
+from vibroadhesion.pipeline.steps.withdrawal import withdrawal_gather
+
+with logged(snakemake.log[0], snakemake.rule):
+    withdrawal_gather(snakemake.input.parts, snakemake.output.csv, snakemake.output.limits)
