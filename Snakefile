@@ -45,6 +45,7 @@ include: "workflow/rules/fit.smk"
 include: "workflow/rules/simulation.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/validation.smk"
+include: "workflow/rules/rigs.smk"
 include: "workflow/rules/identifiability.smk"
 include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/report.smk"
@@ -81,6 +82,7 @@ rule validation:
     input:
         rules.validation_plot.output.png,
         rules.validation_compliant_plot.output.png,
+        rules.rigs_plot.output.png,
         rules.virtual_pulloff_gather.output,
         rules.identifiability.output.fits,
         rules.identifiability.output.information,

@@ -117,3 +117,8 @@ def validation_plot(setup_json: Path_, fit_json: Path_ | None, grid_csv: Path_, 
 def compliant_sweep_plot(csv: Path_, curve_csv: Path_, pdf: Path_, png: Path_) -> None:
     """The simulated sweep up and down over the refined curve of the same compliant case (Eqs. 87, 90)."""
     figures.save_figure(figures.plot_compliant_sweep(pd.read_csv(csv), pd.read_csv(curve_csv)), pdf, png)
+
+
+def rigs_plot(csv: Path_, pdf: Path_, png: Path_) -> None:
+    """The base and the force rig compared (Eq. 13, Appendix B; table of the rig-comparison rules)."""
+    figures.save_figure(figures.plot_rig_comparison(pd.read_csv(csv)), pdf, png)
