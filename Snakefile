@@ -46,6 +46,7 @@ include: "workflow/rules/simulation.smk"
 include: "workflow/rules/figures.smk"
 include: "workflow/rules/validation.smk"
 include: "workflow/rules/withdrawal.smk"
+include: "workflow/rules/rigs.smk"
 include: "workflow/rules/identifiability.smk"
 include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/report.smk"
@@ -82,6 +83,7 @@ rule validation:
     input:
         rules.validation_plot.output.png,
         rules.validation_compliant_plot.output.png,
+        rules.rigs_plot.output.png,
         rules.virtual_pulloff_gather.output,
         rules.withdrawal_plot.output.png,
         rules.withdrawal_gather.output.limits,

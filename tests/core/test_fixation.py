@@ -58,6 +58,29 @@ def test_contact_resonance_and_transmissibility_follow_eq_b3() -> None:
     assert Fixation.compliant(0.1, 0.0, 1.0).contact_resonance(CHI0, 2.0) == pytest.approx(0.3 / (2 * c_o), rel=1e-15)
 
 
+def test_indentation_response_of_both_rigs_follows_eqs_13_and_43() -> None:
+    """|force - eta1 d|/|d + 2 c_o abar_m| written out for a damped spring (to 1e-15): the base rig alone is
+    eta1 times the transmissibility, the force rig alone force/|d + K|; at the undamped anti-resonance (d = 0)
+    the base rig gives 0 and the force rig force/(2 c_o abar_m) (Appendix B); rigid gives eta1, a forced rigid
+    fixation is a ValueError.
+    """
+    c_o = 2 ** (1 / 3) * 3 ** (-2 / 3) * CHI0
+    spring = Fixation.compliant(0.1, 0.05, 1.0)
+    d = 0.1 * complex(1.0 - 4.0, 2.0 * 0.05 * 2.0)
+    assert spring.indentation_response(1.3, CHI0, 2.0, 1e-4, 0.0) == pytest.approx(
+        1e-4 * spring.transmissibility(1.3, CHI0, 2.0), rel=1e-15)
+    assert spring.indentation_response(1.3, CHI0, 2.0, 0.0, 3e-5) == pytest.approx(
+        3e-5 / abs(d + 2 * c_o * 1.3), rel=1e-15)
+    assert spring.indentation_response(1.3, CHI0, 2.0, 1e-4, 3e-5) == pytest.approx(
+        abs(3e-5 - 1e-4 * d) / abs(d + 2 * c_o * 1.3), rel=1e-15)
+    undamped = Fixation.compliant(0.1, 0.0, 1.0)
+    assert undamped.indentation_response(1.3, CHI0, 1.0, 1e-4, 0.0) == 0.0
+    assert undamped.indentation_response(1.3, CHI0, 1.0, 0.0, 3e-5) == pytest.approx(3e-5 / (2 * c_o * 1.3), rel=1e-15)
+    assert Fixation.rigid().indentation_response(1.3, CHI0, 2.0, 1e-4, 0.0) == 1e-4
+    with pytest.raises(ValueError, match="force"):
+        Fixation.rigid().indentation_response(1.3, CHI0, 2.0, 0.0, 1e-5)
+
+
 def test_csv_constants_are_the_cells_of_the_virtual_pulloff_rows() -> None:
     rigid = Fixation.rigid().csv_constants
     assert rigid["fixation"] == "rigid" and math.isnan(rigid["kappa"]) and math.isnan(rigid["zeta"])

@@ -29,10 +29,20 @@ def test_scales_follow_eq_86() -> None:
 @pytest.mark.parametrize(("changes", "field"), [({"chi0": 0.0}, "chi0"), ({"eta1": -1e-6}, "eta1"),
                                                 ({"omega_check": math.inf}, "omega_check"),
                                                 ({"omega_check": 0.0}, "omega_check"),
-                                                ({"base_offset": math.nan}, "base_offset")])
+                                                ({"base_offset": math.nan}, "base_offset"),
+                                                ({"force_amplitude": -1e-9}, "force_amplitude"),
+                                                ({"force_amplitude": math.inf}, "force_amplitude")])
 def test_invalid_problem_raises_naming_the_field(changes: dict[str, float], field: str) -> None:
     arguments = {"chi0": CHI0, "eta1": ETA1, "omega_check": 1e5} | changes
     with pytest.raises(ValueError, match=field):
         Problem(LAW, **arguments)
     with pytest.raises(TypeError):
         Problem(object(), CHI0, ETA1, 1e5)  # type: ignore[arg-type]
+
+
+def test_force_rig_needs_a_fixation_that_yields() -> None:
+    """Eq. (13): a rigid fixation carries F1 itself, so a forced rigid problem is rejected; a spring takes it."""
+    with pytest.raises(ValueError, match="force_amplitude"):
+        Problem(LAW, CHI0, 0.0, 1e5, force_amplitude=1e-9)
+    forced = Problem(LAW, CHI0, 0.0, 1e5, Fixation.compliant(0.01, 0.0, 1e-5), force_amplitude=1e-9)
+    assert forced.force_amplitude == 1e-9 and Problem(LAW, CHI0, ETA1, 1e5).force_amplitude == 0.0

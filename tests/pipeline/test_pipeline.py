@@ -49,7 +49,8 @@ VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_complian
                     "pulloff_sensitivity", "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
                     "identifiability_fit", "identifiability", "identifiability_design", "benchmark_j_integrals",
                     "withdrawal", "withdrawal_gather", "withdrawal_plot",
-                    "benchmark_simulate", "benchmark_speed_vs_error", "report_validation_index", "validation"}
+                    "benchmark_simulate", "benchmark_speed_vs_error", "rigs_part", "rigs_gather", "rigs_plot",
+                    "report_validation_index", "validation"}
 
 
 def _copy_repo(dest: Path) -> Path:

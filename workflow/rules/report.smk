@@ -46,6 +46,11 @@ PAGE_INPUTS = {
         "virtual_csv": rules.virtual_pulloff_gather.output[0],
         "setup_json": SETUP_JSON,
     },
+    "rigs": {
+        "comparison_csv": rules.rigs_gather.output.csv,
+        "equivalence_csv": rules.rigs_gather.output.summary,
+        "figure_png": rules.rigs_plot.output.png,
+    },
     "fit": {
         "fit_json": FIT_JSON,
         "setup_json": SETUP_JSON,

@@ -139,6 +139,24 @@ class Fixation:
         denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
         return math.inf if denominator == 0 else abs(d) / denominator
 
+    def indentation_response(self, abar_m: float, chi0: float, omega_check: float, eta1: float, force: float) -> float:
+        """|delta_c| / R = |force - eta1 d| / |d + 2 c_o abar_m| at leading order, both rigs (Eqs. 13, 20-22, 43).
+
+        eta1 = h1/R of the base rig, ``force`` = F1/(E* R^2) of the force rig (Eq. 13). The oscillating forcing of
+        Eq. (20) is Im[(F1 - h1 D) e^{i omega t}] (Eq. 22 for the base, F1 sin(omega t) for the force), and at
+        leading order Xi = (D + 2 E* a_m) delta_c (Eqs. 41-42, 47-48), so Eq. (43) becomes |delta_c| |D + 2 E* a_m| =
+        |F1 - h1 D|; divided by E* R^2 this is the formula. force = 0: eta1 times :meth:`transmissibility`. eta1 = 0:
+        the mass on the fixation and the contact spring in parallel (Fig. 10a of Appendix B with damping), finite at
+        the base rig's anti-resonance d = 0, where it is force/(2 c_o abar_m). Rigid: eta1 (a force is a ValueError).
+        inf at the contact resonance (:meth:`contact_resonance`).
+        """
+        if self.is_rigid:
+            _require(force == 0, f"force: a rigid fixation carries the force of Eq. (13) itself, got {force!r}")
+            return eta1
+        d = self.d(omega_check)
+        denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
+        return math.inf if denominator == 0 else abs(force - eta1 * d) / denominator
+
     @property
     def csv_constants(self) -> dict[str, object]:
         """The ``fixation``, ``kappa``, ``zeta`` cells of the virtual pull-off rows (NaN for rigid)."""

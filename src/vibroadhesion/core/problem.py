@@ -1,8 +1,13 @@
-"""One steady-state problem: contact, rate law, base excitation h = h0 + h1 sin(omega t) and fixation.
+"""One steady-state problem: contact, rate law, excitation, fixation.
 
 Eqs. (4)–(7), (11): the Gent–Schultz law (Eqs. 73–75), chi0 (Eq. 64), eta1 = h1/R (Eq. 65),
 omega_check = omega R/v0 (Eq. 105), the fixation of the indenter (:class:`Fixation`) and the base
 offset (hhat - h0) R/a_o^2 (0 for the nominal point contact, Eq. 78).
+
+Two rigs. Base excitation (Fig. 1): the base moves, h = h0 + h1 sin(omega t) (Eq. 11), amplitude
+eta1. Force excitation (Fig. 2, Eq. 13): the base stays at h0 and a force F1 sin(omega t) acts on the
+indenter, amplitude ``force_amplitude`` = F1/(E* R^2) (the units of the weight group mu, Eq. 81).
+Both may be set (their forcings add); a rigid fixation carries any force itself, so it has none.
 """
 
 from __future__ import annotations
@@ -25,9 +30,10 @@ class Problem:
     omega_check: float  # omega R / v0, Eq. (105)
     fixation: Fixation = Fixation.rigid()
     base_offset: float = 0.0  # (hhat - h0) R / a_o^2; 0 = nominal point contact, Eq. (78)
+    force_amplitude: float = 0.0  # F1 / (E* R^2) of the force rig, Eq. (13); 0 = base rig only
 
     def __post_init__(self) -> None:
-        """Reject a law other than Gent–Schultz (Eqs. 73–75) and non-finite or non-positive scales (ValueError)."""
+        """Reject a law other than Gent–Schultz (Eqs. 73–75), non-finite or negative scales, a forced rigid fixation."""
         if not isinstance(self.law, GentSchultz):
             raise TypeError("the problem is posed for the Gent–Schultz law (Eqs. 73–75)")
         if not (math.isfinite(self.chi0) and self.chi0 > 0):
@@ -38,6 +44,10 @@ class Problem:
             raise ValueError(f"omega_check must be positive, got {self.omega_check}")
         if not math.isfinite(self.base_offset):
             raise ValueError(f"base_offset must be finite, got {self.base_offset}")
+        if not (math.isfinite(self.force_amplitude) and self.force_amplitude >= 0):
+            raise ValueError(f"force_amplitude must be finite and non-negative, got {self.force_amplitude}")
+        if self.force_amplitude > 0 and self.fixation.is_rigid:
+            raise ValueError("force_amplitude: a rigid fixation carries the force of Eq. (13) itself")
 
     @property
     def c_o(self) -> float:

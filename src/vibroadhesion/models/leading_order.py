@@ -46,6 +46,19 @@ is lambda = mu + kappa (hhat - h0)/R. With h0 = hhat, (III) is Eq. (87) term by 
 and a_m/R = c_o abar_m it is Eq. (82). Limits: kappa -> inf (d -> inf) gives Eq. (55) from (II)
 and deltabar_m = base_offset, Eq. (56); kappa = 0 with d = -m omega^2/(E* R) gives Eq. (57)–(58)
 from (II) and P_m = m g, Eq. (59).
+
+Force rig (Fig. 2, Eq. 13). With the base at h0 and F1 sin(omega t) on the indenter, the mean of Eq. (13)
+is Eq. (15) (F0 = m g - k (h0 - hhat)), so (III) is unchanged, and its oscillating part is Eq. (20) with
+the forcing F1 sin(omega t) in place of Eq. (22). Both together force Im[(F1 - h1 D) e^{i omega t}], and
+(I) becomes |delta_c| |D + K| = |F1 - h1 D|; divided by E* R^2, with force = F1/(E* R^2),
+
+    c_o^2 abar_m^(1/2) |Jc1(Abar)| = |force - eta1 d| / |d + 2 c_o abar_m|             (II')
+
+(:meth:`Fixation.indentation_response`). So the force rig with F1 = h1 |D| is the base rig (the same
+Abar, a_m, w_eff, P_m, and the same |delta_c| at every a_m); at the base rig's anti-resonance d = 0
+(Appendix B, Eq. B.3) the base rig does not excite the contact while the force rig gives
+|delta_c| = F1/(2 E* a_m): the whole force goes into the contact spring. The scan's end (below) holds
+for (II') as for (II): the numerator does not depend on abar_m.
 """
 
 from __future__ import annotations
@@ -96,30 +109,34 @@ def mean_indentation(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
 
 
 def internal_variable(
-    abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float
+    abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float,
+    force: float = 0.0,
 ) -> float:
-    """Abar on the amplitude equation (II) at a given abar_m, d of the fixation at ``omega_check`` (Eqs. 43, 105).
+    """Abar on the amplitude equation (II') at a given abar_m, d of the fixation at ``omega_check`` (Eqs. 13, 43, 105).
 
     The root of |Jc1(Abar)| = target,
 
-        target = eta1 |d| / (c_o^2 abar_m^(1/2) |d + 2 c_o abar_m|)
+        target = |force - eta1 d| / (c_o^2 abar_m^(1/2) |d + 2 c_o abar_m|)
 
-    unique because |Jc1| rises strictly from 0 to infinity (module docstring). eta1 = 0 or d = 0
-    (anti-resonance, Appendix B) give Abar = 0 exactly; at the contact resonance the amplitude is
-    unbounded and :class:`NoRootError` is raised.
+    (force = F1/(E* R^2) of the force rig, 0 for the base rig: then eta1 |d| in the numerator, (II)),
+    unique because |Jc1| rises strictly from 0 to infinity (module docstring). A zero numerator
+    (no excitation, or the base rig at its anti-resonance d = 0, Appendix B) gives Abar = 0 exactly;
+    at the contact resonance the amplitude is unbounded and :class:`NoRootError` is raised.
     """
     if not (abar_m > 0 and math.isfinite(abar_m)):
         raise ValueError(f"abar_m must be a positive number, got {abar_m!r}")
     if eta1 < 0 or not math.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1!r}")
-    transmissibility = fixation.transmissibility(abar_m, chi0, omega_check)
-    if math.isinf(transmissibility):
+    if force < 0 or not math.isfinite(force):
+        raise ValueError(f"force must be finite and non-negative, got {force!r}")
+    response = fixation.indentation_response(abar_m, chi0, omega_check, eta1, force)
+    if math.isinf(response):
         raise NoRootError(
             f"Eq. (43) at abar_m = {abar_m:.6g}: contact resonance (d + 2 c_o abar_m = 0), amplitude unbounded"
         )
-    if eta1 == 0 or transmissibility == 0:
+    if response == 0:
         return 0.0
-    log_target = math.log(eta1 * transmissibility) - math.log(float(indentation_amplitude(abar_m, 1.0, chi0)))
+    log_target = math.log(response) - math.log(float(indentation_amplitude(abar_m, 1.0, chi0)))
     return solve_log_increasing(
         lambda z: float(np.log(np.abs(j_integrals_for_law(math.exp(z), law)[1]))) - log_target,
         what=f"Eq. (43) at abar_m = {abar_m:.6g}, eta1 = {eta1:.6g}",
@@ -160,11 +177,13 @@ def steady_states(
     base_offset: float = 0.0,
     omega_check: float = math.inf,
     abar_m_min: float = 1e-4,
+    force: float = 0.0,
 ) -> SteadyState:
     """All leading-order steady states with abar_m >= ``abar_m_min``, sorted by abar_m (Sec. 3.1).
 
     Solves the amplitude equation (II) and the mean balance (III) (derivation in the module
-    docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59). Inputs: eta1 = h1/R, the fixation (with
+    docstring; Eqs. 43, 50–54; limits Eqs. 55–56 and 57–59; the force rig's (II'), Eq. 13, with
+    ``force`` = F1/(E* R^2) > 0, eta1 = 0 for the force rig alone). Inputs: eta1 = h1/R, the fixation (with
     its weight mu = m g/(E* R^2), Eq. 81), chi0 (Eq. 64), the Gent–Schultz law, the base offset
     (hhat - h0) R/a_o^2 (load group ``load_group``) and omega_check = omega R/v0 (Eq. 105; the
     fixation's d at that frequency, and A/a_m; a rigid fixation admits omega_check = inf).
@@ -206,8 +225,8 @@ def steady_states(
     load control (kappa = 0) and d delta_m/da_m > 0 under displacement control (rigid).
     """
     _check_steady_state_inputs(law, chi0, base_offset, abar_m_min, omega_check)
-    balance = MeanBalance(eta1, fixation, chi0, law, omega_check, base_offset)
-    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, {fixation}"
+    balance = MeanBalance(eta1, fixation, chi0, law, omega_check, base_offset, force)
+    what = f"Eq. (54) with Eq. (43) at eta1 = {eta1:.6g}, force = {force:.6g}, {fixation}"
     try:
         roots = mean_balance_roots(balance, abar_m_min, what)
         if roots:
@@ -227,7 +246,8 @@ def mean_balance_roots(balance: MeanBalance, abar_m_min: float, what: str) -> li
     monotone tail bracketed by doubling. Raises :class:`NoRootError` where the scan cannot be completed.
     """
     fixation, chi0, omega_check = balance.fixation, balance.chi0, balance.omega_check
-    vibrating = balance.eta1 > 0 and fixation.d(omega_check) != 0  # else Abar = 0, J0 = 1 throughout
+    # else Abar = 0, J0 = 1 throughout (no excitation, or the base rig at its anti-resonance d = 0)
+    vibrating = (balance.eta1 > 0 and fixation.d(omega_check) != 0) or balance.force > 0
     resonance = fixation.contact_resonance(chi0, omega_check) if vibrating else None
     abar_turn = monotone_tail_start(fixation, chi0, omega_check) if vibrating else 0.0
     z_res = math.log(resonance) if resonance is not None and resonance > abar_m_min else None
@@ -268,6 +288,7 @@ class MeanBalance(NamedTuple):
     law: GentSchultz
     omega_check: float  # omega R / v0, Eq. (105): the frequency of the fixation's d
     base_offset: float  # (hhat - h0) R / a_o^2
+    force: float = 0.0  # F1 / (E* R^2) of the force rig, Eq. (13)
 
 
 def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
@@ -277,7 +298,8 @@ def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
     mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`).
     """
     abar_m = math.exp(z)
-    Abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check)
+    Abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check,
+                             balance.force)
     j0 = float(j_integrals_for_law(Abar, balance.law)[0])
     return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), Abar, j0
 

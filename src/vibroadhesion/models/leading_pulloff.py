@@ -36,6 +36,13 @@ a = -Re d/(2 c_o) (a pole when zeta = 0, where g -> -infinity on both sides) and
 or more roots. d = 0 (zeta = 0, omega_bar = 1, the anti-resonance of Appendix B) gives Abar_cr = 0
 exactly: no oscillation, the static JKR pull-off, ratio 1.
 
+Force rig (Eq. 13; (II') of :mod:`vibroadhesion.models.leading_order`): eta1 |d| becomes |force - eta1 d|
+with force = F1/(E* R^2), so (IV) reads (chi0^2/3) J0^(1/3) |Jc1| |d + chi0 J0^(2/3)| = |force - eta1 d|
+and g has T replaced by that response (:meth:`Fixation.indentation_response`); the numerator is a
+constant, so the limits of g and the root order above hold as they are. At the base rig's
+anti-resonance d = 0 it is (chi0^3/3) J0 |Jc1| = force, whose left-hand side rises strictly from 0 to
+infinity: one root, the force rig's pull-off where the base rig has none.
+
 Which root is the pull-off. The withdrawal lowers the mean contact radius. With F(a_m) = a_m -
 a_cr(Abar(a_m)), Abar(a_m) the unique solution of (II) at a_m
 (:func:`vibroadhesion.models.leading_order.internal_variable`), the contact holds while F > 0 and
@@ -94,19 +101,20 @@ def pulloff_closure(j0: ArrayLike) -> NDArray[np.float64]:
 
 
 def critical_internal_variable_leading(eta1: float, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
-                          omega_check: float = math.inf) -> float:
-    """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 (0 gives 0).
+                          omega_check: float = math.inf, force: float = 0.0) -> float:
+    """Abar_cr for one amplitude ratio eta1 = h1/R >= 0 and force F1/(E* R^2) >= 0 of the force rig (both 0 give 0).
 
     Rigid fixation (the default): the unique root of Eq. (72). Any other fixation, with its d at
     ``omega_check`` = omega R/v0 (Eq. 105): the smallest root of Eqs. (67)–(69), (IV) of the module
     docstring (:func:`critical_internal_variables`), the first reached as the base is withdrawn (module docstring).
     """
-    if eta1 < 0 or not np.isfinite(eta1):
-        raise ValueError(f"eta1 must be finite and non-negative, got {eta1}")
-    if eta1 == 0:
+    for name, value in (("eta1", eta1), ("force", force)):
+        if value < 0 or not np.isfinite(value):
+            raise ValueError(f"{name} must be finite and non-negative, got {value}")
+    if eta1 == 0 and force == 0:
         return 0.0
     if not fixation.is_rigid:
-        return critical_internal_variables(eta1, fixation, chi0, law, omega_check)[0]
+        return critical_internal_variables(eta1, fixation, chi0, law, omega_check, force=force)[0]
     log_target = np.log(3.0 * eta1 / chi0**2)
     return solve_log_increasing(
         lambda z: float(np.log(pulloff_lhs_leading(np.exp(z), law))) - log_target,
@@ -115,24 +123,24 @@ def critical_internal_variable_leading(eta1: float, chi0: float, law: RateLaw, f
 
 
 def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixation = Fixation.rigid(),
-                    omega_check: float = math.inf) -> Pulloff:
+                    omega_check: float = math.inf, force: float = 0.0) -> Pulloff:
     """Leading-order pull-off, vectorised over eta1 (Eqs. 67–72): the record of level ``leading``.
 
     Eqs. (71)–(72) for rigid fixation (the default), Eqs. (67)–(69) and (71) for any other, with its d
-    at ``omega_check`` (:func:`critical_internal_variable_leading`). An amplitude without a root has the status
-    ``no_solution``.
+    at ``omega_check`` (:func:`critical_internal_variable_leading`); ``force`` = F1/(E* R^2) adds the force rig
+    (Eq. 13, module docstring). An amplitude without a root has the status ``no_solution``.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    Abar = np.vectorize(lambda e: critical_internal_variable_or_nan(e, chi0, law, fixation, omega_check),
+    Abar = np.vectorize(lambda e: critical_internal_variable_or_nan(e, chi0, law, fixation, omega_check, force),
                         otypes=[float])(eta1)
     return pulloff_from_internal_variable("leading", Abar, law)
 
 
 def critical_internal_variable_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation,
-                                      omega_check: float) -> float:
-    """:func:`critical_internal_variable_leading`, NaN where it has no root (the level boundary of Eqs. 67–72)."""
+                                      omega_check: float, force: float = 0.0) -> float:
+    """:func:`critical_internal_variable_leading`, NaN where it has no root (the level boundary of Eqs. 13, 67–72)."""
     try:
-        return critical_internal_variable_leading(eta1, chi0, law, fixation, omega_check)
+        return critical_internal_variable_leading(eta1, chi0, law, fixation, omega_check, force)
     except NoRootError:
         return math.nan
 
@@ -142,37 +150,43 @@ PULLOFF_SCAN = np.linspace(-40.0, 40.0, 1601)
 
 
 def critical_internal_variables(eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
-                   log_Abar: NDArray[np.float64] = PULLOFF_SCAN) -> list[float]:
+                   log_Abar: NDArray[np.float64] = PULLOFF_SCAN, force: float = 0.0) -> list[float]:
     """Every root Abar of the amplitude equation at a_m = a_cr, Eqs. (67)–(69), ascending; d at ``omega_check``.
 
     g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)] with abar_cr = :func:`pulloff_closure` (J0),
     i.e. (IV) of the module docstring in logarithms, is evaluated on the grid ``log_Abar``; each sign
     change is polished by Brent's method (roots closer than the grid spacing can be missed). A contact
-    resonance is no sign change (g -> -infinity on both sides). d = 0 (anti-resonance) gives [0.0].
+    resonance is no sign change (g -> -infinity on both sides). d = 0 (anti-resonance) gives [0.0] for the base
+    rig alone; ``force`` = F1/(E* R^2) adds the force rig (Eq. 13, module docstring).
     Raises :class:`NoRootError` when g is not negative at the left end of the grid (the smallest root
     could lie below it) or when there is no sign change.
     """
-    if not (eta1 > 0 and math.isfinite(eta1)):
-        raise ValueError(f"eta1 must be a positive number, got {eta1!r}")
-    if fixation.d(omega_check) == 0:
+    if not (eta1 >= 0 and force >= 0 and eta1 + force > 0 and math.isfinite(eta1 + force)):
+        raise ValueError(f"eta1 and force must be non-negative numbers, not both 0, got {eta1!r}, {force!r}")
+    if fixation.d(omega_check) == 0 and force == 0:
         return [0.0]
-    values = critical_log_excess(np.asarray(log_Abar, dtype=float), eta1, fixation, chi0, law, omega_check)
-    what = f"Eqs. (67)-(69) at eta1 = {eta1:.6g}, {fixation}"
+    values = critical_log_excess(np.asarray(log_Abar, dtype=float), eta1, fixation, chi0, law, omega_check, force)
+    what = f"Eqs. (67)-(69) at eta1 = {eta1:.6g}, force = {force:.6g}, {fixation}"
     if not values[0] < 0:
         raise NoRootError(f"{what}: the left-hand side reaches the target below Abar = {math.exp(log_Abar[0]):.3g}")
     crossings = np.flatnonzero(np.sign(values[:-1]) * np.sign(values[1:]) < 0)
     if crossings.size == 0:
         raise NoRootError(f"{what}: no root for Abar up to {math.exp(log_Abar[-1]):.3g}")
-    excess = partial(critical_log_excess, eta1=eta1, fixation=fixation, chi0=chi0, law=law, omega_check=omega_check)
+    excess = partial(critical_log_excess, eta1=eta1, fixation=fixation, chi0=chi0, law=law, omega_check=omega_check,
+                     force=force)
     return [math.exp(brentq(lambda z: float(excess(np.array([z]))[0]),
                             log_Abar[k], log_Abar[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps))
             for k in crossings]
 
 
 def critical_log_excess(
-    log_Abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float
+    log_Abar: NDArray[np.float64], eta1: float, fixation: Fixation, chi0: float, law: RateLaw, omega_check: float,
+    force: float = 0.0,
 ) -> NDArray[np.float64]:
     """g(z) = ln[c_o^2 abar_cr^(1/2) |Jc1|] - ln[eta1 T(abar_cr)], z = ln Abar (Eqs. 67–69, 72).
+
+    With the force rig's ``force`` = F1/(E* R^2) (Eq. 13), eta1 T is |force - eta1 d|/|d + 2 c_o abar_cr|
+    (:meth:`Fixation.indentation_response`).
 
     (IV) of the module docstring in logarithms, i.e. half the logarithm of the printed Eq. (67) (with
     Eqs. 68–69) over eta1^2; for a rigid fixation (T = 1) ln of the left-hand side of Eq. (72) over its
@@ -182,6 +196,6 @@ def critical_log_excess(
     """
     j0, jc1, _ = j_integrals_for_law(np.exp(log_Abar), law)
     abar_cr = pulloff_closure(j0)
-    transmissibility = np.array([fixation.transmissibility(float(a), chi0, omega_check) for a in abar_cr])
-    return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(eta1 * transmissibility)
+    response = np.array([fixation.indentation_response(float(a), chi0, omega_check, eta1, force) for a in abar_cr])
+    return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(response)
 

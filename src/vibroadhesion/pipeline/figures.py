@@ -422,6 +422,51 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
     return fig
 
 
+# --- The two rigs (Figs. 1, 2; Eq. 13; Appendix B) ---------------------------------------------
+
+
+def plot_rig_comparison(table: pd.DataFrame) -> Figure:
+    """Pull-off of the base and the force rig against h1, and the force rig's drive F1/(k h1) = |D| against omega_bar.
+
+    Left, for the configured damping: the leading order of the base rig (lines), the SIMULATED virtual pull-off
+    of the base rig (o) and of the equal-amplitude force rig, F1 = k h1 |D| (x: on the o's), and at the
+    anti-resonance the force rig at F1 = k h1 (triangles; leading order dashed). Right: |1 - omega_bar^2 +
+    2 i zeta omega_bar| (Eqs. 22, 65), 0 at the undamped anti-resonance, with the frequencies of the table.
+    """
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 3.8), layout="constrained")
+    zeta = float(table["zeta"].max())
+    damped = table[table["zeta"] == zeta]
+    for k, (frequency, rows) in enumerate(damped.groupby("frequency_hz")):
+        color, by = f"C{k}", {key: rows[(rows["rig"] == key[0]) & (rows["level"] == key[1])]
+                              for key in [(r, lv) for r in ("base", "force_equivalent", "force_spring")
+                                          for lv in ("leading", "simulation")]}
+        left.plot(by["base", "leading"]["h1_um"], by["base", "leading"]["pulloff_ratio"], "-", color=color, lw=1,
+                  label=f"{frequency:.3g} Hz, base rig, leading order")
+        left.plot(by["base", "simulation"]["h1_um"], by["base", "simulation"]["pulloff_ratio"], "o", color=color,
+                  mfc="none", label=f"{frequency:.3g} Hz, base rig, SIMULATED")
+        equivalent = by["force_equivalent", "simulation"]
+        left.plot(equivalent["h1_um"], equivalent["pulloff_ratio"], "x", color=color,
+                  label=f"{frequency:.3g} Hz, force rig F1 = k h1 |D|, SIMULATED")
+        if k == 0:
+            spring = by["force_spring", "simulation"]
+            left.plot(spring["h1_um"], spring["pulloff_ratio"], "^", color=color,
+                      label=f"{frequency:.3g} Hz, force rig F1 = k h1, SIMULATED")
+            left.plot(by["force_spring", "leading"]["h1_um"], by["force_spring", "leading"]["pulloff_ratio"], "--",
+                      color=color, lw=1, label=f"{frequency:.3g} Hz, force rig F1 = k h1, leading order")
+    left.set(xlabel=r"$h_1$ ($\mu$m)", ylabel=r"$P_{\rm pull-off}/P^{\rm JKR}$", yscale="log")
+    omega_bar = np.geomspace(0.1, 2.0 * float(table["omega_bar"].max()), 400)
+    for z, style in ((zeta, "k-"), (0.0, "k:")):
+        right.plot(omega_bar, np.abs(1.0 - omega_bar**2 + 2j * z * omega_bar), style, lw=1, label=rf"$\zeta$ = {z:g}")
+    points = table[table["rig"] == "force_equivalent"].drop_duplicates(["zeta", "omega_bar"])
+    right.plot(points["omega_bar"], points["drive_ratio"].clip(lower=1e-3), "ko", mfc="none",
+               label="the table's points")
+    right.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$",
+              ylabel=r"$F_1/(k h_1)$ at equal contact amplitude", ylim=(1e-3, None))
+    right.legend(fontsize=7)
+    left.legend(fontsize=6, loc="upper left", bbox_to_anchor=(0.0, -0.18), ncol=2)
+    return fig
+
+
 # --- The fit page -----------------------------------------------------------------------------
 
 def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:

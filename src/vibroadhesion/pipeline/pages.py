@@ -28,6 +28,7 @@ PAGES: list[tuple[str, str]] = [
 #: Pages of the ``validation`` target (``snakemake -c2 validation``): the checks against the simulation.
 VALIDATION_PAGES: list[tuple[str, str]] = [
     ("validation", "Validation — every model level against the direct simulation"),
+    ("rigs", "Two rigs — base and force excitation (Fig. 2, Eq. 13, Appendix B)"),
     ("identifiability", "Identifiability — what simulated pull-off data determine, and with which model"),
     ("benchmarks", "Speed against error: every model level, J-integrals, simulation, rule timings"),
     ("withdrawal", "Withdrawal speed — simulated pull-off at a finite withdrawal speed"),

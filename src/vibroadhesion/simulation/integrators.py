@@ -117,12 +117,15 @@ class Period:
         self.full_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, full_size)
 
     def _spring_constants(self) -> list[float]:
-        """S, mu/(kappa c_o^2)/S, (c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (Eq. 3'); zeros if rigid."""
+        """S, mu/(kappa c_o^2)/S, (c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa, fhat/S (Eqs. 3', 13).
+
+        Zeros if rigid.
+        """
         m = self.m
         if not m.compliant:
-            return [0.0] * 6
+            return [0.0] * 7
         return [self.x_scale, m.force_offset / self.x_scale, m.compliance / self.x_scale, 1.0 / m.omega_bar**2,
-                2.0 * m.zeta * m.omega_bar, m.compliance]
+                2.0 * m.zeta * m.omega_bar, m.compliance, m.force_drive / self.x_scale]
 
     # -- conversions
 
@@ -423,16 +426,18 @@ def v_scale_estimate(model: Model, abar: float) -> float:
 
     The smaller of the frozen-contact value (abar fixed, v' = x(Phi(abar, deltabar(tau))), the
     limit omega_check -> infinity) and the quasi-static one (v follows the JKR compliance,
-    speed_scale etahat); only used to scale the first integration, later ones use the observed range.
+    speed_scale etahat; etahat plus the force rig's frozen response, Eq. 13); only used to scale the first
+    integration, later ones use the observed range.
     """
     tau = np.linspace(0.0, TWO_PI, 257)
-    d = model.base_offset - model.etahat * np.sin(tau)
+    amplitude = model.etahat + model.force_response(abar)
+    d = model.base_offset - amplitude * np.sin(tau)
     gap = np.maximum(abar * abar - d, 1e-150)
     law = model.problem.law
     x = np.clip(law.speed(gap * gap / abar), -SPEED_CAP * model.speed_scale, SPEED_CAP * model.speed_scale)
     u = np.concatenate([[0.0], np.cumsum(0.5 * (x[1:] + x[:-1]) * np.diff(tau))])
     frozen = 0.5 * float(u.max() - u.min())
-    return max(min(frozen, model.speed_scale * model.etahat), _v_scale_floor(model, abar))
+    return max(min(frozen, model.speed_scale * amplitude), _v_scale_floor(model, abar))
 
 
 def _v_scale_floor(model: Model, abar: float) -> float:
@@ -441,8 +446,15 @@ def _v_scale_floor(model: Model, abar: float) -> float:
 
 
 def x_scale(model: Model, start: Array) -> float:
-    """S = max(etahat, |xbar|, |xbar'|) of the compliant start (floored at 1e-280), 1 for the rigid fixation."""
-    return max(model.etahat, abs(float(start[0])), abs(float(start[1])), 1e-280) if model.compliant else 1.0
+    """S = max(etahat, fhat/max(1, omega_bar^2), |xbar|, |xbar'|) of the compliant start (floored), 1 if rigid.
+
+    fhat/max(1, omega_bar^2) is the response of the spring and mass to the force rig's drive (Eq. 13) away from
+    their resonance; the floor is 1e-280.
+    """
+    if not model.compliant:
+        return 1.0
+    drive = model.force_drive / max(1.0, model.omega_bar**2)
+    return max(model.etahat, drive, abs(float(start[0])), abs(float(start[1])), 1e-280)
 
 
 def observed_v_scale(run: Run) -> float:

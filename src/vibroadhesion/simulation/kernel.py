@@ -20,10 +20,10 @@ abar below the contact-loss threshold (model docstring). Compiled code is cached
 Constants of a period (:data:`CONSTANTS`, in this order): b0 = speed_scale abar(0), V, 1/speed_scale,
 1/V, base_offset, etahat, 1/n, ln(speed cap), 1.0 if the variational equation is integrated
 (n <= 1) else 0.0, 1.0 if compliant else 0.0; then, compliant (else 0): S, mu/(kappa c_o^2)/S,
-(c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (integrators module, Eq. 3'); last the withdrawal
-ramp, d base_offset/d tau = -ramp (Eq. 11 with h0 = h0_start + V t: ramp = V R/(a_o^2 omega); 0 for a periodic
-steady state, :mod:`vibroadhesion.simulation.withdrawal`): deltabar = base_offset - ramp tau - etahat sin tau
-(+ xbar).
+(c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (integrators module, Eq. 3'), fhat/S (the force
+rig's drive, Eq. 13, model docstring); last the withdrawal ramp, d base_offset/d tau = -ramp (Eq. 11 with
+h0 = h0_start + V t: ramp = V R/(a_o^2 omega); 0 for a periodic steady state,
+:mod:`vibroadhesion.simulation.withdrawal`): deltabar = base_offset - ramp tau - etahat sin tau (+ xbar).
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ from vibroadhesion.simulation.model import Array, contact_kernel
 #: Names of the entries of the constants array of a period (module docstring).
 CONSTANTS = ("b0", "v_scale", "inv_speed_scale", "inv_v_scale", "base_offset", "etahat", "inv_n", "log_cap",
              "variational", "compliant", "x_scale", "scaled_force_offset", "scaled_compliance", "inv_omega_bar2",
-             "damping", "compliance", "ramp")
+             "damping", "compliance", "scaled_force_drive", "ramp")
 #: Components of the full rigid state: u, lambda and the quadratures u, u cos, u sin, sqrt(w/w0), Phat,
 #: Phat cos, Phat sin (integrators module).
 FULL_SIZE = 9
@@ -72,7 +72,7 @@ def _rigid_rates(tau: float, y: Array, out: Array, k: Array) -> None:
     u = y[0]
     abar = (k[0] + k[1] * u) * k[2]
     s = math.sin(tau)
-    x, x_a, _, p, w = compiled_contact_kernel(abar, k[4] - k[16] * tau - k[5] * s, k[6], k[7])
+    x, x_a, _, p, w = compiled_contact_kernel(abar, k[4] - k[17] * tau - k[5] * s, k[6], k[7])
     out[0] = x * k[3]
     if out.shape[0] > 1:
         c = math.cos(tau)
@@ -87,17 +87,18 @@ _compiled_rigid_rates = njit(cache=True)(_rigid_rates)
 def _compliant_rates(tau: float, y: Array, out: Array, k: Array) -> None:
     """Rates of the scaled compliant state into ``out``: Eqs. (3'), (6'); with 22 components Psi and the quadratures.
 
-    xi' = eta, eta' = (mu/(kappa c_o^2) - (c_o/kappa) Phat - S xi - 2 zeta omega_bar S eta)/(omega_bar^2 S)
-    (Eq. 3'), u' = x/V (Eq. 6') with deltabar = S xi + base_offset - ramp tau - etahat sin tau (Eq. 7); then
+    xi' = eta, eta' = (mu/(kappa c_o^2) - (c_o/kappa) Phat - S xi - 2 zeta omega_bar S eta + fhat sin tau)
+    / (omega_bar^2 S) (Eqs. 3', 13), u' = x/V (Eq. 6') with deltabar = S xi + base_offset - ramp tau
+    - etahat sin tau (Eqs. 7, 11'); then
     Psi' = J (I + Psi) with J = [[0, 1, 0], [j10, j11, j12], [j20, 0, j22]] (0 for n > 1, shooting
     module) and u, u cos, u sin, sqrt(w/w0), Phat, Phat cos, Phat sin, xi, xi cos, xi sin.
     """
     xi, eta, u = y[0], y[1], y[2]
     abar = (k[0] + k[1] * u) * k[2]
     s = math.sin(tau)
-    d = k[10] * xi + k[4] - k[16] * tau - k[5] * s
+    d = k[10] * xi + k[4] - k[17] * tau - k[5] * s
     x, x_a, x_d, p, w = compiled_contact_kernel(abar, d, k[6], k[7])
-    out[0], out[1], out[2] = eta, (k[11] - k[12] * p - xi - k[14] * eta) * k[13], x * k[3]
+    out[0], out[1], out[2] = eta, (k[11] - k[12] * p - xi - k[14] * eta + k[16] * s) * k[13], x * k[3]
     if out.shape[0] == 3:
         return
     out[3:12] = 0.0

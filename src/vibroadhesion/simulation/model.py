@@ -51,6 +51,17 @@ and P R/(k a_o^2) = (c_o/kappa) Phat (Eqs. 66, 81):
 
 with omega_check = omega_bar/nu0 (Eqs. 97, 105). The state is (xbar, xbar', abar).
 
+Force rig (Fig. 2, Eq. 13). The base stays at h0 and the force F1 sin(omega t) acts on the indenter:
+m xs'' + c xs' + k xs = m g - P + F1 sin(omega t), i.e. Eq. (3') with one more term,
+
+    omega_bar^2 xbar'' + 2 zeta omega_bar xbar' + xbar = mu/(kappa c_o^2) - (c_o/kappa) Phat + fhat sin tau,
+    fhat = F1 R/(k a_o^2) = force_amplitude/(kappa c_o^2)   (force_amplitude = F1/(E* R^2)),
+
+with etahat = 0 in Eq. (7). With y = xbar - etahat sin tau the base rig's Eq. (3') has the forcing
+-etahat [(1 - omega_bar^2) sin tau + 2 zeta omega_bar cos tau] instead: the two rigs are the same
+dynamical system for deltabar when fhat = etahat |1 - omega_bar^2 + 2 i zeta omega_bar|, i.e.
+F1 = h1 |k - m omega^2 + i c omega| (Eqs. 9, 13, 21–22), up to a shift of the phase of tau.
+
 Static state (Eqs. 10, A.4–A.7). With w = w0 the static contact obeys deltabar_0s = s(abar),
 s(a) = a^2 - sqrt(a), Phat_0 = p(a), p(a) = (4/3) a^3 - 2 a^(3/2), and xbar_0 = deltabar_0s -
 base_offset = mu/(kappa c_o^2) - (c_o/kappa) p(abar). Multiplied by kappa c_o^2:
@@ -189,6 +200,7 @@ class Model:
         self.log_cap = math.log(SPEED_CAP * self.speed_scale)
         self.contact_loss_abar = contact_loss_abar
         self.compliant = not fixation.is_rigid
+        self.force_drive = 0.0  # fhat = F1 R/(k a_o^2) of the force rig (module docstring, Eq. 13)
         self.dim = 3 if self.compliant else 1
         # For n > 1 the variational equations have an unbounded (integrable) coefficient at the
         # turning points that no error-controlled integrator resolves: Psi by differences instead.
@@ -199,6 +211,20 @@ class Model:
             self.compliance = c_o / fixation.kappa
             self.omega_bar = fixation.omega_bar(problem.omega_check)
             self.zeta = fixation.zeta
+            self.force_drive = problem.force_amplitude / (fixation.kappa * c_o**2)
+
+    def force_response(self, abar: float) -> float:
+        """Amplitude of deltabar under the force rig's drive with the contact radius frozen at ``abar`` (Eqs. 3', 13).
+
+        With abar fixed, Phat = 2 abar deltabar - (2/3) abar^3 is linear, so Eq. (3') is a linear oscillator of
+        stiffness 1 + 2 abar c_o/kappa: fhat/|1 + 2 abar c_o/kappa - omega_bar^2 + 2 i zeta omega_bar|, the modulus
+        kept above 1e-2 of the stiffness (an undamped resonance; a scale, not a result). 0 without a force.
+        """
+        if self.force_drive == 0.0:
+            return 0.0
+        stiffness = 1.0 + 2.0 * abar * self.compliance
+        return self.force_drive / max(abs(complex(stiffness - self.omega_bar**2, 2.0 * self.zeta * self.omega_bar)),
+                                      1e-2 * stiffness)
 
 
 # --- Static state -------------------------------------------------------------------------------

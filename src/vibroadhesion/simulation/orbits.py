@@ -243,8 +243,9 @@ def _frozen_excitation(model: Model, abar: float) -> tuple[float, complex]:
     linear in deltabar = xbar + base_offset - etahat sin tau, so Eq. (3') is a linear oscillator with
     the contact stiffness 2 abar (units of E* a_o): with sigma = c_o/kappa,
     mean xbar = (mu/(kappa c_o^2) - sigma (2 abar base_offset - (2/3) abar^3))/(1 + 2 abar sigma), and
-    xbar - mean = Im(X e^{i tau}), X = 2 abar sigma etahat/(1 + 2 abar sigma - omega_bar^2 + 2i zeta omega_bar)
-    (the denominator is kept away from 0 at an undamped resonance: a guess, not a result).
+    xbar - mean = Im(X e^{i tau}), X = (2 abar sigma etahat + fhat)/(1 + 2 abar sigma - omega_bar^2 + 2i zeta omega_bar)
+    with the force rig's drive fhat (Eq. 13; model docstring) (the denominator is kept away from 0 at an
+    undamped resonance: a guess, not a result).
     """
     if not model.compliant:
         return model.base_offset, 0j
@@ -254,7 +255,7 @@ def _frozen_excitation(model: Model, abar: float) -> tuple[float, complex]:
     denominator = complex(stiffness - model.omega_bar**2, 2.0 * model.zeta * model.omega_bar)
     if abs(denominator) < 1e-2 * stiffness:
         denominator = 1e-2 * stiffness * (denominator / abs(denominator) if denominator != 0 else 1.0)
-    return x_mean + model.base_offset, 2.0 * abar * sigma * model.etahat / denominator
+    return x_mean + model.base_offset, (2.0 * abar * sigma * model.etahat + model.force_drive) / denominator
 
 
 def _frozen_orbit_drift(abar: float, model: Model) -> float:

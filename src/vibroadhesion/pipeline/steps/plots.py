@@ -122,3 +122,8 @@ def compliant_sweep_plot(csv: Path_, curve_csv: Path_, pdf: Path_, png: Path_) -
 def withdrawal_plot(csv: Path_, pdf: Path_, png: Path_) -> None:
     """The speed sweep: simulated P/|P_JKR| (Eqs. 4', 70) against V/v0 with the quasi-static asymptote."""
     figures.save_figure(figures.plot_speed_sweep(pd.read_csv(csv)), pdf, png)
+
+
+def rigs_plot(csv: Path_, pdf: Path_, png: Path_) -> None:
+    """The base and the force rig compared (Eq. 13, Appendix B; table of the rig-comparison rules)."""
+    figures.save_figure(figures.plot_rig_comparison(pd.read_csv(csv)), pdf, png)

@@ -1,0 +1,60 @@
+"""Steps of the rig-comparison rules: the base- and the force-excitation rigs (Figs. 1, 2; Eq. 13; Appendix B).
+
+One job per test frequency of data/setup.yaml and one at the fixation's anti-resonance omega0 (with the configured
+damping and undamped), for the simulated compliant fixation (kappa, zeta) and every amplitude h1; the table is
+:func:`vibroadhesion.experiments.rigs.rig_comparison`'s with the dimensional columns added.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import replace
+from pathlib import Path
+
+import pandas as pd
+
+from vibroadhesion.core import groups
+from vibroadhesion.experiments import rigs
+from vibroadhesion.numerics.progress import ProgressBar
+from vibroadhesion.pipeline.artefacts import write_csv
+from vibroadhesion.pipeline.steps.inputs import rig, setup_fixations, setup_number
+
+#: The wildcard value of the job at the fixation's anti-resonance omega = omega0 (Appendix B).
+ANTI_RESONANCE = "antiresonance"
+
+
+def rigs_part(setup_json: str | Path, out: str | Path, case: str) -> None:
+    """The comparison at one test frequency (``case`` in Hz) or at the anti-resonance (``case`` = ANTI_RESONANCE).
+
+    Published parameters (the validation's); columns of :func:`vibroadhesion.experiments.rigs.rig_comparison`
+    plus frequency_hz, h1_um, F1_N = force E* R^2 (Eq. 13) and delta_amplitude_um = delta_amplitude a_o^2/R
+    (Eq. 86).
+    """
+    setup, params, chi0 = rig(setup_json)
+    (fixation,) = setup_fixations(setup, params["v0"], "compliant")
+    omega0 = setup_number(setup, "fixation.natural_frequency")
+    if case == ANTI_RESONANCE:
+        cases = [(fixation, [1.0]), (replace(fixation, zeta=0.0), [1.0])]
+    else:
+        cases = [(fixation, [2.0 * math.pi * float(case) / omega0])]
+    eta1 = [float(groups.eta1(h * 1e-6, setup.radius)) for h in setup.amplitudes_um]
+    table = rigs.rig_comparison(cases, eta1, chi0, params["n"],
+                                ProgressBar(len(cases) * len(eta1) * len(rigs.RIGS), "rig points"))
+    c_o, radius = groups.contact_radius_ratio(chi0), setup.radius
+    table.insert(0, "frequency_hz", table["omega_bar"] * omega0 / (2.0 * math.pi))
+    table.insert(4, "h1_um", table["eta1"] * radius * 1e6)
+    table["F1_N"] = table["force"] * setup.reduced_modulus * radius**2
+    table["delta_amplitude_um"] = table["delta_amplitude"] * c_o**2 * radius * 1e6
+    write_csv(table, out)
+
+
+def rigs_gather(parts: Sequence[str | Path], out: str | Path, summary_out: str | Path) -> None:
+    """results/validation/rig_comparison.csv (every job's rows by frequency) and the equivalence summary."""
+    table = pd.concat([pd.read_csv(p) for p in parts], ignore_index=True)
+    table = table.sort_values(["frequency_hz", "zeta"], kind="stable").reset_index(drop=True)
+    summary = rigs.equivalence_summary(table)
+    write_csv(table, out)
+    write_csv(summary, summary_out)
+    print(summary.to_string(index=False))
+

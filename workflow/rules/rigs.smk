@@ -1,0 +1,50 @@
+# The base- and the force-excitation rigs compared (Figs. 1, 2; Eq. 13; Appendix B): one job per test frequency and
+# one at the fixation's anti-resonance omega0, gathered into one table, its summary and its figure.
+RIG_CASES = FREQUENCIES + ["antiresonance"]
+
+
+rule rigs_part:
+    """Leading order and simulation of both rigs at one frequency, every amplitude (published parameters)."""
+    input:
+        **PUBLISHED,
+        kernels=rules.simulation_kernels.output[0],
+        code=code("rigs_part"),
+    output:
+        "results/validation/rigs/{case}.csv",
+    log:
+        "results/logs/rigs_part_{case}.log",
+    benchmark:
+        "results/benchmarks/rules/rigs_part_{case}.tsv"
+    wildcard_constraints:
+        case=r"antiresonance|[0-9.]+",
+    script:
+        "../scripts/rigs_part.py"
+
+
+rule rigs_gather:
+    """Every case in results/validation/rig_comparison.csv, and the force rig's difference from the base rig."""
+    input:
+        parts=expand(rules.rigs_part.output[0], case=RIG_CASES),
+        code=code("rigs_gather"),
+    output:
+        csv="results/validation/rig_comparison.csv",
+        summary="results/validation/rig_equivalence.csv",
+    log:
+        "results/logs/rigs_gather.log",
+    localrule: True
+    script:
+        "../scripts/rigs_gather.py"
+
+
+rule rigs_plot:
+    input:
+        csv=rules.rigs_gather.output.csv,
+        code=code("rigs_plot"),
+    output:
+        pdf="results/validation/rig_comparison.pdf",
+        png=report("results/validation/rig_comparison.png", caption="../report/rigs.rst", category="Validation"),
+    log:
+        "results/logs/rigs_plot.log",
+    localrule: True
+    script:
+        "../scripts/rigs_plot.py"
