@@ -25,6 +25,7 @@ from vibroadhesion.experiments.virtual_pulloff import (
     _tensile_extremum,
     preloaded_offset,
     simulated_pulloff,
+    traced_family,
     traced_pulloff,
 )
 from vibroadhesion.models import exact_averaging
@@ -134,6 +135,25 @@ def test_family_at_n_0092_keeps_contact_from_the_preloaded_start_and_reports_the
     result = simulated_pulloff(problem)
     assert result.status == "contact_loss_before_extremum" and result.steady_states > 10
     assert math.isnan(result.pulloff_ratio)
+
+
+def test_a_family_without_a_pull_off_gives_its_most_tensile_orbit_at_the_end_of_its_offsets() -> None:
+    """The family of the test above (n = 0.092, omega_check = 1e8, h1 = 100 um): traced_pulloff gives no orbit,
+    traced_family the most tensile one the family reached (the fit's P*, simulation_fit's module docstring).
+    Reference: the definition of P* = min of P_m over the base offsets with a steady state, attained at their end
+    d_e -- the orbit one family step (0.2) on the compressive side (warm-started from P*'s orbit) carries a less
+    tensile (more compressive) mean force, and one step beyond d_e (past the end, located to 0.2/64) there is no
+    steady state. Here P* is still compressive (Phat_m = 27.9): a negative pull-off force for the search.
+    """
+    problem = Problem(GentSchultz(0.092), CHI0, 100e-6 / RADIUS, 1e8)
+    assert traced_pulloff(problem)[1] is None
+    record, reached = traced_family(problem)
+    assert record.status == "contact_loss_before_extremum" and reached is not None
+    d_end, orbit = reached
+    before = simulation.steady_state(replace(problem, base_offset=d_end + 0.2), initial_state=orbit.orbit.start_state)
+    assert before.status == "ok" and before.orbit.phat_m > orbit.orbit.phat_m
+    beyond = simulation.steady_state(replace(problem, base_offset=d_end - 0.2), initial_state=orbit.orbit.start_state)
+    assert beyond.status != "ok"
 
 
 def test_at_n_03_the_vibration_loses_the_contact_before_a_tensile_mean_force_at_60_um() -> None:

@@ -12,9 +12,12 @@ from pathlib import Path
 import nbformat
 import pandas as pd
 import pytest
+import yaml
 
 from vibroadhesion.core import levels
-from vibroadhesion.pipeline import data, fit_report
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
+from vibroadhesion.pipeline import data, figures, fit_report
 from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -68,6 +71,13 @@ def _rows(tmp_path: Path) -> pd.DataFrame:
     return data.read_canonical_pulloff(csv)
 
 
+def _setup_json(tmp_path: Path) -> Path:
+    """The canonical setup of data/setup.yaml (R = 51.5 mm, E* = 2 x 2.8 MPa/(1 - 0.5^2))."""
+    setup_json = tmp_path / "setup.json"
+    data.ingest(ROOT / "data/setup.yaml", ROOT / "data/pulloff.csv", setup_json, tmp_path / "ingested.csv")
+    return setup_json
+
+
 def test_levels_in_the_registry_order_with_the_converged_simulation_as_headline() -> None:
     fit = _fit(3)
     assert fit_report.ordered_levels(fit) == ["simulation", "leading", "refined"]
@@ -97,7 +107,7 @@ def test_figure_pages_show_the_fit_the_figures_use_and_the_headline() -> None:
 
 
 def test_measured_against_predicted_per_row_with_the_contact_loss_row_unpredicted(tmp_path: Path) -> None:
-    table = fit_report.measured_vs_predicted(_fit(3), _rows(tmp_path))
+    table = fit_report.measured_vs_predicted(_fit(3), _rows(tmp_path), _setup_json(tmp_path))
     assert table["predicted_mN:leading"].tolist() == pytest.approx([187.0, 560.0, 1120.0], rel=1e-15)
     simulated = table["predicted_mN:simulation"]
     assert simulated.iloc[:2].tolist() == pytest.approx([171.7, 693.0], rel=1e-15) and math.isnan(simulated.iloc[2])
@@ -109,6 +119,65 @@ def test_measured_against_predicted_per_row_with_the_contact_loss_row_unpredicte
                                                            levels.level("leading").label}
     headers = fit_report.measured_vs_predicted_columns(table)
     assert headers["predicted_mN:leading"].header == "predicted, leading (mN)"
+
+
+@pytest.mark.parametrize("omega_check, a_over_am, expected", [
+    (1.437e6, 0.0019, "inside"),
+    (1.437e6, 0.1, "inside"),  # the paper's A <= 0.1 a_m
+    (7186.0, 0.33, "outside the asymptotic levels' range: A/a_m = 0.33 > 0.1"),
+    (718.6, 0.0155, "outside the asymptotic levels' range: ωR/v0 = 719 outside 10^3–10^8"),
+    (2.0e8, 0.23, "outside the asymptotic levels' range: A/a_m = 0.23 > 0.1, ωR/v0 = 2e+08 outside 10^3–10^8"),
+    (7186.0, math.nan, "outside the asymptotic levels' range: A/a_m unknown (the refined model has no pull-off)"),
+    (math.nan, 0.0, "inside"),  # a static JKR test: no frequency, Eq. (70) at every level
+])
+def test_outside_text_on_both_sides_of_the_limits(omega_check: float, a_over_am: float, expected: str) -> None:
+    assert fit_report.outside_text(omega_check, a_over_am) == expected
+
+
+def test_the_validated_range_is_the_validation_grid() -> None:
+    """VALIDATED_OMEGA_CHECK is the omega_check range the validation compares the levels over (workflow config)."""
+    config = yaml.safe_load((ROOT / "workflow/config.yaml").read_text())["validation"]
+    assert VALIDATED_OMEGA_CHECK == (10.0 ** config["log10_omega_check_min"], 10.0 ** config["log10_omega_check_max"])
+
+
+def test_rows_outside_the_asymptotic_levels_range_are_flagged_in_table_plot_and_sentence(tmp_path: Path) -> None:
+    """Rows on both sides of A/a_m = 0.1 and of the validated omega_check range, in the table, plot and sentence.
+
+    The 3 rows of the fixture (A/a_m 0.002-0.05 at 200-400 Hz) and three more: 1 Hz, 20 um (omega_check 7.2e3,
+    inside the validated range, refined A/a_m 0.33 > 0.1), 0.1 Hz, 2 um (omega_check 719 < 1e3, A/a_m 0.016) and a
+    static JKR test. omega_check = 2 pi f R/v0 (Eq. 105) with the simulation fit's v0 (the headline) is checked by
+    hand; A/a_m is the refined model's (Eq. 106, tested in tests/models) at that fit, R and E* of the setup.
+    """
+    csv = tmp_path / "pulloff.csv"
+    csv.write_text("frequency_hz,h1_um,pulloff_mN,source\n200.0,20.0,170.0,lab A\n300.0,60.0,700.0,lab A\n"
+                   "400.0,100.0,1400.0,lab B\n1.0,20.0,150.0,lab C\n0.1,2.0,60.0,lab C\n,0.0,57.0,lab C\n")
+    rows = data.read_canonical_pulloff(csv)
+    setup_json = _setup_json(tmp_path)
+    fit = _fit(3)
+    table = fit_report.measured_vs_predicted(fit, rows, setup_json)
+    v0 = 4.503121e-05
+    assert table["omega_check"].iloc[:5].tolist() == pytest.approx(
+        [2 * math.pi * f * 51.5e-3 / v0 for f in (200.0, 300.0, 400.0, 1.0, 0.1)], rel=1e-14)
+    assert math.isnan(table["omega_check"].iloc[5]) and table["A_over_am:refined"].iloc[5] == 0.0
+    setup = data.read_canonical_setup(setup_json)
+    params = GentSchultzParameters(0.2361234, 0.531, v0)
+    refined = predict_pulloff("refined", params, [200.0, 300.0, 400.0, 1.0, 0.1], [20.0, 60.0, 100.0, 20.0, 2.0],
+                              radius=setup.radius, reduced_modulus=setup.reduced_modulus).A_over_am
+    assert table["A_over_am:refined"].iloc[:5].tolist() == pytest.approx(list(refined), rel=1e-12)
+    assert max(refined[:3]) < APPLICABILITY_LIMIT < refined[3] and refined[4] < APPLICABILITY_LIMIT
+    assert table["range"].tolist() == ["inside"] * 3 + [
+        f"outside the asymptotic levels' range: A/a_m = {refined[3]:.2g} > 0.1",
+        "outside the asymptotic levels' range: ωR/v0 = 719 outside 10^3–10^8", "inside"]
+    assert fit_report.range_sentence(table).startswith("2 of 6 rows lie outside the asymptotic levels' range")
+    plotted = fit_report.long_predictions(table)
+    assert set(plotted.loc[plotted["range"] != "inside", "measured_mN"]) <= {150.0, 60.0}
+    headers = fit_report.measured_vs_predicted_columns(table)
+    assert headers["range"].header == "asymptotic levels' range" and headers["range"].format == "text"
+    fig = figures.plot_measured_vs_predicted(pd.DataFrame({
+        "level": ["a", "a"], "measured_mN": [170.0, 150.0], "predicted_mN": [171.0, 140.0],
+        "range": ["inside", table["range"].iloc[3]]}))
+    assert [t.get_text() for t in fig.axes[0].texts] == [f"A/a_m = {refined[3]:.2g} > 0.1"]
+    assert "outside the asymptotic levels' range" in [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
 
 
 @pytest.mark.parametrize("rows", [0, 3])
@@ -127,6 +196,7 @@ def test_fit_page_renders_with_and_without_measured_rows(tmp_path: Path, rows: i
     html = page.html.read_text(encoding="utf-8")
     if rows:
         assert "0.2361\u00a0±\u00a00.0012" in html and "contact_loss_before_extremum" in html and "image/png" in html
+        assert "All 3 rows lie inside the asymptotic levels" in html
     else:
         assert "holds no measured rows" in html and "Estimates per model level" not in html
     assert "0.236" in html

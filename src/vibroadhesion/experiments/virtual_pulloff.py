@@ -149,6 +149,23 @@ def traced_pulloff(problem: Problem, *, warm: tuple[float, np.ndarray] | None = 
                    iterations: int = 15) -> tuple[Pulloff, tuple[float, SteadyState] | None]:
     """The pull-off record of :func:`simulated_pulloff` and its most tensile orbit (base_offset, orbit), or None.
 
+    :func:`traced_family` with its orbit kept only where the family has a pull-off (the keywords are its).
+    """
+    record, reached = traced_family(problem, warm=warm, step=step, max_steps=max_steps, halvings=halvings,
+                                    iterations=iterations)
+    return record, reached if str(record.status) == "pulloff" else None
+
+
+def traced_family(problem: Problem, *, warm: tuple[float, np.ndarray] | None = None, step: float = 0.2,
+                  max_steps: int = 400, halvings: int = 6,
+                  iterations: int = 15) -> tuple[Pulloff, tuple[float, SteadyState] | None]:
+    """The pull-off record and the most tensile orbit (base_offset, orbit) the family reached; None without orbits.
+
+    With a pull-off that orbit is the pull-off's. A family that ends without a force extremum (its record says
+    why) still gives its most tensile orbit, the last before it ended while P_m grew more tensile: the minimum of
+    P_m over the base offsets the family reached, attained at their end (the fit's search uses it, module
+    docstring of :mod:`vibroadhesion.experiments.simulation_fit`).
+
     The family starts from the state of the module docstring ("Start"): at ``problem``'s base offset from
     the static state, preloaded to base_offset = etahat where that loses contact (rigid fixation), or, with
     ``warm`` = (base_offset, start_state), from a nearby orbit (a fit's previous pull-off): if the mean force
@@ -177,21 +194,22 @@ def traced_pulloff(problem: Problem, *, warm: tuple[float, np.ndarray] | None = 
             if not family:
                 return _ended(status, run.solved), None
             if failure is not None and d0 == failure[0]:  # failed again from the close prediction: the end
-                return _ended(_end_of_family(run.problem_at(d0), family[-1][1], status), run.solved), None
+                return (_ended(_end_of_family(run.problem_at(d0), family[-1][1], status), run.solved),
+                        min(family, key=_phat))
             failure = (d0, status)
         else:
             family.append((d0, orbit_k))
             if failure is not None and d0 == failure[0]:  # the earlier failure was the shooting's, not the family's
                 failure = None
             if warm is not None and len(family) == 2 and _phat(family[1]) >= _phat(family[0]):
-                return traced_pulloff(problem, step=step, max_steps=max_steps, halvings=halvings,
-                                      iterations=iterations)  # the warm start lies beyond the extremum
+                return traced_family(problem, step=step, max_steps=max_steps, halvings=halvings,
+                                     iterations=iterations)  # the warm start lies beyond the extremum
             if _tensile_extremum([_phat(member) for member in family[-3:]]):
                 break
         d0, state = _next_offset(family, failure, step, sigma, halvings)
         orbit_k = run.orbit(d0, state)
     else:
-        return _ended("not_converged", run.solved), None
+        return _ended("not_converged", run.solved), min(family, key=_phat)
     d_best = run.most_tensile(family[-3:], step)
     return _pulloff_record(run.cache[d_best], d_best, run.solved), (d_best, run.cache[d_best])
 

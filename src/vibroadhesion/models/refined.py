@@ -47,6 +47,11 @@ from vibroadhesion.numerics.roots import solve_log_increasing
 #: The asymptotic model needs A << a_m; the paper takes A <= 0.1 a_m as its region of applicability (Sec. 3.5.3).
 APPLICABILITY_LIMIT = 0.1
 
+#: omega_check = omega R/v0 (Eq. 105) over which the asymptotic levels are validated against the simulation: the
+#: validation's grid (workflow/config.yaml, validation.log10_omega_check_min/max = 3, 8; a test keeps them equal).
+#: Outside it their error is unknown (0.1 Hz on the paper's rig is omega_check = 727; its tests are ~1.5e6).
+VALIDATED_OMEGA_CHECK = (1e3, 1e8)
+
 Array = NDArray[np.float64]
 
 

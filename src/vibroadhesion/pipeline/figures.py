@@ -473,7 +473,9 @@ def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:
     """Predicted against measured pull-off force (mN), one marker per model level, and the 1:1 line.
 
     ``predictions`` has columns level, measured_mN, predicted_mN (:func:`vibroadhesion.pipeline.fit_report.
-    long_predictions`); each level's prediction is |P_cr| of its own fit (Eq. 71 or the simulated pull-off).
+    long_predictions`); each level's prediction is |P_cr| of its own fit (Eq. 71 or the simulated pull-off). With
+    a ``range`` column, the rows outside the asymptotic levels' range (not ``inside``) are crossed in red and
+    labelled once with why (e.g. ``A/a_m = 0.23 > 0.1``).
     """
     fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
     values = pd.concat([predictions["measured_mN"], predictions["predicted_mN"]])
@@ -482,6 +484,13 @@ def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:
     for k, (level, rows) in enumerate(predictions.groupby("level", sort=False)):
         ax.plot(rows["measured_mN"], rows["predicted_mN"], "os^Dv<>p"[k % 8], mfc="none", color=f"C{k}", ms=6,
                 ls="none", label=str(level))
+    outside = predictions[predictions.get("range", pd.Series("inside", index=predictions.index)) != "inside"]
+    if not outside.empty:
+        ax.plot(outside["measured_mN"], outside["predicted_mN"], "x", color="red", ms=8, ls="none",
+                label="outside the asymptotic levels' range")
+        for row in outside.drop_duplicates(["measured_mN", "range"]).itertuples():
+            ax.annotate(str(row.range).partition(": ")[2], (row.measured_mN, row.predicted_mN), fontsize=6,
+                        color="red", xytext=(4, -8), textcoords="offset points")
     ax.set(xlim=span, ylim=span, aspect="equal", xlabel="measured |P_cr| (mN)",
            ylabel="predicted |P_cr| (mN)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data

@@ -4,18 +4,26 @@ Reads the fit summary of rule ``fit_gent_schultz`` (results/fit/gent_schultz.jso
 :func:`vibroadhesion.experiments.fitting.fit_gent_schultz` per level) and the ingested rows. The levels come in the
 registry's order (:mod:`vibroadhesion.core.levels`), which puts the simulation of the full model first: it is the
 headline when its fit converged (``fitted`` or ``at_bound``), the cheaper levels say what they would have given.
+
+Each measured row is flagged where it lies outside the asymptotic levels' range (:func:`applicability`): the
+refined model's A/a_m at detachment above APPLICABILITY_LIMIT (the paper's A <= 0.1 a_m, Sec. 3.5.3), or
+omega_check (Eq. 105) outside VALIDATED_OMEGA_CHECK, where the validation has not compared them with the simulation.
 """
 
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pandas as pd
 
-from vibroadhesion.core import levels
+from vibroadhesion.core import groups, levels
+from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
+from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
+from vibroadhesion.numerics.roots import NoRootError
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.tables import Column, exact, plus_minus, significant
 
@@ -107,15 +115,69 @@ def predicted_mN(summary: dict[str, Any], rows: pd.DataFrame) -> pd.Series | Non
     return predicted
 
 
-def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame) -> pd.DataFrame:
+def reference_level(fit: dict[str, Any]) -> str:
+    """The level the page's residuals and ranges refer to: the headline, else the fit the figures use."""
+    return headline(fit) or str(fit["figures_use"])
+
+
+def outside_text(omega_check: float, a_over_am: float) -> str:
+    """``inside``, or ``outside the asymptotic levels' range: `` and why (module docstring).
+
+    ``a_over_am``: the refined model's A/a_m at detachment (NaN: it has no pull-off there); ``omega_check`` NaN for
+    a static JKR test (h1 = 0, Eq. 70 at every level, inside).
+    """
+    reasons = []
+    if math.isnan(a_over_am):
+        reasons.append("A/a_m unknown (the refined model has no pull-off)")
+    elif a_over_am > APPLICABILITY_LIMIT:
+        reasons.append(f"A/a_m = {a_over_am:.2g} > {APPLICABILITY_LIMIT:g}")
+    lo, hi = VALIDATED_OMEGA_CHECK
+    if not math.isnan(omega_check) and not lo <= omega_check <= hi:
+        reasons.append(f"ωR/v0 = {omega_check:.3g} outside {_validated_range()}")
+    return "outside the asymptotic levels' range: " + ", ".join(reasons) if reasons else "inside"
+
+
+def applicability(fit: dict[str, Any], rows: pd.DataFrame, setup_json: str | Path) -> pd.DataFrame:
+    """Per row (index ``line``): omega_check, A/a_m and range at the reference fit (module docstring).
+
+    omega_check = 2 pi f R/v0 (Eq. 105), the refined model's A/a_m at detachment (Eqs. 98, 106) and
+    :func:`outside_text`, at the parameters of :func:`reference_level`'s fit. The refined model is solved once
+    per distinct (f, h1) (:func:`predict_pulloff`); a static JKR test (h1 = 0, no frequency) has A = 0.
+    """
+    setup = data.read_canonical_setup(setup_json)
+    estimates = fit["fits"][reference_level(fit)]["parameters"]
+    params = GentSchultzParameters(*(float(estimates[name]["estimate"]) for name in ("w0", "n", "v0")))
+    keys = [(0.0, 0.0) if h == 0 else (float(f), float(h)) for f, h in zip(rows["frequency_hz"], rows["h1_um"],
+                                                                          strict=True)]
+    ratio = {key: 0.0 if key[1] == 0 else _refined_ratio(params, *key, setup.radius, setup.reduced_modulus)
+             for key in set(keys)}
+    table = pd.DataFrame({"line": rows["line"], "omega_check": np.where(
+        rows["h1_um"] > 0, groups.omega_check(rows["frequency_hz"], params.v0, setup.radius), np.nan)})
+    table["A_over_am:refined"] = [ratio[key] for key in keys]
+    table["range"] = [outside_text(w, r) for w, r in zip(table["omega_check"], table["A_over_am:refined"], strict=True)]
+    return table.set_index("line")
+
+
+def _refined_ratio(params: GentSchultzParameters, frequency_hz: float, h1_um: float, radius: float,
+                    reduced_modulus: float) -> float:
+    """A/a_m at the refined pull-off (Eqs. 98, 106) of one vibrated test; NaN where Eq. (106) has no root."""
+    try:
+        pulloff = predict_pulloff("refined", params, frequency_hz, h1_um, radius=radius,
+                                  reduced_modulus=reduced_modulus)
+    except NoRootError:
+        return math.nan
+    return float(pulloff.A_over_am)
+
+
+def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: str | Path) -> pd.DataFrame:
     """Per measured row: frequency, h1, source, measured and predicted pull-off (mN) per level that fitted.
 
-    Then the relative residual predicted/measured - 1 of the headline level (else of the figures' level), and the
-    status of the simulation's virtual pull-off per row when the simulation was fitted (``contact_loss_*`` where
-    the family lost contact before a pull-off).
+    Then the relative residual predicted/measured - 1 of :func:`reference_level`, the status of the simulation's
+    virtual pull-off per row when the simulation was fitted (``contact_loss_*`` where the family lost contact before
+    a pull-off), and the asymptotic levels' range at that level's fit (:func:`applicability`).
     """
     table = rows[["line", "frequency_hz", "h1_um", "source", "pulloff_mN"]].set_index("line")
-    reference = headline(fit) or fit["figures_use"]
+    reference = reference_level(fit)
     for name in ordered_levels(fit):
         predicted = predicted_mN(fit["fits"][name], rows)
         if predicted is not None:
@@ -125,6 +187,7 @@ def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame) -> pd.DataFra
     status = {r["line"]: r["status"] for r in fit["fits"].get("simulation", {}).get("row_status", ())}
     if status:
         table["status:simulation"] = pd.Series(status)
+    table = table.join(applicability(fit, rows, setup_json))
     return table.reset_index(drop=True)
 
 
@@ -139,16 +202,23 @@ def measured_vs_predicted_columns(table: pd.DataFrame) -> dict[str, Column]:
             columns[name] = Column(f"relative residual, {level}", format="rel")
         elif kind == "status":
             columns[name] = Column(f"row status, {level}", format="text")
+    columns |= {"omega_check": Column("ω̌ = ωR/v0 at the fit (Eq. 105)"),
+                "A_over_am:refined": Column("A/a_m at detachment, refined"),
+                "range": Column("asymptotic levels' range", format="text")}
     return columns
 
 
 def long_predictions(table: pd.DataFrame) -> pd.DataFrame:
-    """:func:`measured_vs_predicted` as (level label, measured, predicted) rows with a prediction, for the plot."""
+    """:func:`measured_vs_predicted` as (level label, measured, predicted, range) rows with a prediction, for the plot.
+
+    ``range`` is the row's :func:`outside_text` (``inside`` where the table has no range column).
+    """
+    ranges = table["range"] if "range" in table else pd.Series("inside", index=table.index)
     parts = [pd.DataFrame({"level": levels.level(str(name).partition(":")[2]).label,
-                           "measured_mN": table["pulloff_mN"], "predicted_mN": table[name]})
+                           "measured_mN": table["pulloff_mN"], "predicted_mN": table[name], "range": ranges})
              for name in table.columns if str(name).startswith("predicted_mN:")]
     if not parts:
-        return pd.DataFrame(columns=["level", "measured_mN", "predicted_mN"])
+        return pd.DataFrame(columns=["level", "measured_mN", "predicted_mN", "range"])
     return pd.concat(parts, ignore_index=True).dropna(subset=["predicted_mN"])
 
 
@@ -180,6 +250,25 @@ def summary_sentence(fit: dict[str, Any]) -> str:
     else:
         head = "The simulation is not among the fitted levels"
     return (f"{fit['data_rows']} measured rows. {head}. The figures use the **{fit['figures_use']}** fit.")
+
+
+def _validated_range() -> str:
+    """VALIDATED_OMEGA_CHECK as text: ``10^3–10^8``."""
+    lo, hi = VALIDATED_OMEGA_CHECK
+    return f"10^{math.log10(lo):g}–10^{math.log10(hi):g}"
+
+
+def range_sentence(table: pd.DataFrame) -> str:
+    """One sentence on the rows outside the asymptotic levels' range (:func:`measured_vs_predicted`'s ``range``)."""
+    outside = int((table["range"] != "inside").sum())
+    limits = (f"the refined model's A/a_m at detachment at most {APPLICABILITY_LIMIT:g} (the paper's A ≤ 0.1 a_m, "
+              f"Sec. 3.5.3) and ω̌ = ωR/v0 within {_validated_range()}, where the validation compares the levels "
+              "with the simulation")
+    if not outside:
+        return f"All {len(table)} rows lie inside the asymptotic levels' range: {limits}."
+    return (f"{outside} of {len(table)} rows lie outside the asymptotic levels' range ({limits}), marked in the plot "
+            "and the table: there the cheaper levels' predictions are extrapolations, and only the full model (the "
+            "simulation) applies.")
 
 
 def measured_rows(pulloff_csv: str | Path) -> pd.DataFrame:
