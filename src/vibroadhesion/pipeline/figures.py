@@ -3,7 +3,8 @@
 Each ``plot_figN`` draws the table that :mod:`vibroadhesion.experiments.figure_tables` computed (and nothing it
 would have to recompute with a solver), so restyling a plot never reruns a solve. :func:`save_figure` writes PDF and
 PNG without time stamps. With :mod:`vibroadhesion.pipeline.error_maps` (the validation's error maps, in this
-style), the only modules of the package that import matplotlib.
+style) and :mod:`vibroadhesion.pipeline.dynamics_figures` (the withdrawal speed and the two rigs), the only
+modules of the package that import matplotlib.
 """
 
 from __future__ import annotations
@@ -388,82 +389,6 @@ def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
            xlim=(sweep["omega_bar"].min(), sweep["omega_bar"].max()))
     shade_amplitude_regions(ax)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # beside the data
-    return fig
-
-
-# --- Withdrawal at a finite speed (issue 15) ----------------------------------------------------
-
-def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
-    """Simulated period-mean pull-off P/|P_JKR| (Eqs. 4', 70) against V/v0, one panel per fixation.
-
-    One line per (frequency, h1) of :mod:`vibroadhesion.experiments.speed_sweep`; the quasi-static family value
-    (the V -> 0 asymptote) as a dashed tick at the left of each line; open markers: detached before the
-    period-mean force passed its extremum (the instantaneous reading).
-    """
-    fixations = list(dict.fromkeys(sweep["fixation"]))
-    amplitudes, frequencies = sorted(set(sweep["h1_um"])), sorted(set(sweep["frequency_hz"]))
-    fig, axes = plt.subplots(1, len(fixations), figsize=(5.2 * len(fixations), 4.4), layout="constrained",
-                             squeeze=False)
-    for ax, fixation in zip(axes[0], fixations, strict=True):
-        rows = sweep[sweep["fixation"] == fixation]
-        for (frequency, h1), test in rows.groupby(["frequency_hz", "h1_um"], sort=True):
-            test = test.sort_values("V_over_v0")
-            color, marker = f"C{amplitudes.index(h1) % 10}", "os^Dv"[frequencies.index(frequency) % 5]
-            done = test["status"] == "pulloff"
-            ax.plot(test["V_over_v0"], test["mean_pulloff_ratio"], "-", color=color, lw=0.8, marker=marker, ms=4,
-                    mfc="none", label=f"{frequency:g} Hz, {h1:g} µm")
-            ax.plot(test.loc[done, "V_over_v0"], test.loc[done, "mean_pulloff_ratio"], marker, color=color, ms=4)
-            v_min = float(test["V_over_v0"].min())
-            ax.plot([v_min / 4.0, v_min], [test["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
-        ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
-               ylabel=r"simulated pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation (simulated)")
-        ax.legend(fontsize=5.5, ncols=3, loc="best", title="dashed: quasi-static (V → 0); open: detached "
-                  "before the mean extremum", title_fontsize=5.5)
-    return fig
-
-
-# --- The two rigs (Figs. 1, 2; Eq. 13; Appendix B) ---------------------------------------------
-
-
-def plot_rig_comparison(table: pd.DataFrame) -> Figure:
-    """Pull-off of the base and the force rig against h1, and the force rig's drive F1/(k h1) = |D| against omega_bar.
-
-    Left, for the configured damping: the leading order of the base rig (lines), the SIMULATED virtual pull-off
-    of the base rig (o) and of the equal-amplitude force rig, F1 = k h1 |D| (x: on the o's), and at the
-    anti-resonance the force rig at F1 = k h1 (triangles; leading order dashed). Right: |1 - omega_bar^2 +
-    2 i zeta omega_bar| (Eqs. 22, 65), 0 at the undamped anti-resonance, with the frequencies of the table.
-    """
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 3.8), layout="constrained")
-    zeta = float(table["zeta"].max())
-    damped = table[table["zeta"] == zeta]
-    for k, (frequency, rows) in enumerate(damped.groupby("frequency_hz")):
-        color, by = f"C{k}", {key: rows[(rows["rig"] == key[0]) & (rows["level"] == key[1])]
-                              for key in [(r, lv) for r in ("base", "force_equivalent", "force_spring")
-                                          for lv in ("leading", "simulation")]}
-        left.plot(by["base", "leading"]["h1_um"], by["base", "leading"]["pulloff_ratio"], "-", color=color, lw=1,
-                  label=f"{frequency:.3g} Hz, base rig, leading order")
-        left.plot(by["base", "simulation"]["h1_um"], by["base", "simulation"]["pulloff_ratio"], "o", color=color,
-                  mfc="none", label=f"{frequency:.3g} Hz, base rig, SIMULATED")
-        equivalent = by["force_equivalent", "simulation"]
-        left.plot(equivalent["h1_um"], equivalent["pulloff_ratio"], "x", color=color,
-                  label=f"{frequency:.3g} Hz, force rig F1 = k h1 |D|, SIMULATED")
-        if k == 0:
-            spring = by["force_spring", "simulation"]
-            left.plot(spring["h1_um"], spring["pulloff_ratio"], "^", color=color,
-                      label=f"{frequency:.3g} Hz, force rig F1 = k h1, SIMULATED")
-            left.plot(by["force_spring", "leading"]["h1_um"], by["force_spring", "leading"]["pulloff_ratio"], "--",
-                      color=color, lw=1, label=f"{frequency:.3g} Hz, force rig F1 = k h1, leading order")
-    left.set(xlabel=r"$h_1$ ($\mu$m)", ylabel=r"$P_{\rm pull-off}/P^{\rm JKR}$", yscale="log")
-    omega_bar = np.geomspace(0.1, 2.0 * float(table["omega_bar"].max()), 400)
-    for z, style in ((zeta, "k-"), (0.0, "k:")):
-        right.plot(omega_bar, np.abs(1.0 - omega_bar**2 + 2j * z * omega_bar), style, lw=1, label=rf"$\zeta$ = {z:g}")
-    points = table[table["rig"] == "force_equivalent"].drop_duplicates(["zeta", "omega_bar"])
-    right.plot(points["omega_bar"], points["drive_ratio"].clip(lower=1e-3), "ko", mfc="none",
-               label="the table's points")
-    right.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$",
-              ylabel=r"$F_1/(k h_1)$ at equal contact amplitude", ylim=(1e-3, None))
-    right.legend(fontsize=7)
-    left.legend(fontsize=6, loc="upper left", bbox_to_anchor=(0.0, -0.18), ncol=2)
     return fig
 
 

@@ -1,6 +1,6 @@
 """Steps of the plot rules: draw a table written by a compute rule (no solve) and save PDF and PNG.
 
-The only steps that import matplotlib (through :mod:`vibroadhesion.pipeline.figures`).
+The only steps that import matplotlib (through :mod:`vibroadhesion.pipeline.figures` and its siblings).
 """
 
 from __future__ import annotations
@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 import pandas as pd
 
 from vibroadhesion.experiments.pulloff import jkr_mN
-from vibroadhesion.pipeline import error_maps, figures
+from vibroadhesion.pipeline import dynamics_figures, error_maps, figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
 from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, parameter_label, rig, setup_number
 
@@ -121,9 +121,9 @@ def compliant_sweep_plot(csv: Path_, curve_csv: Path_, pdf: Path_, png: Path_) -
 
 def withdrawal_plot(csv: Path_, pdf: Path_, png: Path_) -> None:
     """The speed sweep: simulated P/|P_JKR| (Eqs. 4', 70) against V/v0 with the quasi-static asymptote."""
-    figures.save_figure(figures.plot_speed_sweep(pd.read_csv(csv)), pdf, png)
+    figures.save_figure(dynamics_figures.plot_speed_sweep(pd.read_csv(csv)), pdf, png)
 
 
 def rigs_plot(csv: Path_, pdf: Path_, png: Path_) -> None:
     """The base and the force rig compared (Eq. 13, Appendix B; table of the rig-comparison rules)."""
-    figures.save_figure(figures.plot_rig_comparison(pd.read_csv(csv)), pdf, png)
+    figures.save_figure(dynamics_figures.plot_rig_comparison(pd.read_csv(csv)), pdf, png)
