@@ -1,4 +1,4 @@
-"""The compiled helpers of the orbit analysis and of the start (vibroadhesion.simulation.kernel).
+"""The compiled helpers of the orbit analysis and of the start (vibroadhesion.simulation.kernel), and the first period.
 
 References:
 * closed forms: the frozen mean speed for n = 1 in the opening range (x = 1 - Phi, a trigonometric
@@ -6,6 +6,7 @@ References:
   cap; abar (Phi - 1) = gap^2 - abar;
 * a central difference of Phi(abar(tau), deltabar(tau)) along the rates of Eq. (6') for dPhi/dtau;
 * :func:`scipy.integrate.solve_ivp` (DOP853, rtol 1e-13) for the re-integration inside a step;
+* the first period at the full rtol for the looser first period of the shooting.
 """
 
 from __future__ import annotations
@@ -21,9 +22,9 @@ from vibroadhesion import simulation as sim
 from vibroadhesion.core.groups import omega_check
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.simulation import kernel
-from vibroadhesion.simulation.integrators import Integrators, Period, run_period, v_scale_estimate
-from vibroadhesion.simulation.model import Model, contact_kernel
+from vibroadhesion.simulation import kernel, shooting
+from vibroadhesion.simulation.integrators import Integrators, Period, run_period, v_scale_estimate, x_scale
+from vibroadhesion.simulation.model import Model, absolute_start, contact_kernel
 
 OMEGA_200HZ = float(omega_check(200.0, V0, RADIUS))
 SINES = np.sin(np.linspace(0.0, 2 * math.pi, 512, endpoint=False))
@@ -87,6 +88,37 @@ def test_point_in_step_equals_solve_ivp() -> None:
     same = np.empty(1)
     assert kernel.point_in_step(kernel.TURNING, k, tau_k, run.cores[10], tau_k, 1e-12, 10_000, same)[0] == 0
     assert same[0] == run.cores[10][0]
+
+
+def test_with_rtol_shares_the_record_and_checks_the_range() -> None:
+    integrators = Integrators("auto", 1e-12)
+    looser = integrators.with_rtol(1e-9)
+    looser.note("numba-dop853")
+    assert looser.rtol == 1e-9 and integrators.rtol == 1e-12 and integrators.used == ["numba-dop853"]
+    with pytest.raises(ValueError):
+        integrators.with_rtol(1e-2)
+
+
+@pytest.mark.parametrize("h1_um, omega, kept", [(20.0, OMEGA_200HZ, True), (100.0, OMEGA_200HZ, True),
+                                                 (100.0, 1e5, False)])
+def test_first_period_looser_where_it_decides_the_same(h1_um: float, omega: float, kept: bool) -> None:
+    """Where the contact is kept, the first period from the static state runs at rtol 1e-9 and its end
+    state agrees with the full-rtol one to its stated margin (1e-5 of the scale; measured <= 8.7e-8);
+    where the contact is lost (h1 = 100 um at omega_check 1e5) it is repeated at rtol and equal to it.
+    """
+    problem = Problem(GentSchultz(N_PUBLISHED), CHI0, h1_um * 1e-6 / RADIUS, omega)
+    model = Model(problem, 1e-3)
+    start = absolute_start(model, None)
+    v_scale = v_scale_estimate(model, float(start[0]))
+    first = shooting._first_period(model, start, v_scale, Integrators("auto", 1e-12))
+    full = run_period(Period(model, start, v_scale, x_scale(model, start)), Integrators("auto", 1e-12), full=False,
+                      transient=True)
+    assert math.isnan(first.lost_at) == math.isnan(full.lost_at) == kept
+    if kept:
+        assert len(first.taus) < len(full.taus)
+        assert abs(float(first.y_end[0] - full.y_end[0])) <= 1e-5 * max(1.0, float(np.max(np.abs(full.cores))))
+    else:
+        assert first.lost_at == full.lost_at and np.array_equal(first.y_end, full.y_end)
 
 
 def test_point_values_agree_with_the_contact_kernel_speed() -> None:

@@ -37,6 +37,7 @@ and the result is ``integration_failure`` (after ~10^4 steps), not a number.
 
 from __future__ import annotations
 
+import copy
 import math
 import warnings
 from collections.abc import Callable, Sequence
@@ -308,6 +309,14 @@ class Integrators:
         self.transient = "LSODA" if self.auto else integrator
         self.rtol = rtol
         self.used: list[str] = []
+
+    def with_rtol(self, rtol: float) -> Integrators:
+        """The same methods at another ``rtol`` (in [1e-13, 1e-3]), recording into the same ``used``."""
+        if not (1e-13 <= rtol <= 1e-3):
+            raise ValueError(f"rtol must lie in [1e-13, 1e-3], got {rtol}")
+        other = copy.copy(self)
+        other.rtol = rtol
+        return other
 
     def compiles(self, period: Period, transient: bool = False) -> bool:
         """Whether ``period`` runs with the compiled DOP853 ("auto"; a transient only if rigid with n <= 1)."""
