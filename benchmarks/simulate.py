@@ -1,6 +1,6 @@
 """Benchmark: periodic steady states of the full model by shooting (vibroadhesion.simulation).
 
-Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON]
+Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON] [--compile]
 
 For each case it prints
 * the time per steady state (min and median of 5 of process CPU time, median of wall time),
@@ -12,8 +12,9 @@ For each case it prints
   within 1e-10 of the orbit, ln(1e-10)/ln|multiplier| (the slowest Floquet multiplier), and the
   speed-up of the shooting over it.
 
-and the one-off compilation of the numba kernel (the first steady state of a fresh process with an
-empty cache, then with the cache it wrote; every later call in any process is warm).
+With ``--compile`` (not in the pipeline's rule: it takes about a minute) also the one-off compilation
+of the numba kernel: the first steady state of a fresh process with an empty cache, then with the
+cache it wrote (every later call in any process is warm).
 
 With ``--against PYTHON`` (the interpreter of another clone's environment, e.g. the main branch's
 .venv/bin/python) it then times the paper's 200 Hz test (rigid, n = 0.531, h1 = 20, 60, 100 um):
@@ -213,7 +214,10 @@ if __name__ == "__main__":
         at = args.index("--against")
         against = args[at + 1]
         del args[at : at + 2]
-    text = format_rows([row(*case) for case in cases()]) + compile_cost()
+    text = format_rows([row(*case) for case in cases()])
+    if "--compile" in args:
+        args.remove("--compile")
+        text += compile_cost()
     print(text, end="", flush=True)
     if against is not None:
         comparison = side_by_side(against)
