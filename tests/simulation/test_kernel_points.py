@@ -135,23 +135,3 @@ def test_point_values_agree_with_the_contact_kernel_speed() -> None:
     expected = gap * (3 * abar * abar + d) / (abar * abar) * x / m.speed_scale
     value = kernel.point_values(kernel.PHI_RATE, np.array([tau]), core[None, :], k)[0]
     assert value == pytest.approx(expected, rel=1e-12)
-
-
-def test_halley_slope_of_the_newton_correction() -> None:
-    """dg/da0 of g = r/r' from r' at two points (closed forms): r = c (a - 1)^2 gives 1/2 exactly (one step
-    lands on the root), r = (a - 1) + (a - 1)^2 the exact 1 - r r''/r'^2 (r'' = 2 constant), and a start
-    without a previous evaluation (or with r r'' <= -r'^2, no root of that shape) the Newton value 1.
-    """
-    def square(a: float) -> tuple[float, float]:
-        return -3.0 * (a - 1.0) ** 2, -6.0 * (a - 1.0)
-
-    r, dr = square(1.2)
-    g_slope = shooting._g_slope(1.2, r, dr, (1.5, square(1.5)[1]))
-    assert g_slope == pytest.approx(0.5, rel=1e-14)
-    assert 1.2 - r / dr / g_slope == pytest.approx(1.0, rel=1e-14)
-    e, e_prev = 1e-3, 4e-2
-    r, dr = e + e * e, 1.0 + 2.0 * e
-    assert shooting._g_slope(1.0 + e, r, dr, (1.0 + e_prev, 1.0 + 2.0 * e_prev)) == pytest.approx(
-        1.0 - r * 2.0 / dr**2, rel=1e-12)
-    assert shooting._g_slope(1.0 + e, r, dr, None) == 1.0
-    assert shooting._g_slope(1.0 + e, -r, dr, (1.0 + e_prev, 1.0 - 1e6)) == 1.0

@@ -21,8 +21,7 @@ from central differences of the map (step 1e-5 of the scaled state, accuracy ~1e
 Iteration. The Newton correction g = Psi^{-1} r is ~ z - z* near a simple fixed point and
 ~ (z - z*)/p near one of order p (r ~ |z - z*|^p: a contact that barely moves has x ~ |Phi - 1|^(1/n)),
 where plain Newton would crawl (p > 1) or oscillate (p < 1); steps therefore solve B dz = -g with B
-a secant (Broyden) estimate of dg/dz started at the identity (plain Newton; for the scalar rigid map
-dg/da0 = 1 - r r''/r'^2 with r'' the secant of the exact r', Halley's method). The orbit is accepted
+a secant (Broyden) estimate of dg/dz started at the identity (plain Newton). The orbit is accepted
 when the step is below 1e-11 of the state, or below the uncertainty of the fixed point that an
 integration error of 10 rtol in r causes (|Psi^{-1}| 10 rtol), or when r itself is at rounding
 level (10 rtol, or a drift of abar below its resolution).
@@ -218,32 +217,22 @@ def _rigid_drift_and_slope(model: Model, run: Run, integrators: Integrators) -> 
     return drift, slope, log_multiplier
 
 
-def _g_slope(a: float, drift: float, slope: float, previous: tuple[float, float] | None) -> float:
-    """dg/da0 of the Newton correction g = r/r' at a0 = ``a``: 1 - r r''/r'^2 (Halley's method), 1 to start.
-
-    r'' is the secant of r' between ``previous`` = (a0, r') and (``a``, ``slope``): exact to second
-    order at a simple root (where the plain Newton step, dg/da0 = 1, loses a factor ~r''/r' (a0 - a*)
-    per step), and 1/p for r ~ c |a0 - a*|^p (exactly for p = 2, approximately for other orders),
-    where plain Newton would crawl (p > 1) or oscillate (p < 1). A value <= 0 (no such root) gives 1.
-    """
-    if previous is None or previous[0] == a:
-        return 1.0
-    halley = 1.0 - drift * (slope - previous[1]) / ((a - previous[0]) * slope * slope)
-    return halley if halley > 0 else 1.0
-
-
 def _secant_step(model: Model, run: Run, integrators: Integrators, a: float, drift: float, slope: float,
                  previous: tuple[float, float] | None) -> tuple[float, float, tuple[float, float]]:
-    """(step, noise, (a0, r')): the step -g/g' on the Newton correction g = r/r' (g' of :func:`_g_slope`).
+    """(step, noise, (a0, g)): secant step on the Newton correction g = r/r' (slope 1 to start).
 
     ``noise`` is the uncertainty of the fixed point caused by the integration error of v(2pi);
-    ``previous`` is the (a0, r') of the last evaluation with r' < 0.
+    ``previous`` is the (a0, g) of the last evaluation with r' < 0.
     """
-    g_slope = _g_slope(a, drift, slope, previous)
-    step = -drift / slope / g_slope
+    g = drift / slope
+    g_slope = 1.0
+    if previous is not None and previous[0] != a:
+        secant = (g - previous[1]) / (a - previous[0])
+        g_slope = secant if secant > 0 else 1.0
+    step = -g / g_slope
     noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run) * run.period.v_scale
              / (model.speed_scale * abs(slope) * g_slope))
-    return step, noise, (a, slope)
+    return step, noise, (a, g)
 
 
 def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_iterations: int,
@@ -256,10 +245,9 @@ def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_itera
     lambda = ln(d abar(tau)/d a0), lambda' = dF/dabar, so that the multiplier e^lambda and
     r'(a0) = expm1(lambda) keep full precision however close to 0 or to 1 the multiplier is.
     Steps follow the Newton correction g = r/r', which near a root of any order p (r ~ |a0 - a*|^p,
-    as when the contact barely moves and x ~ |Phi - 1|^(1/n)) is ~ (a0 - a*)/p: Newton steps on
-    g (starting from its ideal slope 1, then Halley's g' = 1 - r r''/r'^2, :func:`_secant_step`)
-    converge superlinearly where plain Newton would crawl (p > 1) or oscillate (p < 1); a step
-    leaving the bracket is replaced by bisection.
+    as when the contact barely moves and x ~ |Phi - 1|^(1/n)) is ~ (a0 - a*)/p: secant steps on
+    g (starting from its ideal slope 1) converge superlinearly where plain Newton would crawl
+    (p > 1) or oscillate (p < 1); a step leaving the bracket is replaced by bisection.
     """
     a = float(start[0])
     v_scale = v_scale_estimate(model, a)
@@ -278,7 +266,7 @@ def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_itera
         if bracket.contains(guess) and not periodic_to_rounding(first, integrators):
             a = guess
     periods = 0 if guess is None else 1
-    previous: tuple[float, float] | None = None  # (a0, r') of the last evaluation with r' < 0
+    previous: tuple[float, float] | None = None  # (a0, g) of the last evaluation with r' < 0
     while periods < max_iterations:
         run = _evaluate(model, np.array([a]), v_scale, integrators)
         periods += 1
