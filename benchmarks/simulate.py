@@ -1,6 +1,6 @@
 """Benchmark: periodic steady states of the full model by shooting (vibroadhesion.simulation).
 
-Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON]
+Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON] [--compile]
 
 For each case it prints
 * the time per steady state (min and median of 5 of process CPU time, median of wall time), with the
@@ -13,6 +13,10 @@ For each case it prints
   within 1e-10 of the orbit, ln(1e-10)/ln|multiplier| (the slowest Floquet multiplier), and the
   speed-up of the shooting over it.
 
+With ``--compile`` (not in the pipeline's rule: it takes about a minute) also the one-off compilation
+of the numba kernel: the first steady state of a fresh process with an empty cache, then with the
+cache it wrote (every later call in any process is warm).
+
 With ``--against PYTHON`` (the interpreter of another clone's environment, e.g. the main branch's
 .venv/bin/python) it then times the paper's 200 Hz test (rigid, n = 0.531, h1 = 20, 60, 100 um):
 one steady state from the static state and one whole virtual pull-off, in two worker processes
@@ -24,9 +28,11 @@ at the pull-off, located to 1e-4 step in base_offset on a flat extremum, only to
 
 import json
 import math
+import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 import numpy as np
@@ -148,6 +154,36 @@ def ask(worker, command):
     return json.loads(worker.stdout.readline())
 
 
+#: Run in a fresh process: the time from the import of the package to the end of the first steady state.
+FIRST_CALL = f"""
+import time
+start = time.perf_counter()
+from vibroadhesion.core.problem import Problem
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.simulation import steady_state
+steady_state(Problem(GentSchultz(0.531), {CHI0!r}, 20e-6 / {RADIUS!r}, {OMEGA_200HZ!r}))
+print(time.perf_counter() - start)
+"""
+
+
+def compile_cost():
+    """The one-off cost of the compiled kernel, min of 3 each.
+
+    The first steady state of a fresh process with an empty numba cache (it compiles and writes the
+    cache), then with that cache (it loads it).
+    """
+    cold, warm = [], []
+    for _ in range(3):
+        with tempfile.TemporaryDirectory() as cache:
+            env = {**os.environ, "NUMBA_CACHE_DIR": cache}
+            for times in (cold, warm):
+                out = subprocess.run([sys.executable, "-c", FIRST_CALL], env=env, capture_output=True, text=True,
+                                     check=True)
+                times.append(float(out.stdout))
+    return (f"\nFirst steady state of a fresh process (package import included, min of 3): "
+            f"{min(cold):.2f} s with an empty numba cache (compiles it once), {min(warm):.2f} s with the cache\n")
+
+
 def side_by_side(other_python):
     """Old (``other_python``) against new (this interpreter), asked in turn: min/median wall times and ratios."""
     workers = {"new": start_worker(sys.executable), "old": start_worker(other_python)}
@@ -183,6 +219,9 @@ if __name__ == "__main__":
     before = load_average()
     rows = [row(*case) for case in cases()]
     text = format_rows(rows, load_note(before))
+    if "--compile" in args:
+        args.remove("--compile")
+        text += compile_cost()
     print(text, end="", flush=True)
     if against is not None:
         comparison = side_by_side(against)

@@ -448,7 +448,7 @@ def test_shooting_self_consistency(pipeline_results: Path) -> None:
     assert "cpu min  cpu med  wall ms rtol 1e-13 diff" in header, header
     diffs = [float(line.split()[9]) for line in lines if line.startswith("rigid n=0.531") and " ok " in line]
     assert len(diffs) == 14
-    check("self-consistent to <= {4.5e-10} between rtol 1e-12 and 1e-13", [max(diffs)])
+    check("self-consistent to <= {2.1e-10} between rtol 1e-12 and 1e-13", [max(diffs)])
 
 
 def test_speed_against_error(pipeline_results: Path) -> None:

@@ -26,3 +26,29 @@ def test_lsoda_retry_gives_the_radau_retry_pulloff_at_n_4(monkeypatch) -> None:
     radau = simulated_pulloff(problem)
     assert auto.status == radau.status == "pulloff"
     assert abs(float(auto.pulloff_ratio) / float(radau.pulloff_ratio) - 1) < 1e-7
+
+
+def test_a_period_the_compiled_dop853_gave_up_on_skips_the_fortran_dop853(monkeypatch) -> None:
+    """After the compiled DOP853 gave up, "auto" goes on with LSODA (then Radau), not the same method again;
+    otherwise (and for a named integrator) the chain is unchanged.
+    """
+    tried: list[str] = []
+
+    def give_up(fun, jac, tau0, y0, tau1, method, rtol, on_step=None):
+        tried.append(method)
+        raise integrators.IntegrationError(method)
+
+    monkeypatch.setattr(integrators, "_integrate", give_up)
+    for gave_up, chain in ((True, ["LSODA", "Radau"]), (False, ["fortran-dop853", "LSODA", "Radau"])):
+        tried.clear()
+        try:
+            integrators.Integrators("auto", 1e-12).run(None, None, 0.0, [0.0], 1.0, compiled_gave_up=gave_up)
+        except integrators.IntegrationError:
+            pass
+        assert tried == chain
+    tried.clear()
+    try:
+        integrators.Integrators("fortran-dop853", 1e-12).run(None, None, 0.0, [0.0], 1.0, compiled_gave_up=True)
+    except integrators.IntegrationError:
+        pass
+    assert tried == ["fortran-dop853"]

@@ -20,8 +20,8 @@ core the full problem carries Psi = M - I of the one-period map (its variational
 Integrators. "auto": a period with the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`
 (a period costs ~100-300 steps of 12 right-hand sides; ~0.1-0.4 ms compiled, ~20 times less than
 with the Python right-hand side), the first period from the static state too if rigid with n <= 1
-(:class:`Integrators`); otherwise,
-and where the compiled run gives up, the first period with LSODA (ODEPACK), the periods near the
+(:class:`Integrators`); where the compiled run gives up, the retries below without the Fortran
+DOP853 (the same method and step budget); otherwise, the first period with LSODA (ODEPACK), the periods near the
 orbit, not stiff for omega_check >~ 1e3, with the Fortran DOP853 of :class:`scipy.integrate.ode`
 (~25 us a step: the Python loop of solve_ivp would cost 4 times more), a period DOP853 gives up on
 repeated with LSODA (ODEPACK's steps, switching to BDF where stiff: at n = 4 the periods near the
@@ -37,6 +37,7 @@ and the result is ``integration_failure`` (after ~10^4 steps), not a number.
 
 from __future__ import annotations
 
+import copy
 import math
 import warnings
 from collections.abc import Callable, Sequence
@@ -292,7 +293,8 @@ class Integrators:
     which switches to BDF there; the periods near the orbit, which are not stiff for
     omega_check >~ 1e3, with the Fortran DOP853; a run that DOP853 gives up on is repeated with
     LSODA, and with Radau if that gives up too (``_RETRIES``). A period near the orbit runs first with
-    the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`, and with the methods above only if that gives up; so
+    the compiled DOP853 of :mod:`vibroadhesion.simulation.kernel`, and with the methods above only if that gives up
+    (then without the Fortran DOP853, the same method and step budget, which would give up too); so
     does a transient period of the rigid fixation with n <= 1 (within ~2e3 steps). Transients stay
     with LSODA for n > 1 (stiff first periods of 2e4 to more than 2e5 explicit steps) and for the
     compliant fixation (there the compiled DOP853's end state jumps by ~1e-9 between neighbouring
@@ -312,6 +314,14 @@ class Integrators:
         self.rtol = rtol
         self.used: list[str] = []
 
+    def with_rtol(self, rtol: float) -> Integrators:
+        """The same methods at another ``rtol`` (in [1e-13, 1e-3]), recording into the same ``used``."""
+        if not (1e-13 <= rtol <= 1e-3):
+            raise ValueError(f"rtol must lie in [1e-13, 1e-3], got {rtol}")
+        other = copy.copy(self)
+        other.rtol = rtol
+        return other
+
     def compiles(self, period: Period, transient: bool = False) -> bool:
         """Whether ``period`` runs with the compiled DOP853 ("auto"; a transient only if rigid with n <= 1)."""
         return self.auto and (not transient or (period.m.variational and not period.m.compliant))
@@ -330,14 +340,19 @@ class Integrators:
         tau1: float,
         on_step: StepCallback | None = None,
         transient: bool = False,
+        compiled_gave_up: bool = False,
     ) -> tuple[float, Array, bool]:
         """:func:`_integrate` with the orbit's (or, ``transient``, the transient's) method; "auto" retries (_RETRIES).
 
         Returns (tau reached, y there, stopped by ``on_step``) and raises :class:`IntegrationError`
-        when the (last) method gives up.
+        when the (last) method gives up. ``compiled_gave_up``: the compiled DOP853 gave up on this call,
+        so the Fortran DOP853, the same method with the same step budget, is skipped (at n = 4 it gave up
+        on all 52 such periods of a virtual pull-off, 20 s of 63).
         """
         first = self.transient if transient else self.orbit
         methods = [first, *(m for m in _RETRIES if m != first)] if self.auto else [first]
+        if compiled_gave_up and len(methods) > 1:
+            methods = [m for m in methods if m != _FORTRAN]
         for method in methods[:-1]:
             try:
                 result = _integrate(fun, jac, tau0, y0, tau1, method, self.rtol, on_step)
@@ -396,7 +411,8 @@ def integrate_core(period: Period, integrators: Integrators, tau0: float, core0:
         result = _compiled_run(period, integrators, core0, tau0, tau1, -math.inf)
         if result is not None:
             return result.y.tolist()
-    return integrators.run(period.core_rhs, period.core_jacobian, tau0, core0, tau1)[1].tolist()
+    return integrators.run(period.core_rhs, period.core_jacobian, tau0, core0, tau1,
+                           compiled_gave_up=integrators.compiles(period))[1].tolist()
 
 
 def run_period(period: Period, integrators: Integrators, full: bool, transient: bool = False) -> Run:
@@ -412,7 +428,8 @@ def run_period(period: Period, integrators: Integrators, full: bool, transient: 
                        (float(cores[:, -1].min()), float(cores[:, -1].max())))
     recorder = _StepRecorder(period)
     fun, jac = (period.full_rhs, period.full_jacobian) if full else (period.core_rhs, period.core_jacobian)
-    _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient)
+    _, y_end, _ = integrators.run(fun, jac, 0.0, y0, TWO_PI, recorder, transient,
+                                  compiled_gave_up=integrators.compiles(period, transient))
     cores = np.array([core for _, core in recorder.steps])
     return Run(period, recorder.lost_at, y_end, np.array([tau for tau, _ in recorder.steps]), cores,
                (float(cores[:, -1].min()), float(cores[:, -1].max())))

@@ -49,6 +49,8 @@ FULL_SIZE = 9
 COMPLIANT_FULL_SIZE = 22
 #: Return codes of :func:`integrate`.
 REACHED, CONTACT_LOST, STEP_BUDGET, STEP_UNDERFLOW = 0, 1, -1, -2
+#: Kinds of :func:`point_values`: abar (Phi - 1) (extremes of a) and dPhi/dtau (extremes of Phi).
+TURNING, PHI_RATE = 0, 1
 
 _STAGES = _dop853.N_STAGES  # 12 stages, the 13th is the first of the next step
 _A = np.ascontiguousarray(_dop853.A[:_STAGES, :_STAGES])
@@ -262,6 +264,83 @@ def _speeds(abar: Array, deltabar: Array, inv_n: float, log_cap: float) -> Array
 
 
 speeds = njit(cache=True)(_speeds)
+
+
+def _frozen_mean_speed(abar: float, d_mean: float, amplitude: float, sines: Array, inv_n: float, cap: float) -> float:
+    """Mean of x = f^{-1}(Phi) (Eq. 6', Gent–Schultz, clipped to +-cap) over deltabar = d_mean - amplitude sin tau.
+
+    abar is frozen; ``sines`` holds sin tau at the points of the periodic trapezoid rule. Where
+    abar^2 <= deltabar (w -> 0) the contact closes at the cap. The root in abar is the frozen-contact
+    limit omega_check -> infinity of the orbit (:func:`vibroadhesion.simulation.orbits.frozen_start`).
+    """
+    total = 0.0
+    for i in range(sines.shape[0]):
+        gap = abar * abar - (d_mean - amplitude * sines[i])
+        x = cap
+        if gap > 0.0:
+            phi = max(gap * gap / abar, 1e-300)
+            x = -((phi - 1.0) ** inv_n) if phi > 1.0 else ((1.0 - phi) / phi) ** inv_n
+            x = min(max(x, -cap), cap)
+        total += x
+    return total / sines.shape[0]
+
+
+frozen_mean_speed = njit(cache=True)(_frozen_mean_speed)
+
+
+def _point_value(kind: int, tau: float, core: Array, k: Array) -> float:
+    """A function of a point of the period whose sign changes locate the orbit's extremes (Eqs. 5', 6', 7).
+
+    kind :data:`TURNING`: abar (Phi - 1) = gap^2 - abar (gap = abar^2 - deltabar), zero where x = 0, at
+    the extremes of a; :data:`PHI_RATE`: dPhi/dtau = Phi_a abar' + Phi_d deltabar' with Phi_a =
+    gap (3 abar^2 + deltabar)/abar^2, Phi_d = -2 gap/abar, zero at the extremes of Phi and of the speed.
+    ``core`` is the scaled core (u, or xi, eta, u), ``k`` the period's constants.
+    """
+    u = core[core.shape[0] - 1]
+    abar = (k[0] + k[1] * u) * k[2]
+    d = k[4] - k[5] * math.sin(tau)
+    rate = -k[5] * math.cos(tau)
+    if k[9] > 0.0:
+        d += k[10] * core[0]
+        rate += k[10] * core[1]
+    gap = abar * abar - d
+    if kind == TURNING:
+        return gap * gap - abar
+    x = compiled_contact_kernel(abar, d, k[6], k[7])[0]
+    return gap * (3.0 * abar * abar + d) / (abar * abar) * x * k[2] - 2.0 * gap / abar * rate
+
+
+_compiled_point_value = njit(cache=True)(_point_value)
+
+
+def _point_values(kind: int, taus: Array, cores: Array, k: Array) -> Array:
+    """:func:`_point_value` at each accepted step (``cores`` (steps, core dimension))."""
+    out = np.empty(taus.shape[0])
+    for i in range(taus.shape[0]):
+        out[i] = _compiled_point_value(kind, taus[i], cores[i], k)
+    return out
+
+
+point_values = njit(cache=True)(_point_values)
+
+
+def _point_in_step(kind: int, k: Array, tau_k: float, core_k: Array, tau: float, tol: float, max_steps: int,
+                   core: Array) -> tuple[int, float]:
+    """(code, g): the core at ``tau`` into ``core``, integrated from (tau_k, core_k), and :func:`_point_value` there.
+
+    The DOP853 of :func:`_dop853_loop` at ``tol`` without a contact-loss stop; a code below 0 (the
+    integration gave up) comes with g = NaN.
+    """
+    core[:] = core_k
+    if tau != tau_k:
+        taus, cores = np.empty(max_steps + 1), np.empty((max_steps + 1, core.shape[0]))
+        code = _compiled_dop853_loop(k, core, tau_k, tau, tol, max_steps, -math.inf, taus, cores)[0]
+        if code < 0:
+            return code, math.nan
+    return REACHED, _compiled_point_value(kind, tau, core, k)
+
+
+point_in_step = njit(cache=True)(_point_in_step)
 
 
 class KernelRun(NamedTuple):

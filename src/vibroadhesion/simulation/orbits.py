@@ -26,7 +26,6 @@ extremes of Phi, located the same way.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from typing import Any, Literal, NamedTuple
 
 import numpy as np
@@ -43,7 +42,6 @@ from vibroadhesion.simulation.integrators import (
     Integrators,
     Period,
     Run,
-    Values,
     integrate_core,
     observed_v_scale,
     run_period,
@@ -66,6 +64,10 @@ Multipliers = NDArray[np.inexact[Any]]
 _RESOLVED_SPEED_FRACTION = 1e-3
 #: Largest contact radius abar a search tries (the frozen start, the rigid shooting).
 MAX_ABAR = 1e4
+#: Step budget of a re-integration inside one accepted step (as the integrators' budget per call).
+_REINTEGRATION_STEPS = 10_000
+#: sin tau at the points of the periodic trapezoid rule of the frozen drift (:func:`_frozen_drift`).
+_FROZEN_SINES = np.sin(np.linspace(0.0, TWO_PI, 512, endpoint=False))
 
 
 
@@ -83,74 +85,61 @@ class Transient(NamedTuple):
 # --- Analysis of a converged period --------------------------------------------------------------
 
 
-#: g(period, tau, core, abar, deltabar, x): a function whose sign changes locate points of a period,
-#: at one point (floats) or at the accepted steps (arrays, ``core`` the components' arrays).
-PointFunction = Callable[[Period, Values, Any, Values, Values, Values], Values]
-
-
-def _contact_at_steps(run: Run) -> tuple[Array, Array, Array]:
-    """(abar, deltabar, x) at the run's accepted steps (Eqs. 6', 7): :meth:`Period.contact_at` at all at once."""
+def _speeds_at_steps(run: Run) -> Array:
+    """x = adot/v0 (Eq. 6') at the run's accepted steps, with abar and deltabar of :meth:`Period.contact_at`."""
     period, m = run.period, run.period.m
     abar = (period.b0 + period.v_scale * run.cores[:, -1]) / m.speed_scale
     d = m.base_offset - m.etahat * np.sin(run.taus)
     if m.compliant:
         d = d + run.cores[:, 0] * period.x_scale
-    return abar, d, kernel.speeds(abar, d, m.inv_n, m.log_cap)
+    return kernel.speeds(abar, d, m.inv_n, m.log_cap)
 
 
-def _refine_roots(run: Run, integrators: Integrators, g: PointFunction,
-                  at_steps: tuple[Array, Array, Array]) -> list[tuple[float, list[float]]]:
-    """Points (tau, scaled core) where g changes sign between accepted steps, by Brent + re-integration.
+def _refine_roots(run: Run, integrators: Integrators, kind: int) -> list[tuple[float, Array]]:
+    """Points (tau, scaled core) where :func:`kernel.point_values` of ``kind`` changes sign between accepted steps.
 
-    ``at_steps`` is (abar, deltabar, x) at the steps (:func:`_contact_at_steps`). The state inside a
-    step is obtained by integrating from the step's start, so the root is located to ~1e-14 in tau
-    on the integrated solution itself. A sign change that re-integration does not reproduce (g at
-    rounding level, as for a contact that does not move) is dropped.
+    Located by Brent's method on re-integrated states: the state inside a step is obtained by
+    integrating from the step's start, so the root is located to ~1e-14 in tau on the integrated
+    solution itself. A sign change that re-integration does not reproduce (g at rounding level, as
+    for a contact that does not move) is dropped.
     """
     period = run.period
-    values = np.asarray(g(period, run.taus, run.cores.T, *at_steps))
+    values = kernel.point_values(kind, run.taus, run.cores, period.kernel_constants)
     roots = []
     for k in np.flatnonzero((values[:-1] == 0.0) | (values[:-1] * values[1:] < 0.0)).tolist():
-        tau_k, core_k = float(run.taus[k]), run.cores[k].tolist()
+        tau_k, core_k = float(run.taus[k]), run.cores[k]
         if values[k] == 0.0:
             roots.append((tau_k, core_k))
             continue
-        in_step = (period, integrators, tau_k, core_k)
+        in_step = (kind, period, integrators, tau_k, core_k)
         tau_end = float(run.taus[k + 1])
-        if values[k] * _g_in_step(tau_end, g, *in_step) >= 0.0:
+        if values[k] * _g_in_step(tau_end, *in_step) >= 0.0:
             continue
-        tau_root = brentq(_g_in_step, tau_k, tau_end, args=(g, *in_step), xtol=1e-14, rtol=1e-15)
-        roots.append((tau_root, _state_in_step(tau_root, *in_step)))
+        tau_root = brentq(_g_in_step, tau_k, tau_end, args=in_step, xtol=1e-14, rtol=1e-15)
+        roots.append((tau_root, _state_in_step(tau_root, *in_step)[0]))
     return roots
 
 
-def _state_in_step(
-    tau: float, period: Period, integrators: Integrators, tau_k: float, core_k: list[float]
-) -> list[float]:
-    """Scaled core at ``tau`` inside the accepted step that starts at (tau_k, core_k), re-integrated."""
-    if tau == tau_k:
-        return core_k
-    return integrate_core(period, integrators, tau_k, core_k, tau)
+def _state_in_step(tau: float, kind: int, period: Period, integrators: Integrators, tau_k: float,
+                   core_k: Array) -> tuple[Array, float]:
+    """(scaled core, g of ``kind``) at ``tau`` inside the accepted step that starts at (tau_k, core_k), re-integrated.
+
+    Compiled (:func:`kernel.point_in_step`) where the period is; otherwise, or where that gives up,
+    with :func:`integrate_core` (the integrators' methods, their failure an :class:`IntegrationError`).
+    """
+    k = period.kernel_constants
+    if integrators.compiles(period):
+        core = np.empty(core_k.shape[0])
+        code, value = kernel.point_in_step(kind, k, tau_k, core_k, tau, integrators.rtol, _REINTEGRATION_STEPS, core)
+        if code >= 0:
+            return core, value
+    core = core_k if tau == tau_k else np.array(integrate_core(period, integrators, tau_k, core_k.tolist(), tau))
+    return core, float(kernel.point_values(kind, np.array([tau]), core[None, :], k)[0])
 
 
-def _g_in_step(tau: float, g: PointFunction, period: Period, integrators: Integrators,
-               tau_k: float, core_k: list[float]) -> float:
-    """g at ``tau`` on the re-integrated solution inside a step (:func:`_state_in_step`)."""
-    core = _state_in_step(tau, period, integrators, tau_k, core_k)
-    abar, d, contact = period.contact_at(tau, core)
-    return float(g(period, tau, core, abar, d, contact[0]))
-
-
-def _turning(period: Period, tau: Values, core: Any, abar: Values, d: Values, x: Values) -> Values:
-    """abar (Phi - 1) = gap^2 - abar: zero where x = 0, i.e. at the extremes of a (Eqs. 5', 6')."""
-    return (abar * abar - d) ** 2 - abar
-
-
-def _dphi_dtau(period: Period, tau: Values, core: Any, abar: Values, d: Values, x: Values) -> Values:
-    """dPhi/dtau = Phi_a a' + Phi_d deltabar': zero at the extremes of Phi, hence of the speed (Eq. 6')."""
-    gap = abar * abar - d
-    phi_a, phi_d = gap * (3 * abar * abar + d) / (abar * abar), -2.0 * gap / abar
-    return phi_a * x / period.m.speed_scale + phi_d * period.deltabar_rate(tau, core)
+def _g_in_step(tau: float, kind: int, period: Period, integrators: Integrators, tau_k: float, core_k: Array) -> float:
+    """g of ``kind`` at ``tau`` on the re-integrated solution inside a step (:func:`_state_in_step`)."""
+    return _state_in_step(tau, kind, period, integrators, tau_k, core_k)[1]
 
 
 def summarise(
@@ -163,13 +152,12 @@ def summarise(
     quad = run.y_end[dim + period.n_var :]
     a0 = float(period.start[-1])
     # Extremes of a (x = 0) and of Phi (of the speed, which decreases with Phi).
-    at_steps = _contact_at_steps(run)
-    u_values = [0.0, *(core[-1] for _, core in _refine_roots(run, integrators, _turning, at_steps))]
+    u_values = [0.0, *(float(core[-1]) for _, core in _refine_roots(run, integrators, kernel.TURNING))]
     u_values.append(float(run.y_end[dim - 1]))
     half_range = 0.5 * (max(u_values) - min(u_values)) * v_scale  # in v units: = Abar
-    peak_speed = max([float(np.max(np.abs(at_steps[2]))),
-                      *(abs(period.contact_at(t, core)[2][0]) for t, core in
-                        _refine_roots(run, integrators, _dphi_dtau, at_steps))])
+    peak_speed = max([float(np.max(np.abs(_speeds_at_steps(run)))),
+                      *(abs(period.contact_at(t, core.tolist())[2][0]) for t, core in
+                        _refine_roots(run, integrators, kernel.PHI_RATE))])
 
     abar_m = a0 + quad[0] * v_scale / (TWO_PI * speed_scale)
     a_c, a_s = quad[1] * v_scale / (math.pi * speed_scale), quad[2] * v_scale / (math.pi * speed_scale)
@@ -219,21 +207,16 @@ def failure_record(status: SteadyStatus, message: str, model: Model, start: Arra
 # --- The frozen-contact limit: where the shooting starts -----------------------------------------
 
 
-def _frozen_drift(model: Model, abar: float, deltabar_mean: float, amplitude: float, samples: int = 512) -> float:
+def _frozen_drift(model: Model, abar: float, deltabar_mean: float, amplitude: float) -> float:
     """Mean front speed <x(Phi(abar, deltabar(tau)))> over a period, abar frozen.
 
     deltabar(tau) = deltabar_mean - amplitude sin tau (the phase does not change the mean).
     Its root is the limit omega_check -> infinity of the steady contact radius: the contact cannot
-    drift over a period. Periodic trapezoid rule on ``samples`` points; where abar^2 <= deltabar
-    the contact closes at the capped speed.
+    drift over a period. Periodic trapezoid rule on 512 points (:func:`kernel.frozen_mean_speed`,
+    compiled); where abar^2 <= deltabar the contact closes at the capped speed.
     """
-    tau = np.linspace(0.0, TWO_PI, samples, endpoint=False)
-    gap = abar * abar - (deltabar_mean - amplitude * np.sin(tau))
-    cap = SPEED_CAP * model.speed_scale
-    x = np.full_like(tau, cap)
-    valid = gap > 0
-    x[valid] = model.problem.law.speed(np.maximum(gap[valid] ** 2 / abar, 1e-300))
-    return float(np.mean(np.clip(x, -cap, cap)))
+    return float(kernel.frozen_mean_speed(abar, deltabar_mean, amplitude, _FROZEN_SINES, model.inv_n,
+                                          SPEED_CAP * model.speed_scale))
 
 
 def _frozen_excitation(model: Model, abar: float) -> tuple[float, complex]:
