@@ -119,7 +119,7 @@ def _simulation_job(kind: str, setup_json: Path, out: Path, values: list[float])
 def test_a_job_of_several_amplitudes_or_frequencies_gives_the_bytes_of_one_job_each(tmp_path: Path, kind: str,
                                                                                      values: list[float],
                                                                                      gather: Callable) -> None:
-    """workflow/config.yaml simulation.*_per_job: the rigid grid (two amplitudes) and the virtual pull-off table (two
+    """workflow/config.yaml simulation_jobs.*_per_job: the rigid grid (two amplitudes) and the virtual pull-off table (two
     test frequencies) gathered from one job are byte for byte those gathered from one job per amplitude or frequency
     (the split of profiles/slurm), as the gather rules (simulation_rigid_grid, virtual_pulloff_fixation) write them."""
     setup_json, pulloff_csv = tmp_path / "setup.json", tmp_path / "pulloff.csv"

@@ -29,10 +29,10 @@ def job_chunks(values, per_job):
     return ["_".join(values[i : i + per_job]) for i in range(0, len(values), per_job)]
 
 
-# The direct simulation split into jobs (workflow/config.yaml, simulation): the rig's amplitudes of the rigid grid,
-# the test frequencies of the virtual pull-off.
-AMPLITUDE_JOBS = job_chunks(AMPLITUDES, config["simulation"]["amplitudes_per_job"])
-FREQUENCY_JOBS = job_chunks(FREQUENCIES, config["simulation"]["frequencies_per_job"])
+# The direct simulation split into jobs (workflow/config.yaml, simulation_jobs): the rig's amplitudes of the rigid
+# grid, the test frequencies of the virtual pull-off.
+AMPLITUDE_JOBS = job_chunks(AMPLITUDES, config["simulation_jobs"]["amplitudes_per_job"])
+FREQUENCY_JOBS = job_chunks(FREQUENCIES, config["simulation_jobs"]["frequencies_per_job"])
 
 
 def plot_inputs(figs):

@@ -16,8 +16,8 @@ rule simulation_kernels:
 
 rule simulation_rigid:
     """Simulation, leading, refined, exact harmonic balance and exact averaging at the base amplitudes of one job
-    (wildcard h1: "20_40", the amplitudes in um joined by "_"; simulation.amplitudes_per_job), rigid nominal point
-    contact."""
+    (wildcard h1: "20_40", the amplitudes in um joined by "_"; simulation_jobs.amplitudes_per_job), rigid nominal
+    point contact."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
@@ -55,8 +55,8 @@ rule simulation_rigid_grid:
 
 # Virtual pull-off experiment (simulated; no measured pull-off numbers are published): one job per parameter set,
 # fixation (rigid, or the simulated compliant case of data/setup.yaml) and share of the rig's test frequencies
-# (wildcard frequency: "200_300", joined by "_"; simulation.frequencies_per_job), then a gather. Its rows never go
-# to data/, which holds measurements. Two parameter sets, each its own named outputs: `published` (data/setup.yaml:
+# (wildcard frequency: "200_300", joined by "_"; simulation_jobs.frequencies_per_job), then a gather. Its rows never
+# go to data/, which holds measurements. Two parameter sets, each its own named outputs: `published` (data/setup.yaml:
 # the validation and the identifiability study) and `fitted` (the fit the figures use: the markers of Figs. 4 and 7,
 # rerun by a data edit).
 
