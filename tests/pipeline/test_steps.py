@@ -8,6 +8,7 @@ and design steps run on the paper's rig at one test frequency, against its virtu
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -21,7 +22,8 @@ from vibroadhesion.pipeline.steps.fit import fit
 from vibroadhesion.pipeline.steps.plots import fig7_plot
 from vibroadhesion.pipeline.steps.identifiability import rig_sensitivity, sensitivity_part
 from vibroadhesion.pipeline.steps.rigid import fig7_data
-from vibroadhesion.pipeline.steps.simulation import virtual_pulloff_part
+from vibroadhesion.pipeline.steps.gather import concatenate
+from vibroadhesion.pipeline.steps.simulation import rigid_grid, rigid_part, virtual_pulloff_part
 
 ROOT = Path(__file__).resolve().parents[2]
 AMPLITUDES = [25.5, 50.0, 150.0]
@@ -83,7 +85,7 @@ def test_sensitivity_and_design_steps_agree_with_the_virtual_pulloff_and_refuse_
     fit(setup_json, pulloff_csv, fit_json, "refined")
     part, virtual = tmp_path / "200Hz.csv", tmp_path / "virtual.csv"
     sensitivity_part(setup_json, fit_json, part, [200.0], [0.0, 120.0])
-    virtual_pulloff_part(setup_json, fit_json, virtual, "rigid", 200.0)
+    virtual_pulloff_part(setup_json, fit_json, virtual, "rigid", [200.0])
     assert pd.read_csv(part)["h1_um"].tolist() == [20.0, 40.0, 60.0, 80.0, 100.0, 120.0]
     rows = rig_sensitivity(virtual, [part])
     simulated = pd.read_csv(virtual).query("model == 'simulation'")
@@ -100,3 +102,32 @@ def test_sensitivity_and_design_steps_agree_with_the_virtual_pulloff_and_refuse_
     table.to_csv(virtual, index=False)
     with pytest.raises(ValueError, match="disagree at 200 Hz, h1 = 60 um"):
         rig_sensitivity(virtual, [part])
+
+
+
+def _simulation_job(kind: str, setup_json: Path, out: Path, values: list[float]) -> None:
+    """One simulation job at the published parameters: the rigid grid's amplitudes ``values`` (omega_check 1e3-1e4,
+    to stay quick) or the rigid virtual pull-off's test frequencies ``values``."""
+    if kind == "rigid_grid":
+        rigid_part(setup_json, None, out, values, 3, 4)
+    else:
+        virtual_pulloff_part(setup_json, None, out, "rigid", values)
+
+
+@pytest.mark.parametrize("kind,values,gather", [("rigid_grid", [20.0, 100.0], rigid_grid),
+                                                ("virtual_pulloff", [200.0, 400.0], concatenate)])
+def test_a_job_of_several_amplitudes_or_frequencies_gives_the_bytes_of_one_job_each(tmp_path: Path, kind: str,
+                                                                                     values: list[float],
+                                                                                     gather: Callable) -> None:
+    """workflow/config.yaml simulation_jobs.*_per_job: the rigid grid (two amplitudes) and the virtual pull-off table (two
+    test frequencies) gathered from one job are byte for byte those gathered from one job per amplitude or frequency
+    (the split of profiles/slurm), as the gather rules (simulation_rigid_grid, virtual_pulloff_fixation) write them."""
+    setup_json, pulloff_csv = tmp_path / "setup.json", tmp_path / "pulloff.csv"
+    ingest(ROOT / "data/setup.yaml", ROOT / "data/pulloff.csv", setup_json, pulloff_csv)
+    _simulation_job(kind, setup_json, tmp_path / "one_job.csv", values)
+    parts = [tmp_path / f"part{k}.csv" for k in range(len(values))]
+    for part, value in zip(parts, values, strict=True):
+        _simulation_job(kind, setup_json, part, [value])
+    gather([tmp_path / "one_job.csv"], tmp_path / "from_one_job.csv")
+    gather(parts, tmp_path / "from_parts.csv")
+    assert (tmp_path / "from_one_job.csv").read_bytes() == (tmp_path / "from_parts.csv").read_bytes()

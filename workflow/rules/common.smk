@@ -24,6 +24,17 @@ FREQUENCIES = _rig_values("test_conditions", "frequencies")
 AMPLITUDES = _rig_values("test_conditions", "amplitudes")
 
 
+def job_chunks(values, per_job):
+    """``values`` split into consecutive jobs of ``per_job`` each, as wildcard values: ["200", "300"] -> "200_300"."""
+    return ["_".join(values[i : i + per_job]) for i in range(0, len(values), per_job)]
+
+
+# The direct simulation split into jobs (workflow/config.yaml, simulation_jobs): the rig's amplitudes of the rigid
+# grid, the test frequencies of the virtual pull-off.
+AMPLITUDE_JOBS = job_chunks(AMPLITUDES, config["simulation_jobs"]["amplitudes_per_job"])
+FREQUENCY_JOBS = job_chunks(FREQUENCIES, config["simulation_jobs"]["frequencies_per_job"])
+
+
 def plot_inputs(figs):
     """The tables of ``figs`` and what their plots read besides (PLOT_EXTRAS of figures.smk; Fig. 7 reads Fig. 4's
     table too)."""

@@ -12,8 +12,8 @@ DESIGN = config["identifiability"]["design"]
 # frequencies, frequencies_per_job in each (wildcard "200_300_400": the frequencies in Hz joined by "_").
 _EXTRA = sorted({f"{float(f):g}" for f in DESIGN["frequencies_hz"]} - set(FREQUENCIES), key=float)
 _PER_JOB = DESIGN["frequencies_per_job"]
-RIG_SENSITIVITY_JOBS = ["_".join(FREQUENCIES[i : i + _PER_JOB]) for i in range(0, len(FREQUENCIES), _PER_JOB)]
-SENSITIVITY_JOBS = RIG_SENSITIVITY_JOBS + ["_".join(_EXTRA[i : i + _PER_JOB]) for i in range(0, len(_EXTRA), _PER_JOB)]
+RIG_SENSITIVITY_JOBS = job_chunks(FREQUENCIES, _PER_JOB)
+SENSITIVITY_JOBS = RIG_SENSITIVITY_JOBS + job_chunks(_EXTRA, _PER_JOB)
 
 
 rule pulloff_sensitivity:

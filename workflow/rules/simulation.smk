@@ -15,8 +15,9 @@ rule simulation_kernels:
 
 
 rule simulation_rigid:
-    """Simulation, leading, refined, exact harmonic balance and exact averaging at one base amplitude of the
-    rig (one job per amplitude: a cluster runs them in parallel), rigid nominal point contact."""
+    """Simulation, leading, refined, exact harmonic balance and exact averaging at the base amplitudes of one job
+    (wildcard h1: "20_40", the amplitudes in um joined by "_"; simulation_jobs.amplitudes_per_job), rigid nominal
+    point contact."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
@@ -27,6 +28,11 @@ rule simulation_rigid:
         "results/logs/simulation_rigid_h1_{h1}.log",
     benchmark:
         "results/benchmarks/rules/simulation_rigid_h1_{h1}.tsv"
+    wildcard_constraints:
+        h1=r"[0-9._e+-]+",
+    # Ahead of the figure tables: the rigid grid, Fig. 6's plot and the pages of Figs. 3, 5, 6, 8 are the longest chain
+    # of the default target (with the virtual pull-off's, priority 10 too).
+    priority: 10
     params:
         lo=config["validation"]["log10_omega_check_min"],
         hi=config["validation"]["log10_omega_check_max"],
@@ -37,7 +43,7 @@ rule simulation_rigid:
 rule simulation_rigid_grid:
     """rigid_grid.csv: every level at every amplitude; Fig. 6 overlays its simulated points."""
     input:
-        parts=expand(rules.simulation_rigid.output[0], h1=AMPLITUDES),
+        parts=expand(rules.simulation_rigid.output[0], h1=AMPLITUDE_JOBS),
         code=code("simulation_rigid_grid"),
     output:
         "results/simulation/rigid_grid.csv",
@@ -48,10 +54,11 @@ rule simulation_rigid_grid:
 
 
 # Virtual pull-off experiment (simulated; no measured pull-off numbers are published): one job per parameter set,
-# fixation (rigid, or the simulated compliant case of data/setup.yaml) and test frequency of the rig, then a
-# gather. Its rows never go to data/, which holds measurements. Two parameter sets, each its own named outputs:
-# `published` (data/setup.yaml: the validation and the identifiability study) and `fitted` (the fit the figures
-# use: the markers of Figs. 4 and 7, rerun by a data edit).
+# fixation (rigid, or the simulated compliant case of data/setup.yaml) and share of the rig's test frequencies
+# (wildcard frequency: "200_300", joined by "_"; simulation_jobs.frequencies_per_job), then a gather. Its rows never
+# go to data/, which holds measurements. Two parameter sets, each its own named outputs: `published` (data/setup.yaml:
+# the validation and the identifiability study) and `fitted` (the fit the figures use: the markers of Figs. 4 and 7,
+# rerun by a data edit).
 
 
 rule virtual_pulloff:
@@ -69,9 +76,9 @@ rule virtual_pulloff:
     wildcard_constraints:
         parameters="published|fitted",
         fixation="rigid|compliant",
-        frequency=r"[0-9.]+",
-    # The longest chain of both targets (ingest -> virtual pull-off -> Figs. 4, 7 -> their pages):
-    # started first, the shorter jobs fill the other core around it.
+        frequency=r"[0-9._]+",
+    # The longest chain of both targets (ingest -> virtual pull-off -> Figs. 4, 7 -> their pages) with the rigid
+    # grid's (simulation_rigid): started first, the shorter jobs fill the other core around them.
     priority: 10
     script:
         "../scripts/virtual_pulloff.py"
@@ -81,7 +88,7 @@ rule virtual_pulloff_fixation:
     """The test frequencies of one parameter set and fixation in one table."""
     input:
         parts=expand(
-            rules.virtual_pulloff.output[0], parameters="{parameters}", fixation="{fixation}", frequency=FREQUENCIES
+            rules.virtual_pulloff.output[0], parameters="{parameters}", fixation="{fixation}", frequency=FREQUENCY_JOBS
         ),
         code=code("virtual_pulloff_fixation"),
     output:

@@ -5,5 +5,5 @@ from vibroadhesion.pipeline.steps.simulation import rigid_part
 
 p = snakemake.params
 with logged(snakemake.log[0], snakemake.rule):
-    rigid_part(snakemake.input.setup, snakemake.input.get("fit"), snakemake.output[0], float(snakemake.wildcards.h1),
-               p.lo, p.hi)
+    rigid_part(snakemake.input.setup, snakemake.input.get("fit"), snakemake.output[0],
+               [float(h) for h in snakemake.wildcards.h1.split("_")], p.lo, p.hi)

@@ -6,4 +6,4 @@ from vibroadhesion.pipeline.steps.simulation import virtual_pulloff_part
 wc = snakemake.wildcards
 with logged(snakemake.log[0], snakemake.rule):
     virtual_pulloff_part(snakemake.input.setup, snakemake.input.get("fit"), snakemake.output[0], wc.fixation,
-                         float(wc.frequency))
+                         [float(f) for f in wc.frequency.split("_")])
