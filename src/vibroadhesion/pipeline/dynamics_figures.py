@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 from matplotlib.figure import Figure
 
-from vibroadhesion.pipeline import figures as _style  # noqa: F401  (sets the backend (Agg) and the style)
+from vibroadhesion.pipeline.figures import legend_below  # also sets the backend (Agg) and the style
 
 __all__ = ["plot_rig_comparison", "plot_speed_sweep"]
 
@@ -24,7 +24,7 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
 
     One line per (frequency, h1) of :mod:`vibroadhesion.experiments.speed_sweep`; the quasi-static family value
     (the V -> 0 asymptote) as a dashed tick at the left of each line; open markers: detached before the
-    period-mean force passed its extremum (the instantaneous reading).
+    period-mean force passed its extremum (the instantaneous reading). One legend below the panels, off the data.
     """
     fixations = list(dict.fromkeys(sweep["fixation"]))
     amplitudes, frequencies = sorted(set(sweep["h1_um"])), sorted(set(sweep["frequency_hz"]))
@@ -43,8 +43,8 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
             ax.plot([v_min / 4.0, v_min], [test["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
         ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
                ylabel=r"simulated pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation (simulated)")
-        ax.legend(fontsize=5.5, ncols=3, loc="best", title="dashed: quasi-static (V → 0); open: detached "
-                  "before the mean extremum", title_fontsize=5.5)
+    legend_below(fig, axes[0], fontsize=6.5, ncols=5, title="dashed: quasi-static (V → 0); open: detached before "
+                 "the mean extremum", title_fontsize=6.5)
     return fig
 
 
