@@ -1,0 +1,112 @@
+"""The numbers README.md states in "Two rigs" and "Pull-off at a finite withdrawal speed", pinned to the artefacts.
+
+Same rules as :mod:`test_headline_numbers` (its ``check`` and ``read``): each test quotes one phrase of the README
+and compares each braced number with the values the phrase names, at the printed digits.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pandas as pd
+from conftest import V0
+from test_headline_numbers import check, read
+
+# ----------------------------------------------------------------- "Two rigs: base and force excitation"
+
+
+def test_equal_amplitude_rigs_agree(pipeline_results: Path) -> None:
+    """rig_equivalence.csv: largest relative difference of the force rig at F1 = k h1 |D| from the base rig."""
+    table = read(pipeline_results, "rig_equivalence").set_index("level")
+    columns = ["max_rel_diff_w_eff_ratio", "max_rel_diff_pulloff_ratio", "max_rel_diff_delta_amplitude"]
+    leading, simulated = (table.loc[[level], columns].to_numpy().ravel() for level in ("leading", "simulation"))
+    check("(leading order: to {bound:3e-15}; SIMULATED steady states and virtual pull-offs: to {bound:3e-11},",
+          [leading, simulated[pd.notna(simulated)]])
+
+
+def test_drive_of_the_force_rig(pipeline_results: Path) -> None:
+    """F1/(k h1) = |1 - omega_bar^2 + 2 i zeta omega_bar| at the rig's frequencies and at the anti-resonance."""
+    table = read(pipeline_results, "rig_comparison")
+    drive = table[table["rig"] == "force_equivalent"].groupby(["zeta", "frequency_hz"])["drive_ratio"].first()
+    damped = drive.loc[0.01]
+    damped.index = damped.index.round(9)  # frequencies from omega_bar: 300.00000000000006 Hz
+    check("F1/(k h1) = {317}, {715} and {1273} at 200, 300 and 400 Hz for the configured compliant fixation "
+          "(ω0 = {70.4} rad/s, ζ = 0.01), {0.02} at ω = ω0 ({11.2} Hz)",
+          [damped.loc[200.0], damped.loc[300.0], damped.loc[400.0], 2 * 3.141592653589793 * damped.index.min(),
+           damped.iloc[0], damped.index.min()])
+
+
+def test_force_rig_at_the_anti_resonance(pipeline_results: Path) -> None:
+    """The force rig at F1 = k h1 without damping (zeta = 0), where the base rig leaves the contact undeformed."""
+    table = read(pipeline_results, "rig_comparison")
+    spring = table[(table["rig"] == "force_spring") & (table["zeta"] == 0.0)].sort_values("h1_um")
+    simulated, leading = (spring[spring["level"] == level]["pulloff_ratio"] for level in ("simulation", "leading"))
+    f1_mN = 1e3 * spring[spring["h1_um"] == 20.0]["F1_N"]
+    check("the force rig at F1 = k h1 ({7.7} mN at h1 = 20 µm) vibrates it: SIMULATED pull-off {1.003}–{1.082} "
+          "|P_JKR| for h1 = 20–100 µm (leading order {1.002}–{1.055})",
+          [f1_mN, simulated.min(), simulated.max(), leading.min(), leading.max()])
+
+
+# ----------------------------------------------------------------- "Pull-off at a finite withdrawal speed"
+
+
+def _limits(results: Path, fixation: str, thin: bool) -> pd.DataFrame:
+    """quasi_static_limits.csv rows of one fixation at h1 = 20 um (``thin``) or at 40-100 um."""
+    table = read(results, "quasi_static_limits")
+    return table[(table["fixation"] == fixation) & ((table["h1_um"] == 20.0) == thin)]
+
+
+def test_quasi_static_speed_limits_rigid(pipeline_results: Path) -> None:
+    thin, thick = _limits(pipeline_results, "rigid", True), _limits(pipeline_results, "rigid", False)
+    one, five = "V_over_v0_within_1pct", "V_over_v0_within_5pct"
+    check("the quasi-static estimate is within 1 % below V = {0.11} v0 ({4.7} um/s) at h1 = 20 um and below "
+          "{1.7}–{9.1} v0 at 40–100 um, within 5 % below {0.34}–{0.35} v0 and {4.3}–{46} v0",
+          [thin[one], thin[one] * V0 * 1e6, thick[one].min(), thick[one].max(), thin[five].min(), thin[five].max(),
+           thick[five].min(), thick[five].max()])
+
+
+def test_quasi_static_speed_limits_compliant(pipeline_results: Path) -> None:
+    thin, thick = _limits(pipeline_results, "compliant", True), _limits(pipeline_results, "compliant", False)
+    sweep = read(pipeline_results, "speed_sweep")
+    slowest = sweep[(sweep["fixation"] == "compliant") & (sweep["frequency_hz"] == 200.0) & (sweep["h1_um"] == 20.0)
+                    & (sweep["V_over_v0"] == sweep[sweep["fixation"] == "compliant"]["V_over_v0"].min())]
+    assert thin["V_over_v0_within_1pct"].isna().all()  # "not within 1 % even at the slowest simulated speed"
+    check("within 5 % below {1.6}–{2.1} v0 at 20 um ({2.5} % off at V = v0, the slowest speed simulated for it) "
+          "and below {32}–{290} v0 at 40–100 um",
+          [thin["V_over_v0_within_5pct"].min(), thin["V_over_v0_within_5pct"].max(),
+           100 * slowest["relative_deviation"], thick["V_over_v0_within_5pct"].min(),
+           thick["V_over_v0_within_5pct"].max()])
+
+
+def test_rigid_pulloff_at_v0(pipeline_results: Path) -> None:
+    sweep = read(pipeline_results, "speed_sweep")
+    row = sweep[(sweep["fixation"] == "rigid") & (sweep["frequency_hz"] == 200.0) & (sweep["h1_um"] == 20.0)
+                & (sweep["V_over_v0"] == 1.0)]
+    check("is {1.49} times the quasi-static one at V = v0 already ({4.50} against {3.02} |P_JKR| at 200 Hz)",
+          [row["mean_pulloff_ratio"] / row["quasi_static_ratio"], row["mean_pulloff_ratio"], row["quasi_static_ratio"]])
+
+
+def test_contact_lost_before_the_mean_extremum(pipeline_results: Path) -> None:
+    """Counts of status detached_before_mean_extremum per fixation and speed (15 tests each)."""
+    sweep = read(pipeline_results, "speed_sweep")
+    lost = sweep["status"] == "detached_before_mean_extremum"
+    counts = sweep[lost].groupby(["fixation", "V_over_v0"]).size()
+    check("At V = 1000 v0 every test, and at 100 v0 {1} rigid and {13} compliant tests of {15}, lose the contact",
+          [counts.loc[("rigid", 100.0)], counts.loc[("compliant", 100.0)],
+           sweep.groupby(["fixation", "V_over_v0"]).size()])
+    assert (counts.loc[(slice(None), 1000.0)] == 15).all()
+    assert set(counts.index.get_level_values("V_over_v0")) == {100.0, 1000.0}
+
+
+def test_instantaneous_against_period_mean(pipeline_results: Path) -> None:
+    """Peak over period-mean pull-off at each fixation's slowest simulated speed (rows that reached a pull-off)."""
+    sweep = read(pipeline_results, "speed_sweep")
+    slow = sweep[(sweep["V_over_v0"] == sweep.groupby("fixation")["V_over_v0"].transform("min"))
+                 & (sweep["status"] == "pulloff")]
+    ratio = slow["peak_pulloff_ratio"] / slow["mean_pulloff_ratio"]
+    rigid, compliant = (slow["fixation"] == "rigid"), (slow["fixation"] == "compliant")
+    row = slow[rigid & (slow["frequency_hz"] == 200.0) & (slow["h1_um"] == 20.0)]
+    check("{2.7}–{3.2} times the period mean for the rigid fixation ({8.15} against {3.05} |P_JKR| at 200 Hz, 20 um, "
+          "V = {0.1} v0) and within {bound:0.7} % of it for the compliant one",
+          [ratio[rigid].min(), ratio[rigid].max(), row["peak_pulloff_ratio"], row["mean_pulloff_ratio"],
+           row["V_over_v0"], 100 * (ratio[compliant] - 1.0).abs()])
