@@ -34,15 +34,16 @@ def rigs_part(setup_json: str | Path, out: str | Path, case: str) -> None:
     setup, params, chi0 = rig(setup_json)
     (fixation,) = setup_fixations(setup, params["v0"], "compliant")
     omega0 = setup_number(setup, "fixation.natural_frequency")
+    frequency_hz = omega0 / (2.0 * math.pi) if case == ANTI_RESONANCE else float(case)
     if case == ANTI_RESONANCE:
         cases = [(fixation, [1.0]), (replace(fixation, zeta=0.0), [1.0])]
     else:
-        cases = [(fixation, [2.0 * math.pi * float(case) / omega0])]
+        cases = [(fixation, [2.0 * math.pi * frequency_hz / omega0])]
     eta1 = [float(groups.eta1(h * 1e-6, setup.radius)) for h in setup.amplitudes_um]
     table = rigs.rig_comparison(cases, eta1, chi0, params["n"],
                                 ProgressBar(len(cases) * len(eta1) * len(rigs.RIGS), "rig points"))
     c_o, radius = groups.contact_radius_ratio(chi0), setup.radius
-    table.insert(0, "frequency_hz", table["omega_bar"] * omega0 / (2.0 * math.pi))
+    table.insert(0, "frequency_hz", frequency_hz)  # the configured frequency, not omega_bar omega0/2pi's rounding
     table.insert(4, "h1_um", table["eta1"] * radius * 1e6)
     table["F1_N"] = table["force"] * setup.reduced_modulus * radius**2
     table["delta_amplitude_um"] = table["delta_amplitude"] * c_o**2 * radius * 1e6
