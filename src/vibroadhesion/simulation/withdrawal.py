@@ -103,16 +103,21 @@ class _Best(NamedTuple):
     bracketed: bool  # whether dF/dtau changes sign from - to + in that interval
 
 
+def _contact_state(period: Period, constants: Array, taus: Array, cores: Array) -> tuple[Array, Array]:
+    """(abar, deltabar) of the rigid fixation at local times ``taus``: the scaled core's abar and Eq. (11')."""
+    abar = (period.b0 + period.v_scale * cores[:, -1]) / period.m.speed_scale
+    return abar, constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * np.sin(taus)
+
+
 def cell_forces(period: Period, constants: Array, taus: Array, cores: Array) -> Array:
     """Load-cell force at local times ``taus`` of a period from its scaled cores (module docstring, Eqs. 3', 4').
 
     ``constants`` are the period's kernel constants with its base offset and ramp (Eq. 11').
     """
     m = period.m
-    abar = (period.b0 + period.v_scale * cores[:, -1]) / m.speed_scale
     if m.compliant:
         return np.asarray((m.force_offset - cores[:, 0] * period.x_scale) / m.compliance, dtype=float)
-    d = constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * np.sin(taus)
+    abar, d = _contact_state(period, constants, taus, cores)
     return np.asarray(2.0 * abar * d - (2.0 / 3.0) * abar**3, dtype=float)
 
 
@@ -125,8 +130,7 @@ def cell_force_rates(period: Period, constants: Array, taus: Array, cores: Array
     m = period.m
     if m.compliant:
         return np.asarray(-cores[:, 1] * period.x_scale / m.compliance, dtype=float)
-    abar = (period.b0 + period.v_scale * cores[:, -1]) / m.speed_scale
-    d = constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * np.sin(taus)
+    abar, d = _contact_state(period, constants, taus, cores)
     a_rate = kernel.speeds(abar, d, m.inv_n, m.log_cap) / m.speed_scale
     d_rate = -constants[_RAMP] - constants[_ETAHAT] * np.cos(taus)
     return np.asarray(2.0 * a_rate * (d - abar * abar) + 2.0 * abar * d_rate, dtype=float)
