@@ -135,7 +135,7 @@ def test_speed_column_shown_where_a_row_has_one_and_the_static_frequency_is_miss
     assert table["frequency_hz"].iloc[:3].tolist() == [200.0, 300.0, 400.0] and math.isnan(table["frequency_hz"].iloc[3])
     shown = tables.formatted(table, fit_report.measured_vs_predicted_columns(table))
     assert shown["f (Hz)"].tolist() == ["200", "300", "400", tables.MISSING]
-    assert shown["withdrawal speed V (— quasi-static) (µm/s)"].tolist() == ["44.5"] + [tables.MISSING] * 3
+    assert shown["V, withdrawal speed (µm/s)"].tolist() == ["44.5"] + [tables.MISSING] * 3
     sentence = fit_report.speed_sentence(table)
     assert sentence.startswith("1 of 4 rows were measured at a withdrawal speed V") and "as if V → 0" in sentence
     quasi_static = fit_report.measured_vs_predicted(_fit(3), _rows(tmp_path), setup_json)

@@ -202,7 +202,7 @@ def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: s
 def measured_vs_predicted_columns(table: pd.DataFrame) -> dict[str, Column]:
     """How :func:`measured_vs_predicted`'s columns read: the level's name (short: the table is wide) and mN."""
     columns = {"pulloff_mN": Column("measured |P_cr|", "mN"),
-               data.SPEED_COLUMN: Column("withdrawal speed V (— quasi-static)", "µm/s")}
+               data.SPEED_COLUMN: Column("V, withdrawal speed", "µm/s")}
     for name in table.columns:
         kind, _, level = str(name).partition(":")
         if kind == "predicted_mN":
@@ -285,7 +285,8 @@ def speed_sentence(table: pd.DataFrame) -> str:
     if data.SPEED_COLUMN not in table:
         return ""
     count = int(table[data.SPEED_COLUMN].notna().sum())
-    return (f"{count} of {len(table)} rows were measured at a withdrawal speed V (`{data.SPEED_COLUMN}`). The full "
+    return (f"{count} of {len(table)} rows were measured at a withdrawal speed V (`{data.SPEED_COLUMN}`; — in the "
+            "table: quasi-static). The full "
             "model (the simulation) predicts each by the simulated withdrawal at that speed, read as the most tensile "
             "one-period mean of the load-cell force: the reading whose V → 0 limit is the quasi-static pull-off the "
             "other rows are fitted to. The asymptotic levels are quasi-static: they fit these rows as if V → 0, so "
