@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from functools import partial
 
 import numpy as np
 import pandas as pd
@@ -18,7 +19,7 @@ from conftest import N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 from vibroadhesion.experiments import speed_fit
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
-from vibroadhesion.experiments.simulation_fit import pulloff_problem, shifted
+from vibroadhesion.experiments.simulation_fit import log_difference, pulloff_problem, shifted
 from vibroadhesion.experiments.speed_fit import speed_log_derivative, speed_pulloff
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 
@@ -114,3 +115,25 @@ def test_replicates_and_a_mix_with_quasi_static_rows_and_a_row_without_a_pulloff
     assert [status[line][0] for line in range(2, 8)] == ["pulloff"] * 6
     assert "line 8 (200 Hz, 20 um, 4450 um/s): detached_before_mean_extremum" in fit["note"]
     assert fit["residuals_mN"][-1]["residual"] == pytest.approx(-rows["pulloff_mN"].iloc[-1], rel=1e-12)
+
+
+@pytest.mark.parametrize("plus, minus, center, expected", [
+    (math.exp(0.02), math.exp(-0.02), 1.0, 2.0),  # F = theta^2 at h = 1e-2: the central difference is exact
+    (math.nan, math.exp(-0.02), 1.0, 2.0),  # one-sided with the centre
+    (math.exp(0.02), math.nan, 1.0, 2.0),
+    (-math.exp(0.02), -math.exp(-0.02), -1.0, 2.0),  # a compressive (negative) force: d ln|F|
+    (math.nan, math.nan, 1.0, math.nan),  # no reading on either side: no derivative
+    (1.0, -1.0, 0.5, math.nan),  # a sign change: no logarithm, no derivative
+])
+def test_log_difference_of_a_power_law(plus: float, minus: float, center: float, expected: float) -> None:
+    """d ln|F|/d ln theta of F = theta^2 (or -theta^2), sampled at ln theta = 0, +-h: 2, to rounding (1e-12)."""
+    result = log_difference(plus, minus, center, 1e-2)
+    assert result == pytest.approx(expected, rel=1e-12, nan_ok=True)
+
+
+def test_a_start_without_a_steady_state_is_a_status_not_a_number(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Where the steady state at the start offset does not converge, the row is ``no_start_state`` with no reading."""
+    monkeypatch.setattr(speed_fit.simulation, "steady_state", partial(speed_fit.simulation.steady_state,
+                                                                    max_iterations=0))  # not_converged
+    run = speed_pulloff(PUBLISHED, 200.0, 20.0, V0_UM_S, **GEOMETRY)
+    assert run.status == "no_start_state" and math.isnan(run.force_mN) and run.periods == 0
