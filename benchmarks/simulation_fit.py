@@ -1,6 +1,6 @@
 """Benchmark: the full model as a fit level (vibroadhesion.experiments.simulation_fit).
 
-Usage: python benchmarks/simulation_fit.py [--fit] [--coverage] [--sets] [--starts] [OUT_TXT]
+Usage: python benchmarks/simulation_fit.py [--fit] [--coverage] [--sets] [--starts] [--speed] [OUT_TXT]
 
 1. Derivatives of the simulated pull-off, d ln P_cr / d ln theta for w0, n, v0 at the published parameters:
    the envelope theorem (two warm orbits per parameter at the fixed pull-off offset) against central
@@ -19,6 +19,10 @@ Usage: python benchmarks/simulation_fit.py [--fit] [--coverage] [--sets] [--star
 5. With ``--starts``: every 3 of the 7 rows of the n = 0.3 set that have a simulated pull-off at the truth (35
    triples, noise-free), fitted from w0 +50 %, n -40 % and from the published parameters (the fit's usual start):
    per triple and start the status, the largest relative error of w0 and n, the wall time; then the count fitted.
+6. With ``--speed``: rows at a withdrawal speed (issue 15; vibroadhesion.experiments.speed_fit), 200/300/400 Hz x
+   20, 60 um at V = v0 and 3 v0 (12 rows, the withdrawal at the published parameters), fitted from w0 +50 %,
+   n -40 %: wall time (min and median of REPEATS fits), withdrawals run, recovered errors; and the same rows
+   fitted as quasi-static (the speed column dropped), whose bias shows what ignoring the speed costs.
 
 Every pull-off "measured" here is simulated (the virtual pull-off at the true parameters), never data.
 """
@@ -37,6 +41,7 @@ from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
 from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, pulloff_problem
+from vibroadhesion.experiments.speed_fit import speed_pulloff
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff, traced_pulloff
 
 RADIUS = 51.5e-3
@@ -50,6 +55,7 @@ PAIRS = [(f, h) for f in (200.0, 300.0, 400.0) for h in (20.0, 40.0, 60.0, 80.0,
 NOISE = 0.01
 SEEDS = range(10)
 OTHER_EXPONENTS = (0.3, 1.0)
+SPEED_KEYS = [(f, h, r * PUBLISHED.v0 * 1e6) for f in (200.0, 300.0, 400.0) for h in (20.0, 60.0) for r in (1.0, 3.0)]
 
 
 def simulated(params, frequency_hz, h1_um):
@@ -200,6 +206,31 @@ def starts_table():
     return table, f"recovered to 1e-3: {len(fitted)} of {len(table)} fits"
 
 
+def speed_rows():
+    """Part 6's rows: the withdrawal at the published parameters for each of SPEED_KEYS, labelled simulated."""
+    forces = [speed_pulloff(PUBLISHED, *key, **GEOMETRY).force_mN for key in SPEED_KEYS]
+    return pd.DataFrame({"frequency_hz": [k[0] for k in SPEED_KEYS], "h1_um": [k[1] for k in SPEED_KEYS],
+                         "pulloff_mN": forces, "source": "simulated", "line": np.arange(2, 2 + len(SPEED_KEYS)),
+                         "withdrawal_speed_um_s": [k[2] for k in SPEED_KEYS]})
+
+
+def speed_table():
+    """Part 6 of the module docstring."""
+    rows = speed_rows()
+    start = replace(PUBLISHED, w0=1.5 * PUBLISHED.w0, n=0.6 * PUBLISHED.n)
+    records = []
+    quasi_static = rows.drop(columns="withdrawal_speed_um_s")
+    for label, fitted in (("speed rows", rows), ("same rows as quasi-static", quasi_static)):
+        summary, wall_min, wall_median = timed(lambda r=fitted: fit_gent_schultz(r, "simulation", start, **GEOMETRY))
+        records.append({"rows": label, "status": summary["status"], "wall_s_min": wall_min,
+                        "wall_s_median": wall_median, "withdrawals": summary.get("withdrawals_run", 0),
+                        "families": summary.get("families_traced"), "free": ",".join(summary["free_parameters"]),
+                        "rms_relative_residual": summary["rms_relative_residual"]}
+                       | {f"{name}_relative_error": summary["parameters"][name]["estimate"] / getattr(PUBLISHED, name)
+                          - 1 for name in NAMES})
+    return pd.DataFrame(records)
+
+
 def main(argv):
     """Print (and with OUT_TXT write) the tables."""
     out = [a for a in argv if not a.startswith("--")]
@@ -222,6 +253,9 @@ def main(argv):
         table, line = starts_table()
         text += ["", "n = 0.3 (w0, v0 published): every 3 of the simulated noise-free rows with a pull-off at the "
                  "truth, from two starts", table.to_string(index=False), line]
+    if "--speed" in argv:
+        text += ["", f"rows at a withdrawal speed: 200/300/400 Hz x 20, 60 um at V = v0, 3 v0 (simulated), fitted from "
+                 f"w0 +50 %, n -40 % ({REPEATS} fits, wall s)", speed_table().to_string(index=False)]
     report = "\n".join(text)
     print(report)
     if out:

@@ -30,6 +30,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SETUP_YAML = ROOT / "data" / "setup.yaml"
 PULLOFF_CSV = ROOT / "data" / "pulloff.csv"
 HEADER = "frequency_hz,h1_um,pulloff_mN,source"
+SPEED_HEADER = HEADER + ",withdrawal_speed_um_s"
 
 
 # ----------------------------------------------------------------------------- helpers
@@ -124,8 +125,9 @@ def test_shipped_reduced_modulus_closed_form() -> None:
 def test_shipped_pulloff_loads_empty_with_dtypes() -> None:
     rows = load_pulloff(PULLOFF_CSV)
     assert rows.empty
-    assert list(rows.columns) == ["frequency_hz", "h1_um", "pulloff_mN", "source", "line"]
-    assert [str(rows[c].dtype) for c in ("frequency_hz", "h1_um", "pulloff_mN", "line")] == ["float64"] * 3 + ["int64"]
+    assert list(rows.columns) == ["frequency_hz", "h1_um", "pulloff_mN", "source", "line", "withdrawal_speed_um_s"]
+    assert [str(rows[c].dtype) for c in ("frequency_hz", "h1_um", "pulloff_mN", "line", "withdrawal_speed_um_s")] == [
+        "float64"] * 3 + ["int64", "float64"]
     assert pd.api.types.is_string_dtype(rows["source"])
 
 
@@ -172,6 +174,23 @@ def test_main_writes_canonical_csv_with_repr_floats(tmp_path: Path) -> None:
     assert back["pulloff_mN"].tolist() == [20.1, 1000.0]
 
 
+def test_withdrawal_speed_column_is_optional_empty_and_zero_are_quasi_static(tmp_path: Path) -> None:
+    """The optional speed (um/s): empty and 0 read as 0 (quasi-static); the canonical CSV carries it only where a row
+    has a speed, so a file without one ingests to the same bytes as before the column existed."""
+    pulloff = _csv(tmp_path, "withdrawal_speed_um_s," + HEADER + "\n,200,40,250,a\n0,300,40,260,b\n44.5,400,40,270,c\n")
+    rows = load_pulloff(pulloff)
+    assert rows["withdrawal_speed_um_s"].tolist() == [0.0, 0.0, 44.5]
+    out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
+    assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
+    assert out_csv.read_text() == (SPEED_HEADER + "\n200.0,40.0,250.0,a,0.0\n300.0,40.0,260.0,b,0.0\n"
+                                   "400.0,40.0,270.0,c,44.5\n")
+    assert data.read_canonical_pulloff(out_csv)["withdrawal_speed_um_s"].tolist() == [0.0, 0.0, 44.5]
+    quasi_static = _csv(tmp_path, SPEED_HEADER + "\n200,40,20.1,\"a, b\",\n400,60.5,1e3,lab,0\n")
+    assert main([str(SETUP_YAML), str(quasi_static), str(out_json), str(out_csv)]) == 0
+    assert out_csv.read_text() == HEADER + "\n200.0,40.0,20.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    assert load_pulloff(_csv(tmp_path, HEADER + "\n200,40,250,a\n"))["withdrawal_speed_um_s"].tolist() == [0.0]
+
+
 # ----------------------------------------------------------------------------- pulloff.csv: bad input
 
 ROW = "200,40,250,lab"
@@ -201,6 +220,15 @@ BAD_CSV = [
     ("force-too-large", HEADER + "\n200,40,250000,lab\n", 2, "pulloff_mN", "above 1e5 mN"),
     ("empty-source", HEADER + "\n200,40,250,\n", 2, "source", "empty source"),
     ("blank-source", HEADER + "\n200,40,250,   \n", 2, "source", "empty source"),
+    ("negative-speed", SPEED_HEADER + "\n200,40,250,lab,-44.5\n", 2, "withdrawal_speed_um_s", "must be >= 0 um/s"),
+    ("non-numeric-speed", SPEED_HEADER + "\n200,40,250,lab,fast\n", 2, "withdrawal_speed_um_s",
+     'not a number: "fast" (expected a number in um/s'),
+    ("unit-suffixed-speed", SPEED_HEADER + "\n200,40,250,lab,44.5um/s\n", 2, "withdrawal_speed_um_s", "not a number"),
+    ("inf-speed", SPEED_HEADER + "\n200,40,250,lab,inf\n", 2, "withdrawal_speed_um_s", "not a finite number"),
+    ("nan-speed", SPEED_HEADER + "\n200,40,250,lab,nan\n", 2, "withdrawal_speed_um_s", "not a finite number"),
+    ("speed-in-nm-s", SPEED_HEADER + "\n200,40,250,lab,4.45e7\n", 2, "withdrawal_speed_um_s", "looks like nm/s"),
+    ("static-test-at-a-speed", SPEED_HEADER + "\n,0,60,lab,44.5\n", 2, "withdrawal_speed_um_s",
+     "static JKR test (h1_um = 0) at a withdrawal speed is not modelled"),
 ]
 
 

@@ -3,6 +3,7 @@
 Checked on small tables written here (a fold pair, a grid of errors), and on Fig. 5 of a finished run.
 """
 
+import io
 from pathlib import Path
 
 import matplotlib.pyplot as plt
@@ -122,4 +123,29 @@ def test_a_label_too_wide_for_its_cell_at_the_smallest_font_is_left_out() -> Non
     assert _spills(fig) == []
     assert not any(t.get_visible() for ax in fig.axes for t in ax.texts)
     assert min(t.get_fontsize() for ax in fig.axes for t in ax.texts) == error_maps.SMALLEST_LABEL
+    plt.close(fig)
+
+
+def _fig4_png(tmp_path: Path, measured: pd.DataFrame, name: str) -> bytes:
+    """Fig. 4 of a two-curve table (h1 0-120 um at 200 and 400 Hz) with ``measured``, as PNG bytes."""
+    table = pd.DataFrame([{"frequency_hz": f, "h1_um": h, "model": m, "pulloff_ratio": 1.0 + h / 100.0 + k,
+                           "A_over_am": 0.01} for k, f in enumerate((200.0, 400.0)) for h in (0.0, 60.0, 120.0)
+                          for m in ("leading", "refined")])
+    fig = figures.plot_fig4(table, measured, 57.27)
+    figures.save_figure(fig, tmp_path / f"{name}.pdf", tmp_path / f"{name}.png")
+    return (tmp_path / f"{name}.png").read_bytes()
+
+
+def test_fig4_fills_and_labels_rows_measured_at_a_withdrawal_speed(tmp_path: Path) -> None:
+    """A row with withdrawal_speed_um_s > 0 is a filled marker labelled "withdrawn at V > 0"; an all-quasi-static
+    speed column (the reader's zeros) draws the same bytes as a frame without the column."""
+    rows = pd.DataFrame({"frequency_hz": [200.0, 400.0], "h1_um": [40.0, 60.0], "pulloff_mN": [250.0, 500.0],
+                         "source": ["lab", "lab"]})
+    without = _fig4_png(tmp_path, rows, "without")
+    assert _fig4_png(tmp_path, rows.assign(withdrawal_speed_um_s=0.0), "zeros") == without
+    fig = figures.plot_fig4(pd.read_csv(io.StringIO("frequency_hz,h1_um,model,pulloff_ratio,A_over_am\n"
+                                                    "200.0,0.0,refined,1.0,0.01\n200.0,60.0,refined,2.0,0.01\n")),
+                            rows.assign(withdrawal_speed_um_s=[44.5, 0.0]), 57.27)
+    labels = {line.get_label(): line.get_markerfacecolor() for line in fig.axes[0].lines}
+    assert labels["lab, 200 Hz, withdrawn at V > 0"] != "none" and labels["lab, 400 Hz"] == "none"
     plt.close(fig)

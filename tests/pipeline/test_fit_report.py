@@ -17,7 +17,7 @@ import yaml
 from vibroadhesion.core import levels
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
-from vibroadhesion.pipeline import data, figures, fit_report
+from vibroadhesion.pipeline import data, figures, fit_report, tables
 from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -119,6 +119,27 @@ def test_measured_against_predicted_per_row_with_the_contact_loss_row_unpredicte
                                                            levels.level("leading").label}
     headers = fit_report.measured_vs_predicted_columns(table)
     assert headers["predicted_mN:leading"].header == "predicted, leading (mN)"
+
+
+def test_speed_column_shown_where_a_row_has_one_and_the_static_frequency_is_missing_not_zero(tmp_path: Path) -> None:
+    """The withdrawal speed (um/s) appears as a column only where a row has one (quasi-static rows "—", NaN), with a
+    sentence on how the levels treat it; a static JKR test's frequency is "—" (NaN), not 0."""
+    csv = tmp_path / "pulloff.csv"
+    csv.write_text("frequency_hz,h1_um,pulloff_mN,source,withdrawal_speed_um_s\n200.0,20.0,170.0,lab A,44.5\n"
+                   "300.0,60.0,700.0,lab A,\n400.0,100.0,1400.0,lab B,0\n,0.0,57.0,lab C,\n")
+    rows = data.read_canonical_pulloff(csv)
+    setup_json = _setup_json(tmp_path)
+    table = fit_report.measured_vs_predicted(_fit(3), rows, setup_json)
+    assert table.columns[:5].tolist() == ["frequency_hz", "h1_um", "withdrawal_speed_um_s", "source", "pulloff_mN"]
+    assert table["withdrawal_speed_um_s"].iloc[0] == 44.5 and table["withdrawal_speed_um_s"].iloc[1:].isna().all()
+    assert table["frequency_hz"].iloc[:3].tolist() == [200.0, 300.0, 400.0] and math.isnan(table["frequency_hz"].iloc[3])
+    shown = tables.formatted(table, fit_report.measured_vs_predicted_columns(table))
+    assert shown["f (Hz)"].tolist() == ["200", "300", "400", tables.MISSING]
+    assert shown["V, withdrawal speed (µm/s)"].tolist() == ["44.5"] + [tables.MISSING] * 3
+    sentence = fit_report.speed_sentence(table)
+    assert sentence.startswith("1 of 4 rows were measured at a withdrawal speed V") and "as if V → 0" in sentence
+    quasi_static = fit_report.measured_vs_predicted(_fit(3), _rows(tmp_path), setup_json)
+    assert "withdrawal_speed_um_s" not in quasi_static and fit_report.speed_sentence(quasi_static) == ""
 
 
 @pytest.mark.parametrize("omega_check, a_over_am, expected", [

@@ -30,7 +30,9 @@ is not a positive number, e.g. NaN for a simulated row without a pull-off), with
 
 Rows. The model is evaluated once per distinct (frequency, amplitude) pair, so replicate rows cost
 nothing. A static JKR test (``h1_um`` = 0, no vibration) has the pull-off |P_cr^JKR| = (3 pi/2) R w0
-(Eq. 70) at every level (Abar = 0, J0 = 1): it pins w0 and carries no frequency.
+(Eq. 70) at every level (Abar = 0, J0 = 1): it pins w0 and carries no frequency. A row measured at a
+withdrawal speed (``withdrawal_speed_um_s`` > 0) is predicted by the simulation at that speed
+(:mod:`vibroadhesion.experiments.speed_fit`); the asymptotic levels are quasi-static and fit it as if V -> 0.
 """
 
 from __future__ import annotations

@@ -57,6 +57,10 @@ n = 0.264: P*/P_observed - 1 = 0.003 cold, 0.020 warm), so the first search can 
 that ends with no more pairs with a pull-off than free parameters is a
 :class:`~vibroadhesion.experiments.fitting.FitError`.
 
+A row with a withdrawal speed V > 0 (:data:`SPEED_COLUMN`) is predicted instead by the withdrawal at that speed,
+once per distinct (f, h1, V), with its own Jacobian (central differences):
+:mod:`vibroadhesion.experiments.speed_fit`; a withdrawal without a pull-off is a row without one, as above.
+
 The least-squares search, the identifiability rule for v0 (at least two frequencies and a relative
 standard error below ``max_relative_se_v0``) and the summary are those of
 :mod:`vibroadhesion.experiments.fitting`.
@@ -94,6 +98,11 @@ _FAMILY_STEP = 0.2
 
 #: The key of the static JKR rows (h1 = 0, no frequency): their pull-off is |P_cr^JKR| (Eq. 70).
 STATIC = (0.0, 0.0)
+#: The optional column of a row's withdrawal speed V in um/s (0: quasi-static). A row with V > 0 is keyed
+#: (f, h1, V) and predicted by the withdrawal at that speed (:mod:`vibroadhesion.experiments.speed_fit`).
+SPEED_COLUMN = "withdrawal_speed_um_s"
+#: A pair's key: (f, h1) of a quasi-static test (or :data:`STATIC`), (f, h1, V) of a test at a withdrawal speed.
+Key = tuple[float, ...]
 
 #: The most tensile orbit of a pair's family: (base offset d*, orbit there).
 Extremum = tuple[float, SteadyState]
@@ -126,13 +135,25 @@ def envelope_log_derivatives(params: GentSchultzParameters, frequency_hz: float,
     for k, name in enumerate(names):
         plus, minus = (_shifted_phat(params, name, sign * step, frequency_hz, h1_um, at, radius=radius,
                                      reduced_modulus=reduced_modulus) for sign in (1.0, -1.0))
-        if math.isnan(plus) or math.isnan(minus):
-            one_sided = (plus, step) if math.isnan(minus) else (minus, -step)
-            derivative = math.log(one_sided[0] / orbit.orbit.phat_m) / one_sided[1]
-        else:
-            derivative = math.log(plus / minus) / (2.0 * step)
-        derivatives[k] = derivative + (1.0 if name == "w0" else 0.0)
+        derivatives[k] = log_difference(plus, minus, orbit.orbit.phat_m, step) + (1.0 if name == "w0" else 0.0)
     return derivatives
+
+
+def log_difference(plus: float, minus: float, center: float, step: float) -> float:
+    """d ln|F|/d ln theta from F at ln theta +- ``step``: central, ln(plus/minus)/(2 step), error O(step^2).
+
+    Where one of them is NaN, the one-sided difference with ``center`` (F at ln theta; error O(step)); NaN where
+    both are, or where the two values compared differ in sign (no logarithm).
+    """
+    pair = ((plus, minus, 2.0 * step) if not (math.isnan(plus) or math.isnan(minus))
+            else (plus, center, step) if math.isnan(minus) else (center, minus, step))
+    ratio = pair[0] / pair[1]
+    return math.log(ratio) / pair[2] if ratio > 0 else math.nan
+
+
+def shifted(params: GentSchultzParameters, name: str, log_shift: float) -> GentSchultzParameters:
+    """``params`` with ``name`` scaled by exp(``log_shift``) (a step in ln theta of Eq. 73's parameters)."""
+    return replace(params, **{name: getattr(params, name) * math.exp(log_shift)})
 
 
 def _shifted_phat(params: GentSchultzParameters, name: str, log_shift: float, frequency_hz: float, h1_um: float,
@@ -143,9 +164,8 @@ def _shifted_phat(params: GentSchultzParameters, name: str, log_shift: float, fr
     (a shooting that stalls next to the pull-off converges then); NaN if neither converges.
     """
     d_star, orbit = at
-    shifted = replace(params, **{name: getattr(params, name) * math.exp(log_shift)})
-    problem = pulloff_problem(shifted, frequency_hz, h1_um, radius=radius, reduced_modulus=reduced_modulus,
-                              base_offset=d_star)
+    problem = pulloff_problem(shifted(params, name, log_shift), frequency_hz, h1_um, radius=radius,
+                              reduced_modulus=reduced_modulus, base_offset=d_star)
     state = _start_state(orbit)
     found = simulation.steady_state(problem, initial_state=state, max_iterations=WARM_ITERATIONS)
     if not found.ok:
@@ -166,13 +186,14 @@ class _Families:
     2-parameter fit), keyed by ln of the parameters to 1e-12 (the searches reach them through ln).
     """
 
-    pairs: list[tuple[float, float]]
+    pairs: list[Key]
     geometry: dict[str, float]
-    warm: dict[tuple[float, float], Extremum] = field(default_factory=dict)
+    warm: dict[Key, Extremum] = field(default_factory=dict)
     key: tuple[float, ...] = ()
     last: tuple[list[str], np.ndarray, list[Extremum | None]] = ([], np.empty(0), [])
     derivatives: dict[str, np.ndarray] = field(default_factory=dict)
     families: int = 0
+    withdrawals: int = 0
     progress: Heartbeat | None = None
 
     def evaluate(self, params: GentSchultzParameters) -> tuple[list[str], np.ndarray, list[Extremum | None]]:
@@ -188,6 +209,11 @@ class _Families:
                 statuses.append("static_jkr")
                 extrema.append(None)
                 forces[i] = jkr_mN(params.w0, self.geometry["radius"])
+                continue
+            if len(pair) == 3:  # a test at a withdrawal speed: its dynamic pull-off (experiments/speed_fit.py)
+                status, forces[i] = self._withdraw(params, pair)
+                statuses.append(status)
+                extrema.append(None)
                 continue
             problem = pulloff_problem(params, *pair, **self.geometry)
             warm = self.warm.get(pair)
@@ -206,6 +232,30 @@ class _Families:
         self.key, self.last, self.derivatives = key, (statuses, forces, extrema), {}
         return self.last
 
+    def _withdraw(self, params: GentSchultzParameters, key: Key) -> tuple[str, float]:
+        """Status and reading (mN) of the withdrawal of the speed key (f, h1, V) at ``params`` (speed_fit.py)."""
+        from vibroadhesion.experiments.speed_fit import speed_pulloff  # imports this module: no cycle
+
+        run = speed_pulloff(params, key[0], key[1], key[2], **self.geometry)
+        self.withdrawals += 1
+        if self.progress is not None:
+            self.progress.beat(f"withdrawal at {key[2]:g} um/s ({key[0]:g} Hz, {key[1]:g} um) at {params}: "
+                               f"{run.status}, {self.withdrawals} withdrawals so far")
+        return run.status, run.force_mN
+
+    def _log_derivative(self, params: GentSchultzParameters, key: Key, at: Extremum | None, name: str,
+                        force: float) -> float:
+        """d ln P*/d ln ``name`` of one key (:meth:`log_derivatives`); ``force`` its P* in mN at ``params``."""
+        if key == STATIC:
+            return float(name == "w0")  # Eq. (70): |P_cr^JKR| is proportional to w0
+        if len(key) == 3:
+            from vibroadhesion.experiments.speed_fit import speed_log_derivative  # imports this module: no cycle
+
+            self.withdrawals += 2
+            return speed_log_derivative(params, key[0], key[1], key[2], name, force, **self.geometry)
+        return 0.0 if at is None else float(envelope_log_derivatives(params, key[0], key[1], at, (name,),
+                                                                     **self.geometry)[0])
+
     def log_derivatives(self, params: GentSchultzParameters, name: str) -> np.ndarray:
         """d ln P* / d ln ``name`` per pair at ``params`` (:func:`envelope_log_derivatives` at P*'s orbit).
 
@@ -213,12 +263,10 @@ class _Families:
         (module docstring), 0 where no shifted orbit converges there; a pull-off whose shifted orbits both fail has
         no derivative: :class:`FitError`, never a silent 0.
         """
-        statuses, _, extrema = self.evaluate(params)
+        statuses, forces, extrema = self.evaluate(params)
         if name not in self.derivatives:
-            derivatives = np.array([
-                float(name == "w0") if pair == STATIC else 0.0 if at is None else
-                envelope_log_derivatives(params, *pair, at, (name,), **self.geometry)[0]
-                for pair, at in zip(self.pairs, extrema, strict=True)])
+            derivatives = np.array([0.0 if math.isnan(force) else self._log_derivative(params, pair, at, name, force)
+                                    for pair, at, force in zip(self.pairs, extrema, forces, strict=True)])
             pulloff = np.isin(statuses, WITH_PULLOFF)
             if not np.all(np.isfinite(derivatives[pulloff])):
                 raise FitError(f"simulation fit: no orbit next to the pull-off of a pair at {params} when {name} "
@@ -231,10 +279,15 @@ class _Families:
         return np.isin(self.evaluate(params)[0], WITH_PULLOFF)
 
 
-def _pair_keys(rows: pd.DataFrame) -> list[tuple[float, float]]:
-    """Each row's (frequency, amplitude) pair; :data:`STATIC` for a static JKR test (h1 = 0, frequency empty)."""
-    return [STATIC if float(h) == 0.0 else (float(f), float(h))
-            for f, h in zip(rows["frequency_hz"], rows["h1_um"], strict=True)]
+def _pair_keys(rows: pd.DataFrame) -> list[Key]:
+    """Each row's key (:data:`Key`).
+
+    (frequency, amplitude); :data:`STATIC` for a static JKR test (h1 = 0, frequency empty); (frequency, amplitude,
+    V) for a test at a withdrawal speed V > 0 in um/s (:data:`SPEED_COLUMN`, optional).
+    """
+    speeds = rows[SPEED_COLUMN] if SPEED_COLUMN in rows else np.zeros(len(rows))
+    return [STATIC if float(h) == 0.0 else (float(f), float(h)) if not v > 0 else (float(f), float(h), float(v))
+            for f, h, v in zip(rows["frequency_hz"], rows["h1_um"], speeds, strict=True)]
 
 
 def _start_state(orbit: SteadyState) -> np.ndarray:
@@ -285,7 +338,8 @@ class _Objective:
     def jacobian(self, log_values: np.ndarray) -> np.ndarray:
         """d residual / d ln(free) = (P*/P_observed) d ln P*/d ln theta (envelope theorem) of the search's residuals.
 
-        At the fixed end of a family without a pull-off, its partial derivative; 0 for a family without orbits.
+        At the fixed end of a family without a pull-off, its partial derivative; 0 for a family without orbits; for a
+        row at a withdrawal speed, central differences (:mod:`vibroadhesion.experiments.speed_fit`).
         """
         params = self.params_of(log_values)
         _, forces, _ = self.families.evaluate(params)
@@ -350,8 +404,9 @@ def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radi
 
     w0 and n are fitted from ``published``; v0 too when the rows span two frequencies and its relative
     standard error at the (w0, n) fit is below ``max_relative_se_v0`` (residual scale floored at
-    ``noise_floor``). Adds ``row_status`` (status and model force per row at the fit) and ``families_traced``.
-    Each traced family beats ``progress``.
+    ``noise_floor``). Adds ``row_status`` (status and model force per row at the fit, with its withdrawal speed
+    where the rows have speeds) and ``families_traced`` (and ``withdrawals_run``). Each traced family and
+    withdrawal beats ``progress``.
     """
     pairs = sorted(set(_pair_keys(rows)))
     families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus}, progress=progress)
@@ -381,14 +436,18 @@ def _row_statuses(rows: pd.DataFrame, params: GentSchultzParameters, families: _
     statuses, forces, _ = families.evaluate(params)
     forces = np.where(families.with_pulloff(params), forces, math.nan)
     index = {pair: i for i, pair in enumerate(families.pairs)}
+    speeds = any(len(pair) == 3 for pair in families.pairs)  # then each row says its speed (0: quasi-static)
     table = []
     for line, f, h, pair in zip(rows["line"], rows["frequency_hz"], rows["h1_um"], _pair_keys(rows), strict=True):
         i = index[pair]
         table.append({"line": int(line), "frequency_hz": float(f), "h1_um": float(h), "status": statuses[i],
-                      "model_mN": None if math.isnan(forces[i]) else float(forces[i])})
-    lost = [f"line {r['line']} ({r['frequency_hz']:g} Hz, {r['h1_um']:g} um): {r['status']}"
+                      "model_mN": None if math.isnan(forces[i]) else float(forces[i])}
+                     | ({SPEED_COLUMN: pair[2] if len(pair) == 3 else 0.0} if speeds else {}))
+    lost = [f"line {r['line']} ({r['frequency_hz']:g} Hz, {r['h1_um']:g} um"
+            f"{f', {r[SPEED_COLUMN]:g} um/s' if r.get(SPEED_COLUMN) else ''}): {r['status']}"
             for r in table if r["model_mN"] is None]
     if lost:
         note = "; ".join(filter(None, [note, "no simulated pull-off at the fit, counted as zero force (residual -1): "
                                        + ", ".join(lost)]))
-    return {"note": note, "row_status": table, "families_traced": families.families}
+    return {"note": note, "row_status": table, "families_traced": families.families} | (
+        {"withdrawals_run": families.withdrawals} if speeds else {})

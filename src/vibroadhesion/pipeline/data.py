@@ -50,7 +50,9 @@ if TYPE_CHECKING:  # pandas is imported where a frame is built: checking the inp
 
 PULLOFF_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN", "source")
 NUMERIC_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN")
-_UNITS = {"frequency_hz": "Hz", "h1_um": "um", "pulloff_mN": "mN"}
+#: The optional column: the withdrawal speed V of the test in um/s (empty or 0: quasi-static, read as 0).
+SPEED_COLUMN = "withdrawal_speed_um_s"
+_UNITS = {"frequency_hz": "Hz", "h1_um": "um", "pulloff_mN": "mN", SPEED_COLUMN: "um/s"}
 
 # (group, entry) behind each scalar field of Setup.
 _SETUP_FIELDS: dict[str, tuple[str, str]] = {
@@ -249,6 +251,7 @@ def _pulloff_frame(records: list[dict[str, Any]]) -> pd.DataFrame:
         "pulloff_mN": pd.Series([r["pulloff_mN"] for r in records], dtype="float64"),
         "source": pd.Series([r["source"] for r in records], dtype="str"),
         "line": pd.Series([r["line"] for r in records], dtype="int64"),
+        SPEED_COLUMN: pd.Series([r[SPEED_COLUMN] for r in records], dtype="float64"),
     })
 
 
@@ -279,7 +282,8 @@ def _row_numbers(path: Path, line_no: int, row: dict[str, str]) -> dict[str, Any
     """The numeric columns of one row.
 
     A static JKR test (h1_um = 0) has no excitation: its frequency may be empty (read as 0); any other row
-    needs a frequency > 0.
+    needs a frequency > 0. The optional withdrawal speed (um/s) is 0 where the column is absent or empty
+    (quasi-static); a static test at a speed (the rate-dependent JKR pull-off) is not modelled: refused.
     """
     h1 = _number(path, line_no, "h1_um", row["h1_um"])
     if h1 == 0 and not row["frequency_hz"].strip():
@@ -289,15 +293,20 @@ def _row_numbers(path: Path, line_no: int, row: dict[str, str]) -> dict[str, Any
         if frequency == 0 and h1 != 0:
             raise DataError(path, line_no, "frequency_hz", "frequency must be > 0 Hz (0 or empty only for a static "
                             f"test, h1_um = 0), got {frequency!r}")
+    speed = _number(path, line_no, SPEED_COLUMN, row[SPEED_COLUMN]) if row.get(SPEED_COLUMN, "").strip() else 0.0
+    if h1 == 0 and speed > 0:
+        raise DataError(path, line_no, SPEED_COLUMN, "a static JKR test (h1_um = 0) at a withdrawal speed is not "
+                        "modelled (only the quasi-static Eq. 70): leave the speed empty")
     return {"frequency_hz": frequency, "h1_um": h1, "pulloff_mN": _number(path, line_no, "pulloff_mN",
-                                                                          row["pulloff_mN"])}
+                                                                          row["pulloff_mN"]), SPEED_COLUMN: speed}
 
 
 def load_pulloff(path: str | Path) -> pd.DataFrame:
     """Read and validate ``data/pulloff.csv`` (:func:`pulloff_records`) as a frame.
 
-    Columns ``frequency_hz``, ``h1_um``, ``pulloff_mN`` (float64), ``source`` (str) and ``line``
-    (int64, 1-based line in the file); zero data rows give an empty frame with those columns and dtypes.
+    Columns ``frequency_hz``, ``h1_um``, ``pulloff_mN`` (float64), ``source`` (str), ``line``
+    (int64, 1-based line in the file) and ``withdrawal_speed_um_s`` (float64, 0: quasi-static); zero data rows
+    give an empty frame with those columns and dtypes.
     """
     return _pulloff_frame(pulloff_records(path))
 
@@ -306,8 +315,8 @@ def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
     """Read and validate ``data/pulloff.csv``: one dict per row, the columns and its ``line``.
 
     Lines whose first non-blank character is ``#`` and blank lines are skipped; the first other
-    line is the header (the four columns, in any order). Rows that repeat another are replicates
-    (a test run twice): they are kept.
+    line is the header (the four columns and the optional :data:`SPEED_COLUMN`, in any order). Rows that
+    repeat another are replicates (a test run twice): they are kept.
     """
     path = Path(path)
     text = read_text(path)
@@ -361,8 +370,9 @@ def _check_header(path: Path, line_no: int, header: list[str]) -> None:
         if name in seen:
             raise DataError(path, line_no, name, "duplicate column name")
         seen.add(name)
-        if name not in PULLOFF_COLUMNS:
-            raise DataError(path, line_no, name, f'unknown column "{name}"; expected exactly {expected}')
+        if name not in (*PULLOFF_COLUMNS, SPEED_COLUMN):
+            raise DataError(path, line_no, name, f'unknown column "{name}"; expected exactly {expected} '
+                            f"(and optionally {SPEED_COLUMN})")
     for name in PULLOFF_COLUMNS:
         if name not in seen:
             raise DataError(path, line_no, name, f'missing column "{name}"; expected {expected}')
@@ -390,12 +400,14 @@ def read_canonical_pulloff(path: str | Path) -> pd.DataFrame:
 
 
 def _pulloff_csv_text(records: list[dict[str, Any]]) -> str:
+    """The canonical CSV; the speed column only where a row has a speed (quasi-static files stay as they were)."""
+    speeds = any(rec[SPEED_COLUMN] > 0 for rec in records)
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow(PULLOFF_COLUMNS)
+    writer.writerow([*PULLOFF_COLUMNS, SPEED_COLUMN][: 5 if speeds else 4])
     for rec in records:
         writer.writerow([repr(float(rec["frequency_hz"])), repr(float(rec["h1_um"])), repr(float(rec["pulloff_mN"])),
-                         str(rec["source"])])
+                         str(rec["source"]), repr(float(rec[SPEED_COLUMN]))][: 5 if speeds else 4])
     return buf.getvalue()
 
 
@@ -428,7 +440,8 @@ def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path
     """Validate both inputs (:func:`check_inputs`) and write their canonical copies atomically (:func:`main`).
 
     The canonical setup JSON keeps values, units and sources; the canonical pull-off CSV has no
-    comments, the columns frequency_hz, h1_um, pulloff_mN, source and floats written with repr.
+    comments, the columns frequency_hz, h1_um, pulloff_mN, source (withdrawal_speed_um_s where a row has a
+    speed) and floats written with repr.
     Raises :class:`DataError` (nothing written) on a bad input; returns a one-line summary.
     """
     setup, doc, records = check_inputs(setup_yaml, pulloff_csv)

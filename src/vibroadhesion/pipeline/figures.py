@@ -26,6 +26,7 @@ from matplotlib.figure import Figure  # noqa: E402
 from vibroadhesion.core.integrals import j_integrals_large_Abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
 from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
+from vibroadhesion.pipeline.data import SPEED_COLUMN  # noqa: E402
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
@@ -176,15 +177,18 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
 def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, frequencies: Sequence[float]) -> None:
     """Measured rows over P_JKR: one marker per source, the colour of the refined curve of their frequency.
 
-    Grey for a frequency without a curve or for a static test (h1 = 0).
+    Grey for a frequency without a curve or for a static test (h1 = 0). Rows measured at a withdrawal speed
+    (``withdrawal_speed_um_s`` > 0) are filled and labelled so: the quasi-static curves are not their model.
     """
     markers = "osD^v<>p"
-    for k, (source, by_source) in enumerate(measurements.groupby("source", sort=True)):
-        for f, rows in by_source.groupby("frequency_hz", sort=True):
+    moving = measurements[SPEED_COLUMN] > 0 if SPEED_COLUMN in measurements else False
+    for k, (source, by_source) in enumerate(measurements.assign(moving=moving).groupby("source", sort=True)):
+        for (f, at_speed), rows in by_source.groupby(["frequency_hz", "moving"], sort=True):
             known = [j for j, test in enumerate(frequencies) if np.isclose(test, f)]
-            where = "static, $h_1$ = 0" if f == 0 else f"{f:g} Hz"
-            ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)], mfc="none",
-                    color=f"C{known[0]}" if known else "0.4", label=f"{source}, {where}")
+            where = ("static, $h_1$ = 0" if f == 0 else f"{f:g} Hz") + (", withdrawn at V > 0" if at_speed else "")
+            color = f"C{known[0]}" if known else "0.4"
+            ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)],
+                    mfc=color if at_speed else "none", color=color, label=f"{source}, {where}")
 
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------

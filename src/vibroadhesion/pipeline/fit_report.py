@@ -172,11 +172,19 @@ def _refined_ratio(params: GentSchultzParameters, frequency_hz: float, h1_um: fl
 def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: str | Path) -> pd.DataFrame:
     """Per measured row: frequency, h1, source, measured and predicted pull-off (mN) per level that fitted.
 
+    A static JKR test has no frequency (NaN, shown "—", not 0); where a row has a withdrawal speed, the column
+    ``withdrawal_speed_um_s`` (NaN, "—", for a quasi-static row).
+
     Then the relative residual predicted/measured - 1 of :func:`reference_level`, the status of the simulation's
     virtual pull-off per row when the simulation was fitted (``contact_loss_*`` where the family lost contact before
     a pull-off), and the asymptotic levels' range at that level's fit (:func:`applicability`).
     """
-    table = rows[["line", "frequency_hz", "h1_um", "source", "pulloff_mN"]].set_index("line")
+    speeds = rows[data.SPEED_COLUMN] if data.SPEED_COLUMN in rows else pd.Series(0.0, index=rows.index)
+    table = rows[["line", "frequency_hz", "h1_um", "source", "pulloff_mN"]].assign(
+        frequency_hz=rows["frequency_hz"].where(rows["h1_um"] > 0))
+    if (speeds > 0).any():
+        table.insert(3, data.SPEED_COLUMN, speeds.where(speeds > 0))
+    table = table.set_index("line")
     reference = reference_level(fit)
     for name in ordered_levels(fit):
         predicted = predicted_mN(fit["fits"][name], rows)
@@ -193,7 +201,8 @@ def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: s
 
 def measured_vs_predicted_columns(table: pd.DataFrame) -> dict[str, Column]:
     """How :func:`measured_vs_predicted`'s columns read: the level's name (short: the table is wide) and mN."""
-    columns = {"pulloff_mN": Column("measured |P_cr|", "mN")}
+    columns = {"pulloff_mN": Column("measured |P_cr|", "mN"),
+               data.SPEED_COLUMN: Column("V, withdrawal speed", "µm/s")}
     for name in table.columns:
         kind, _, level = str(name).partition(":")
         if kind == "predicted_mN":
@@ -269,6 +278,21 @@ def range_sentence(table: pd.DataFrame) -> str:
     return (f"{outside} of {len(table)} rows lie outside the asymptotic levels' range ({limits}), marked in the plot "
             "and the table: there the cheaper levels' predictions are extrapolations, and only the full model (the "
             "simulation) applies.")
+
+
+def speed_sentence(table: pd.DataFrame) -> str:
+    """What the page says of rows measured at a withdrawal speed (:func:`measured_vs_predicted`); empty if none."""
+    if data.SPEED_COLUMN not in table:
+        return ""
+    count = int(table[data.SPEED_COLUMN].notna().sum())
+    return (f"{count} of {len(table)} rows were measured at a withdrawal speed V (`{data.SPEED_COLUMN}`; — in the "
+            "table: quasi-static). The full "
+            "model (the simulation) predicts each by the simulated withdrawal at that speed, read as the most tensile "
+            "one-period mean of the load-cell force: the reading whose V → 0 limit is the quasi-static pull-off the "
+            "other rows are fitted to. The asymptotic levels are quasi-static: they fit these rows as if V → 0, so "
+            "their residuals there include the effect of the speed (a faster withdrawal pulls harder). A speed row "
+            "without a prediction (—) is one whose withdrawal lost contact before its period-mean force passed an "
+            "extremum, or did not run to detachment (its row status), counted as zero force in the misfit.")
 
 
 def measured_rows(pulloff_csv: str | Path) -> pd.DataFrame:
