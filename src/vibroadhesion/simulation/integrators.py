@@ -112,7 +112,7 @@ class Period:
         self.kernel_constants = np.array([
             self.b0, v_scale, 1.0 / model.speed_scale, 1.0 / v_scale, model.base_offset, model.etahat, model.inv_n,
             model.log_cap, 1.0 if model.variational else 0.0, 1.0 if model.compliant else 0.0,
-            *self._spring_constants(), 0.0])  # no withdrawal ramp: a periodic problem
+            *self._spring_constants(), 0.0, *kernel.CONSTANT_EXCITATION])  # no withdrawal ramp: a periodic problem
         full_size = kernel.COMPLIANT_FULL_SIZE if model.compliant else kernel.FULL_SIZE
         self.core_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, self.dim)
         self.full_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, full_size)
