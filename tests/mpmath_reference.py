@@ -60,7 +60,8 @@ def j_integrals_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
         return +j0, +jc1, +j1
 
 
-def rate_dependent_jkr_pulloff_mp(base_offset: float, speed_group: float, n: float) -> tuple[mp.mpf, mp.mpf]:
+def rate_dependent_jkr_pulloff_mp(base_offset: float, speed_group: float, n: float,
+                                  start_radius: float | None = None) -> tuple[mp.mpf, mp.mpf]:
     """(most tensile force, base offset there) of a rigidly held JKR contact withdrawn at constant speed, h1 = 0.
 
     Derived here independently of the package. In the units a_o (radius), a_o^2/R (displacement)
@@ -69,12 +70,13 @@ def rate_dependent_jkr_pulloff_mp(base_offset: float, speed_group: float, n: flo
     |x|^n opening and 1/(1 + x^n) closing with x = (da/dt)/v0, gives x = -(Phi - 1)^(1/n) for Phi >= 1
     and (1/Phi - 1)^(1/n) below. A displacement ramp d = base_offset - T, T = V t R/a_o^2, makes
     da/dT = x a_o/(V/v0 R) = x/G with G = (V/v0)/c_o = ``speed_group``. From the static contact
-    (Phi = 1: a^2 - sqrt(a) = base_offset, a > 4^(-2/3)) the ODE is integrated with mpmath's Taylor
-    method (tol 1e-16 at 20 digits) and the force minimum located where dP/dT = 2 a'(d - a^2) - 2 a = 0.
+    (Phi = 1: a^2 - sqrt(a) = base_offset, a > 4^(-2/3)), or from a = ``start_radius`` if given, the ODE is
+    integrated with mpmath's Taylor method (tol 1e-16 at 20 digits) and the force minimum located where
+    dP/dT = 2 a'(d - a^2) - 2 a = 0.
     """
     with mp.workdps(20):
         d0, g, inv_n = mp.mpf(base_offset), mp.mpf(speed_group), 1 / mp.mpf(n)
-        a0 = mp.findroot(lambda a: a * a - mp.sqrt(a) - d0, mp.mpf(2))
+        a0 = mp.findroot(lambda a: a * a - mp.sqrt(a) - d0, mp.mpf(2)) if start_radius is None else mp.mpf(start_radius)
 
         def rate(t, a):
             phi = (a * a - (d0 - t)) ** 2 / a

@@ -21,6 +21,7 @@ from vibroadhesion import simulation as sim
 from vibroadhesion.core.groups import omega_check
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.simulation.excitation import ExcitationSchedule
 from vibroadhesion.simulation.withdrawal import ramp_rate, withdraw
 
 OMEGA_200HZ = float(omega_check(200.0, V0, RADIUS))
@@ -104,9 +105,11 @@ def test_speed_must_be_positive() -> None:
 def test_excitation_switched_off_is_the_rate_dependent_jkr_pulloff() -> None:
     # switched off from the start, a vibrating problem withdrawn from the static state is the h1 = 0 one
     vibrating = Problem(GentSchultz(N_PUBLISHED), CHI0, ETA1_20UM, 1e6, base_offset=0.5)
-    off = withdraw(vibrating, 0.5, initial_state=[sim.static_state(vibrating).abar_0], excitation_off_below=1.0)
+    start = [sim.static_state(vibrating).abar_0]
+    off = withdraw(vibrating, 0.5, initial_state=start, excitation=ExcitationSchedule.switched_off(0.0))
     force, _ = rate_dependent_jkr_pulloff_mp(0.5, 0.5 / vibrating.c_o, N_PUBLISHED)
     assert off.force == pytest.approx(float(force), rel=1e-8)
     # switched off once the base passed 0, the contact first vibrates: a different, more tensile history
-    later = withdraw(vibrating, 0.5, initial_state=[sim.static_state(vibrating).abar_0], excitation_off_below=0.0)
+    passed_zero = ExcitationSchedule.switched_off(0.5 / ramp_rate(vibrating, 0.5))
+    later = withdraw(vibrating, 0.5, initial_state=start, excitation=passed_zero)
     assert later.force < off.force

@@ -7,6 +7,7 @@ Modules, each importing only from those before it:
 * :mod:`~vibroadhesion.simulation.model`: the nondimensional model (derivation), the constants of a
   :class:`vibroadhesion.core.problem.Problem`, the contact kernel and the static state;
 * :mod:`~vibroadhesion.simulation.kernel`: the right-hand sides and DOP853 compiled with numba;
+* :mod:`~vibroadhesion.simulation.excitation`: the excitation switched on or off or ramped during a withdrawal;
 * :mod:`~vibroadhesion.simulation.integrators`: one period in scaled variables (right-hand sides,
   Jacobians) and the choice between the compiled DOP853, the Fortran DOP853 and
   :func:`scipy.integrate.solve_ivp`;

@@ -112,7 +112,7 @@ class Period:
         self.kernel_constants = np.array([
             self.b0, v_scale, 1.0 / model.speed_scale, 1.0 / v_scale, model.base_offset, model.etahat, model.inv_n,
             model.log_cap, 1.0 if model.variational else 0.0, 1.0 if model.compliant else 0.0,
-            *self._spring_constants(), 0.0])  # no withdrawal ramp: a periodic problem
+            *self._spring_constants(), 0.0, *kernel.CONSTANT_EXCITATION])  # no withdrawal ramp: a periodic problem
         full_size = kernel.COMPLIANT_FULL_SIZE if model.compliant else kernel.FULL_SIZE
         self.core_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, self.dim)
         self.full_rhs: RightHandSide = partial(compiled_rhs, self.kernel_constants, full_size)
@@ -482,22 +482,27 @@ def observed_v_scale(run: Run) -> float:
 
 
 def periodic_to_rounding(run: Run, integrators: Integrators) -> bool:
-    """Whether the run returns to its start to the accuracy of the integration.
+    """Whether the run returns to its start to the accuracy of the integration (Eqs. 3', 6').
 
-    Each scaled core component within _PERIODIC_RESIDUAL_FACTOR rtol of the scaled range, where
-    the abar component also passes when its drift is below the resolution of abar itself (a
-    contact that does not move: its scaled range is then meaningless).
+    Each scaled core component within _PERIODIC_RESIDUAL_FACTOR rtol of its own range
+    (:func:`scaled_core_ranges`: absolute for a component whose scaled range is O(1), relative to the
+    component's size where it is larger), where the abar component also passes when its drift is below the
+    resolution of abar itself (a contact that does not move: its scaled range is then meaningless).
     """
     period = run.period
     residual = np.abs(run.y_end[: period.dim] - np.array(period.core_start()))
-    tolerance = _PERIODIC_RESIDUAL_FACTOR * integrators.rtol * scaled_core_range(run)
+    tolerance = _PERIODIC_RESIDUAL_FACTOR * integrators.rtol * scaled_core_ranges(run)
     abar_drift = residual[-1] * period.v_scale / period.m.speed_scale
-    abar_ok = residual[-1] <= tolerance or abar_drift <= 4.0 * np.finfo(float).eps * float(period.start[-1])
-    return bool(abar_ok and np.all(residual[:-1] <= tolerance))
+    abar_ok = residual[-1] <= tolerance[-1] or abar_drift <= 4.0 * np.finfo(float).eps * float(period.start[-1])
+    return bool(abar_ok and np.all(residual[:-1] <= tolerance[:-1]))
 
 
-def scaled_core_range(run: Run) -> float:
-    """Largest magnitude of the scaled core over the accepted steps (O(1) when the scales fit)."""
-    return max(1.0, float(np.max(np.abs(run.cores))))
+def scaled_core_ranges(run: Run) -> Array:
+    """Largest magnitude of each scaled core component over the accepted steps, floored at 1 (Eqs. 3', 6').
 
-
+    DOP853 (rtol = atol) keeps the error of a component within ~rtol (1 + |y|): the sizes the periodicity
+    check and the noise of the fixed point scale their tolerances with, component by component, so that a
+    component whose scale is far off (a huge scaled range) cannot loosen the tolerance of the others. With
+    the scales fitted (S, V of :class:`Period`) every range is O(1) and the tolerances are absolute.
+    """
+    return np.asarray(np.maximum(1.0, np.max(np.abs(run.cores), axis=0)), dtype=float)

@@ -23,7 +23,13 @@ Constants of a period (:data:`CONSTANTS`, in this order): b0 = speed_scale abar(
 (c_o/kappa)/S, 1/omega_bar^2, 2 zeta omega_bar, c_o/kappa (integrators module, Eq. 3'), fhat/S (the force
 rig's drive, Eq. 13, model docstring); last the withdrawal ramp, d base_offset/d tau = -ramp (Eq. 11 with
 h0 = h0_start + V t: ramp = V R/(a_o^2 omega); 0 for a periodic steady state,
-:mod:`vibroadhesion.simulation.withdrawal`): deltabar = base_offset - ramp tau - etahat sin tau (+ xbar).
+:mod:`vibroadhesion.simulation.withdrawal`): deltabar = base_offset - ramp tau - etahat s(tau) sin tau (+ xbar);
+then the excitation schedule s(tau) (:mod:`vibroadhesion.simulation.excitation`) as s0, s1, tau_a, tau_b in the
+period's time: s = s0 before tau_a, s1 from tau_b on, linear in between; it scales the base amplitude etahat
+(Eq. 11) and the force rig's drive fhat (Eq. 13). The constant excitation s = 1 (:data:`CONSTANT_EXCITATION`)
+leaves every product etahat s, fhat s equal to etahat, fhat to the bit. :func:`integrate` splits its interval at
+tau_a and tau_b and gives each piece the level of its own side (s1 := s0 before tau_a, s0 := s1 from tau_b on), so
+that no step straddles a switch and the stages of a step that ends at one see their own side's level.
 """
 
 from __future__ import annotations
@@ -40,7 +46,13 @@ from vibroadhesion.simulation.model import Array, contact_kernel
 #: Names of the entries of the constants array of a period (module docstring).
 CONSTANTS = ("b0", "v_scale", "inv_speed_scale", "inv_v_scale", "base_offset", "etahat", "inv_n", "log_cap",
              "variational", "compliant", "x_scale", "scaled_force_offset", "scaled_compliance", "inv_omega_bar2",
-             "damping", "compliance", "scaled_force_drive", "ramp")
+             "damping", "compliance", "scaled_force_drive", "ramp", "excitation_s0", "excitation_s1",
+             "excitation_tau_a", "excitation_tau_b")
+#: Indices of the excitation schedule s0, s1, tau_a, tau_b (module docstring) in the constants.
+_S0, _S1, _TAU_A, _TAU_B = (CONSTANTS.index(name) for name in
+                            ("excitation_s0", "excitation_s1", "excitation_tau_a", "excitation_tau_b"))
+#: The schedule of a constant excitation, s = 1 (a periodic steady state): s0, s1, tau_a, tau_b.
+CONSTANT_EXCITATION = (1.0, 1.0, math.inf, math.inf)
 #: Components of the full rigid state: u, lambda and the quadratures u, u cos, u sin, sqrt(w/w0), Phat,
 #: Phat cos, Phat sin (integrators module).
 FULL_SIZE = 9
@@ -63,18 +75,50 @@ _SAFETY, _MIN_FACTOR, _MAX_FACTOR, _ERROR_EXPONENT = 0.9, 0.2, 10.0, -1.0 / 8.0
 compiled_contact_kernel = njit(cache=True)(contact_kernel)
 
 
+def _excitation_factor(tau: float, k: Array) -> float:
+    """s(tau) of the excitation schedule in the constants ``k`` (Eq. 11 with etahat s(tau); module docstring).
+
+    s0 before tau_a, s1 from tau_b on (right-continuous at a switch, tau_a = tau_b), linear in between.
+    """
+    if tau < k[_TAU_A]:
+        return float(k[_S0])
+    if tau >= k[_TAU_B]:
+        return float(k[_S1])
+    return float(k[_S0] + (k[_S1] - k[_S0]) * (tau - k[_TAU_A]) / (k[_TAU_B] - k[_TAU_A]))
+
+
+_compiled_excitation_factor = njit(cache=True)(_excitation_factor)
+
+
+def _excitation_factors(taus: Array, k: Array) -> Array:
+    """(s, ds/dtau) of the excitation schedule at each of ``taus`` (rows 0 and 1; Eq. 11 with etahat s(tau)).
+
+    ds/dtau = (s1 - s0)/(tau_b - tau_a) on [tau_a, tau_b), 0 elsewhere (a switch is a jump of s, not a rate).
+    """
+    out = np.zeros((2, taus.shape[0]))
+    for i in range(taus.shape[0]):
+        out[0, i] = _compiled_excitation_factor(taus[i], k)
+        if k[_TAU_A] <= taus[i] < k[_TAU_B]:
+            out[1, i] = (k[_S1] - k[_S0]) / (k[_TAU_B] - k[_TAU_A])
+    return out
+
+
+excitation_factors = njit(cache=True)(_excitation_factors)
+
+
 def _rigid_rates(tau: float, y: Array, out: Array, k: Array) -> None:
     """Rates of the scaled rigid state into ``out``: Eq. (6') for u; with 9 components lambda and the quadratures too.
 
     u' = x/V with x = f^{-1}(Phi(abar, deltabar)) (Eq. 6'), abar = (b0 + V u)/speed_scale and deltabar =
-    base_offset - ramp tau - etahat sin tau (Eq. 7); lambda' = (dx/dabar)/speed_scale (the variational equation
-    of the shooting module, 0 for n > 1); then u, u cos, u sin, sqrt(w/w0) (Eq. 5'), Phat (Eq. 4'),
+    base_offset - ramp tau - etahat s(tau) sin tau (Eqs. 7, 11'); lambda' = (dx/dabar)/speed_scale (the
+    variational equation of the shooting module, 0 for n > 1); then u, u cos, u sin, sqrt(w/w0) (Eq. 5'), Phat (Eq. 4'),
     Phat cos, Phat sin.
     """
     u = y[0]
     abar = (k[0] + k[1] * u) * k[2]
     s = math.sin(tau)
-    x, x_a, _, p, w = compiled_contact_kernel(abar, k[4] - k[17] * tau - k[5] * s, k[6], k[7])
+    d = k[4] - k[17] * tau - k[5] * _compiled_excitation_factor(tau, k) * s
+    x, x_a, _, p, w = compiled_contact_kernel(abar, d, k[6], k[7])
     out[0] = x * k[3]
     if out.shape[0] > 1:
         c = math.cos(tau)
@@ -89,18 +133,19 @@ _compiled_rigid_rates = njit(cache=True)(_rigid_rates)
 def _compliant_rates(tau: float, y: Array, out: Array, k: Array) -> None:
     """Rates of the scaled compliant state into ``out``: Eqs. (3'), (6'); with 22 components Psi and the quadratures.
 
-    xi' = eta, eta' = (mu/(kappa c_o^2) - (c_o/kappa) Phat - S xi - 2 zeta omega_bar S eta + fhat sin tau)
+    xi' = eta, eta' = (mu/(kappa c_o^2) - (c_o/kappa) Phat - S xi - 2 zeta omega_bar S eta + fhat s(tau) sin tau)
     / (omega_bar^2 S) (Eqs. 3', 13), u' = x/V (Eq. 6') with deltabar = S xi + base_offset - ramp tau
-    - etahat sin tau (Eqs. 7, 11'); then
+    - etahat s(tau) sin tau (Eqs. 7, 11'); then
     Psi' = J (I + Psi) with J = [[0, 1, 0], [j10, j11, j12], [j20, 0, j22]] (0 for n > 1, shooting
     module) and u, u cos, u sin, sqrt(w/w0), Phat, Phat cos, Phat sin, xi, xi cos, xi sin.
     """
     xi, eta, u = y[0], y[1], y[2]
     abar = (k[0] + k[1] * u) * k[2]
     s = math.sin(tau)
-    d = k[10] * xi + k[4] - k[17] * tau - k[5] * s
+    level = _compiled_excitation_factor(tau, k)
+    d = k[10] * xi + k[4] - k[17] * tau - k[5] * level * s
     x, x_a, x_d, p, w = compiled_contact_kernel(abar, d, k[6], k[7])
-    out[0], out[1], out[2] = eta, (k[11] - k[12] * p - xi - k[14] * eta + k[16] * s) * k[13], x * k[3]
+    out[0], out[1], out[2] = eta, (k[11] - k[12] * p - xi - k[14] * eta + k[16] * level * s) * k[13], x * k[3]
     if out.shape[0] == 3:
         return
     out[3:12] = 0.0
@@ -353,11 +398,32 @@ class KernelRun(NamedTuple):
     cores: Array  # (steps, core dimension): the core (u, or xi, eta, u) at those steps
 
 
+def _pieces(k: Array, tau0: float, tau1: float) -> list[tuple[float, float, Array]]:
+    """[tau0, tau1] split at the schedule's tau_a, tau_b, each piece with its side's constants (module docstring).
+
+    A constant schedule (s0 = s1) is one piece with the constants unchanged (Eq. 11 with etahat s(tau)).
+    """
+    if k[_S0] == k[_S1]:
+        return [(tau0, tau1, k)]
+    bounds = [tau0, *sorted({float(t) for t in (k[_TAU_A], k[_TAU_B]) if tau0 < t < tau1}), tau1]
+    pieces = []
+    for lo, hi in zip(bounds[:-1], bounds[1:], strict=True):
+        piece, middle = k.copy(), 0.5 * (lo + hi)
+        if middle < k[_TAU_A]:
+            piece[_S1] = k[_S0]
+        elif middle >= k[_TAU_B]:
+            piece[_S0] = k[_S1]
+        pieces.append((lo, hi, piece))
+    return pieces
+
+
 def integrate(constants: Array, y0: Array, tau0: float, tau1: float, rtol: float, max_steps: int,
               loss_abar: float) -> KernelRun:
     """Compiled DOP853 of a period (Eqs. 3', 6', with the full y0 the variational equations and quadratures).
 
-    From (tau0, y0) to tau1 with the period's ``constants`` (module docstring). ``y0`` is the core
+    From (tau0, y0) to tau1 with the period's ``constants`` (module docstring), piece by piece between the
+    excitation schedule's switches (:func:`_pieces`; one piece for a constant excitation), within ``max_steps``
+    accepted steps in all. ``y0`` is the core
     (1 or 3 components) or the full state (:data:`FULL_SIZE`, :data:`COMPLIANT_FULL_SIZE`); rtol is
     also the absolute tolerance (the state is scaled to O(1)). Integration failures are return
     codes, never exceptions.
@@ -365,6 +431,11 @@ def integrate(constants: Array, y0: Array, tau0: float, tau1: float, rtol: float
     k = np.asarray(constants, dtype=np.float64)
     y = np.array(y0, dtype=np.float64)
     taus, cores = np.empty(max_steps + 1), np.empty((max_steps + 1, 3 if k[9] > 0.0 else 1))
-    code, tau, steps = _compiled_dop853_loop(k, y, float(tau0), float(tau1), float(rtol), int(max_steps),
-                                             float(loss_abar), taus, cores)
+    code, tau, steps = REACHED, float(tau0), 0
+    for lo, hi, piece in _pieces(k, float(tau0), float(tau1)):
+        code, tau, taken = _compiled_dop853_loop(piece, y, lo, hi, float(rtol), int(max_steps) - steps,
+                                                 float(loss_abar), taus[steps:], cores[steps:])
+        steps += taken
+        if code != REACHED:
+            break
     return KernelRun(int(code), float(tau), y, taus[: steps + 1], cores[: steps + 1])

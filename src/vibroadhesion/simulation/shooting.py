@@ -23,8 +23,12 @@ Iteration. The Newton correction g = Psi^{-1} r is ~ z - z* near a simple fixed 
 where plain Newton would crawl (p > 1) or oscillate (p < 1); steps therefore solve B dz = -g with B
 a secant (Broyden) estimate of dg/dz started at the identity (plain Newton). The orbit is accepted
 when the step is below 1e-11 of the state, or below the uncertainty of the fixed point that an
-integration error of 10 rtol in r causes (|Psi^{-1}| 10 rtol), or when r itself is at rounding
-level (10 rtol, or a drift of abar below its resolution).
+integration error of 10 rtol in r causes (|Psi^{-1}| e, e_i = 10 rtol max(1, range_i)), or when r itself is
+at rounding level (10 rtol max(1, range_i), or a drift of abar below its resolution). Both tolerances go
+component by component with the scaled range of that component over the period (absolute, 10 rtol, for the
+O(1) components the fitted scales give; relative to the component's own size where it is larger): a tolerance
+that scaled with the largest component let an unconverged orbit through whenever one component was huge (a
+scale far off, as the force rig's first v scale before it included the drive), and now does not (tested).
 
 First period and starting guess. The experiment starts from the static state (Eq. 10). Its first
 period is integrated (core only, with LSODA, which switches to BDF: while the base compresses the
@@ -71,7 +75,7 @@ from vibroadhesion.simulation.integrators import (
     observed_v_scale,
     periodic_to_rounding,
     run_period,
-    scaled_core_range,
+    scaled_core_ranges,
     v_scale_estimate,
     x_scale,
 )
@@ -82,7 +86,7 @@ from vibroadhesion.simulation.orbits import MAX_ABAR, failure_record, frozen_sta
 _FD_STEP = 1e-5
 #: Newton: relative size of the last correction at which the orbit is accepted.
 _NEWTON_XTOL = 1e-11
-#: Global integration error of a period in units of rtol times the (scaled, O(1)) state: a
+#: Global integration error of a period in units of rtol times each component's scaled range: a
 #: Newton correction below the uncertainty it causes in the fixed point also ends the iteration.
 _GLOBAL_ERROR_FACTOR = 10.0
 
@@ -124,7 +128,7 @@ def _first_period(model: Model, start: Array, v_scale: float, integrators: Integ
         return run_period(period, integrators, full=False, transient=True)
     residual = np.abs(run.y_end[: period.dim] - np.array(period.core_start()))
     doubtful = (not math.isnan(run.lost_at) or period.abar(run.u_range[0]) < _LOSS_MARGIN * model.contact_loss_abar
-                or bool(np.any(residual <= _FIRST_PERIOD_MARGIN * looser.rtol * scaled_core_range(run))))
+                or bool(np.any(residual <= _FIRST_PERIOD_MARGIN * looser.rtol * scaled_core_ranges(run))))
     return run_period(period, integrators, full=False, transient=True) if doubtful else run
 
 
@@ -235,7 +239,7 @@ def _secant_step(model: Model, run: Run, integrators: Integrators, a: float, dri
         secant = (g - previous[1]) / (a - previous[0])
         g_slope = secant if secant > 0 else 1.0
     step = -g / g_slope
-    noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run) * run.period.v_scale
+    noise = (_GLOBAL_ERROR_FACTOR * integrators.rtol * float(scaled_core_ranges(run)[0]) * run.period.v_scale
              / (model.speed_scale * abs(slope) * g_slope))
     return step, noise, (a, g)
 
@@ -304,23 +308,23 @@ def _shoot_rigid(model: Model, start: Array, integrators: Integrators, max_itera
 
 # --- Compliant fixation: damped Newton–Broyden on the 3-D map ------------------------------------
 
-#: (g and the residual in absolute units, noise of g in scaled units, residual at rounding level).
-_Correction = tuple[Array, Array, float, bool]
+#: (g and the residual in absolute units, noise of each component of g in scaled units, residual at rounding level).
+_Correction = tuple[Array, Array, Array, bool]
 
 
 def _correction(model: Model, run: Run, integrators: Integrators) -> _Correction | None:
     """The Newton correction g = Psi^{-1} r of a compliant period (None where Psi is singular).
 
-    Returns g and the residual r in absolute units, the noise of g in scaled units (the
-    uncertainty that an integration error of 10 rtol in r causes) and whether r is at rounding level.
+    Returns g and the residual r in absolute units, the noise of each component of g in scaled units (the
+    uncertainty |Psi^{-1}| e that an integration error e_i = 10 rtol max(1, range_i) of each component of r
+    causes, :func:`vibroadhesion.simulation.integrators.scaled_core_ranges`) and whether r is at rounding level.
     """
     period = run.period
     residual = run.y_end[:3] - np.array(period.core_start())
     psi = _psi(run, integrators)
     try:
         g_scaled = np.linalg.solve(psi, residual)
-        noise = float(_GLOBAL_ERROR_FACTOR * integrators.rtol * scaled_core_range(run)
-                      * np.linalg.norm(np.linalg.inv(psi), np.inf))
+        noise = _GLOBAL_ERROR_FACTOR * integrators.rtol * (np.abs(np.linalg.inv(psi)) @ scaled_core_ranges(run))
     except np.linalg.LinAlgError:
         return None
     unscale = np.array([period.x_scale, period.x_scale, period.v_scale / model.speed_scale])
@@ -412,7 +416,7 @@ def _shoot_compliant(model: Model, start: Array, integrators: Integrators, max_i
         scales = np.array([run.period.x_scale, run.period.x_scale, max(v_scale / model.speed_scale, 1e-14 * z[2])])
         broyden, step = _broyden_step(broyden, z, g, previous, scales)
         converged = np.all(np.abs(step) <= _NEWTON_XTOL * np.array([scales[0], scales[1], z[2]]))
-        if converged or at_rounding or float(np.max(np.abs(step) / scales)) <= noise:
+        if converged or at_rounding or bool(np.all(np.abs(step) / scales <= noise)):
             relative = np.abs(residual) / np.array([scales[0], scales[1], z[2]])
             multipliers = 1.0 + np.linalg.eigvals(_psi(run, integrators))
             return summarise(model, run, integrators, multipliers, float(np.max(relative)), periods, speed_range)

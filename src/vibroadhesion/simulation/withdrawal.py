@@ -51,6 +51,7 @@ from scipy.optimize import brentq
 
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.simulation import kernel
+from vibroadhesion.simulation.excitation import CONSTANT_SCHEDULE, ExcitationSchedule
 from vibroadhesion.simulation.integrators import Period, v_scale_estimate, x_scale
 from vibroadhesion.simulation.model import TWO_PI, Array, Model, absolute_start
 
@@ -61,6 +62,7 @@ _RAMP = kernel.CONSTANTS.index("ramp")
 _OFFSET = kernel.CONSTANTS.index("base_offset")
 _ETAHAT = kernel.CONSTANTS.index("etahat")
 _VARIATIONAL = kernel.CONSTANTS.index("variational")
+_EXCITATION = slice(kernel.CONSTANTS.index("excitation_s0"), kernel.CONSTANTS.index("excitation_tau_b") + 1)
 #: Index of the quadrature of Phat (rigid) and of xi (compliant) in the full compiled state.
 _PHAT_QUADRATURE = 6
 _XI_QUADRATURE = 19
@@ -106,7 +108,8 @@ class _Best(NamedTuple):
 def _contact_state(period: Period, constants: Array, taus: Array, cores: Array) -> tuple[Array, Array]:
     """(abar, deltabar) of the rigid fixation at local times ``taus``: the scaled core's abar and Eq. (11')."""
     abar = (period.b0 + period.v_scale * cores[:, -1]) / period.m.speed_scale
-    return abar, constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * np.sin(taus)
+    level = kernel.excitation_factors(taus, constants)[0]  # s(tau) of the excitation schedule
+    return abar, constants[_OFFSET] - constants[_RAMP] * taus - constants[_ETAHAT] * level * np.sin(taus)
 
 
 def cell_forces(period: Period, constants: Array, taus: Array, cores: Array) -> Array:
@@ -125,14 +128,15 @@ def cell_force_rates(period: Period, constants: Array, taus: Array, cores: Array
     """dF/dtau of the load-cell force of :func:`cell_forces` (Eqs. 3', 4', 6', 11').
 
     Compliant: -xbar'/(c_o/kappa). Rigid: dPhat/dtau = 2 abar' deltabar + 2 abar deltabar' - 2 abar^2 abar' with
-    abar' = x/speed_scale (Eq. 6') and deltabar' = -ramp - etahat cos tau.
+    abar' = x/speed_scale (Eq. 6') and deltabar' = -ramp - etahat (s cos tau + s' sin tau) (s of the excitation).
     """
     m = period.m
     if m.compliant:
         return np.asarray(-cores[:, 1] * period.x_scale / m.compliance, dtype=float)
     abar, d = _contact_state(period, constants, taus, cores)
     a_rate = kernel.speeds(abar, d, m.inv_n, m.log_cap) / m.speed_scale
-    d_rate = -constants[_RAMP] - constants[_ETAHAT] * np.cos(taus)
+    level, level_rate = kernel.excitation_factors(taus, constants)
+    d_rate = -constants[_RAMP] - constants[_ETAHAT] * (level * np.cos(taus) + level_rate * np.sin(taus))
     return np.asarray(2.0 * a_rate * (d - abar * abar) + 2.0 * abar * d_rate, dtype=float)
 
 
@@ -219,13 +223,13 @@ class _Trace:
 
 def withdraw(problem: Problem, speed_ratio: float, *, initial_state: ArrayLike | None = None,
              max_periods: int = 100_000, rtol: float = 1e-11, contact_loss_abar: float = 1e-3,
-             excitation_off_below: float = -math.inf) -> Withdrawal:
+             excitation: ExcitationSchedule = CONSTANT_SCHEDULE) -> Withdrawal:
     """Withdraw the base of ``problem`` at V = ``speed_ratio`` v0 from its base offset to detachment (module docstring).
 
     Starts from ``initial_state`` (abar,) or (xbar, xbar', abar) at tau = 0 (the periodic steady state at
     ``problem.base_offset``, :func:`vibroadhesion.simulation.steady_state`), or from the static state.
-    ``excitation_off_below``: the excitation is switched off (etahat = 0 in Eq. 11) from the first period that
-    starts at a base offset below it, the Discussion's suggestion of a time-dependent excitation (default: never).
+    ``excitation``: the excitation amplitude etahat s(tau) switched on or off or ramped (Eq. 11), the Discussion's
+    suggestion of a time-dependent excitation (:mod:`vibroadhesion.simulation.excitation`; default: constant).
     """
     if not (math.isfinite(speed_ratio) and speed_ratio > 0):
         raise ValueError(f"speed_ratio must be positive, got {speed_ratio}")
@@ -239,8 +243,7 @@ def withdraw(problem: Problem, speed_ratio: float, *, initial_state: ArrayLike |
         constants = period.kernel_constants.copy()
         offset = problem.base_offset - ramp * TWO_PI * k  # Eq. (11') at the start of period k
         constants[_OFFSET], constants[_RAMP], constants[_VARIATIONAL] = offset, ramp, 0.0
-        if offset < excitation_off_below:
-            constants[_ETAHAT] = 0.0
+        constants[_EXCITATION] = excitation.kernel_constants(TWO_PI * k)
         run = kernel.integrate(constants, np.array(period.full_start()), 0.0, TWO_PI, rtol, _STEPS_PER_PERIOD,
                                contact_loss_abar)
         code = run.code
