@@ -25,8 +25,9 @@ from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.simulation import kernel
 from vibroadhesion.simulation.excitation import ExcitationSchedule
-from vibroadhesion.simulation.integrators import Period, v_scale_estimate
+from vibroadhesion.simulation.integrators import Period
 from vibroadhesion.simulation.model import Model
+from vibroadhesion.simulation.scales import v_scale_estimate
 from vibroadhesion.simulation.withdrawal import withdraw
 
 #: h1 = 20 um at omega_check = 1e6 preloaded at base_offset 4, withdrawn at V = 0.05 v0 (~4000 periods): far
@@ -116,7 +117,8 @@ def test_ramped_to_zero_before_the_pulloff_is_the_rate_dependent_jkr_pulloff(
     """s from 1 to 0 over the first two periods. The radius then lies within a0 +- 2A (it oscillates by 2A over a
     period and relaxes over ~1e4 radians), and from there on the h1 = 0 flow is order preserving with dP/da =
     2 (d - a^2) < 0: the pull-off lies between the mpmath pull-offs from a0 -+ 2A (measured 9e-11 from the one
-    from a0), widened by the integration error."""
+    from a0), widened by the integration error.
+    """
     a0, _ = vibrating_start
     ramp = withdraw(VIBRATING, SPEED, initial_state=[a0], excitation=ExcitationSchedule(1.0, 0.0, 0.0, 4 * math.pi))
     assert ramp.status == "pulloff" and ramp.tau > 4 * math.pi
@@ -138,7 +140,8 @@ def test_constant_schedule_is_todays_withdrawal_to_the_bit(vibrating_start: tupl
 
 def test_force_rig_drive_switched_off_is_the_unforced_withdrawal() -> None:
     """s scales the force rig's drive too (Eq. 13, fhat s(tau)): the forced problem switched off at tau = 0 is the
-    unforced one from the same start (its x scale differs, so to the integration error, 1e-8)."""
+    unforced one from the same start (its x scale differs, so to the integration error, 1e-8).
+    """
     fixation = Fixation.compliant(0.001, 0.01, NU0)
     omega_bar = OMEGA_BAR_200HZ
     drive = fixation.kappa * 20e-6 / RADIUS * abs(complex(1.0 - omega_bar**2, 2.0 * fixation.zeta * omega_bar))

@@ -23,8 +23,9 @@ from vibroadhesion.core.groups import omega_check
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.simulation import kernel, shooting
-from vibroadhesion.simulation.integrators import Integrators, Period, run_period, v_scale_estimate, x_scale
+from vibroadhesion.simulation.integrators import Integrators, Period, run_period
 from vibroadhesion.simulation.model import Model, absolute_start, contact_kernel
+from vibroadhesion.simulation.scales import v_scale_estimate, x_scale
 
 OMEGA_200HZ = float(omega_check(200.0, V0, RADIUS))
 SINES = np.sin(np.linspace(0.0, 2 * math.pi, 512, endpoint=False))

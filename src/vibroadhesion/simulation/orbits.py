@@ -43,10 +43,7 @@ from vibroadhesion.simulation.integrators import (
     Period,
     Run,
     integrate_core,
-    observed_v_scale,
     run_period,
-    v_scale_estimate,
-    x_scale,
 )
 from vibroadhesion.simulation.model import (
     SPEED_CAP,
@@ -55,6 +52,7 @@ from vibroadhesion.simulation.model import (
     Model,
     absolute_start,
 )
+from vibroadhesion.simulation.scales import observed_v_scale, v_scale_estimate, x_scale
 
 #: Floquet multipliers: complex, except that :func:`numpy.linalg.eigvals` returns them as real
 #: numbers when all of them are real (compliant fixation).

@@ -72,15 +72,17 @@ from vibroadhesion.simulation.integrators import (
     Integrators,
     Period,
     Run,
+    run_period,
+)
+from vibroadhesion.simulation.model import Array, Model, absolute_start
+from vibroadhesion.simulation.orbits import MAX_ABAR, failure_record, frozen_start, summarise
+from vibroadhesion.simulation.scales import (
     observed_v_scale,
     periodic_to_rounding,
-    run_period,
     scaled_core_ranges,
     v_scale_estimate,
     x_scale,
 )
-from vibroadhesion.simulation.model import Array, Model, absolute_start
-from vibroadhesion.simulation.orbits import MAX_ABAR, failure_record, frozen_start, summarise
 
 #: Central-difference step of the one-period map in the scaled coordinates (n > 1).
 _FD_STEP = 1e-5
@@ -317,7 +319,7 @@ def _correction(model: Model, run: Run, integrators: Integrators) -> _Correction
 
     Returns g and the residual r in absolute units, the noise of each component of g in scaled units (the
     uncertainty |Psi^{-1}| e that an integration error e_i = 10 rtol max(1, range_i) of each component of r
-    causes, :func:`vibroadhesion.simulation.integrators.scaled_core_ranges`) and whether r is at rounding level.
+    causes, :func:`vibroadhesion.simulation.scales.scaled_core_ranges`) and whether r is at rounding level.
     """
     period = run.period
     residual = run.y_end[:3] - np.array(period.core_start())

@@ -52,8 +52,9 @@ from scipy.optimize import brentq
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.simulation import kernel
 from vibroadhesion.simulation.excitation import CONSTANT_SCHEDULE, ExcitationSchedule
-from vibroadhesion.simulation.integrators import Period, v_scale_estimate, x_scale
+from vibroadhesion.simulation.integrators import Period
 from vibroadhesion.simulation.model import TWO_PI, Array, Model, absolute_start
+from vibroadhesion.simulation.scales import v_scale_estimate, x_scale
 
 WithdrawalStatus = Literal["pulloff", "detached_before_mean_extremum", "not_detached", "integration_failure"]
 
