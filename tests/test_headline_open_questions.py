@@ -16,12 +16,20 @@ from test_headline_numbers import check, read
 
 
 def test_equal_amplitude_rigs_agree(pipeline_results: Path) -> None:
-    """rig_equivalence.csv: largest relative difference of the force rig at F1 = k h1 |D| from the base rig."""
+    """rig_equivalence.csv: largest relative difference of the force rig at F1 = k h1 |D| from the base rig.
+
+    The simulated pull-off is the minimum of the family's mean force located by a bounded Brent search to 1e-4 of
+    the family's step (experiments/virtual_pulloff.py), so two independent searches differ in the second order of
+    that location tolerance; the steady states to the shooting's tolerance (10 rtol, rtol 1e-12, per component).
+    """
     table = read(pipeline_results, "rig_equivalence").set_index("level")
-    columns = ["max_rel_diff_w_eff_ratio", "max_rel_diff_pulloff_ratio", "max_rel_diff_delta_amplitude"]
-    leading, simulated = (table.loc[[level], columns].to_numpy().ravel() for level in ("leading", "simulation"))
-    check("(leading order: to {bound:3e-15}; SIMULATED steady states and virtual pull-offs: to {bound:3e-11},",
-          [leading, simulated[pd.notna(simulated)]])
+    states = ["max_rel_diff_w_eff_ratio", "max_rel_diff_delta_amplitude"]
+    columns = [*states, "max_rel_diff_pulloff_ratio"]
+    leading = table.loc[["leading"], columns].to_numpy().ravel()
+    simulated = table.loc[["simulation"], states].to_numpy().ravel()
+    pulloffs = table.loc[["simulation"], "max_rel_diff_pulloff_ratio"].to_numpy()
+    check("(leading order: to {bound:3e-15}; SIMULATED steady states: to {bound:3e-11}; SIMULATED virtual pull-offs: "
+          "to {bound:1e-9},", [leading, simulated[pd.notna(simulated)], pulloffs[pd.notna(pulloffs)]])
 
 
 def test_drive_of_the_force_rig(pipeline_results: Path) -> None:

@@ -48,6 +48,19 @@ def test_cramer_rao_errors_of_explicit_designs() -> None:
     assert static["v0_relative_se"] == pytest.approx(0.0025, rel=1e-14)
 
 
+@pytest.mark.parametrize("rows", [[[1.0, 2.0, 3.0], [1.0, 0.0, 0.0]],
+                                  [[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [1.0, 0.0, 0.0]],
+                                  [[1.2484315, 1.5098986, -0.4253193], [1.0, 0.0, 0.0]]],
+                         ids=["two-rows", "dependent-rows", "one-row-plus-static"])
+def test_rank_deficient_design_determines_no_parameter(rows: list[list[float]]) -> None:
+    """Two rows, or three of rank 2, cannot determine three parameters: infinite standard errors and NaN
+    correlations, with no warning (the last case is the 1 Hz row plus the static row, whose S^T S numpy inverts on
+    one CPU with a negative variance and refuses on another: the rank decides, not the inversion).
+    """
+    se, corr = identifiability.standard_errors(np.array(rows), 0.01)
+    assert np.all(np.isinf(se)) and np.all(np.isnan(corr))
+
+
 def _family_difference(name: str, frequency_hz: float, h1_um: float, step: float) -> float:
     """d ln P / d ln ``name`` by central differences of the virtual pull-off re-traced at ``name`` e^(+-step)."""
     forces = []

@@ -126,14 +126,16 @@ def frequency_derivative(simulated: pd.DataFrame, at_hz: float) -> pd.DataFrame:
 def standard_errors(sensitivity: np.ndarray, noise: float) -> tuple[np.ndarray, np.ndarray]:
     """Cramer-Rao standard errors of ln theta and the correlation matrix for relative scatter ``noise``.
 
-    A singular S^T S (fewer usable rows than parameters, or dependent ones) determines no parameter:
-    infinite standard errors and no correlations (NaN).
+    A rank-deficient S (fewer usable rows than parameters, or dependent ones) determines no parameter:
+    infinite standard errors and no correlations (NaN). The rank is decided on the singular values of S
+    (numpy's matrix_rank: those above sigma_max max(rows, columns) eps), not by whether inverting S^T S
+    happens to raise: in floating point a rank-2 S^T S of three parameters may be inverted, with a negative
+    variance, on one CPU and refused on another.
     """
-    try:
-        covariance = noise**2 * np.linalg.inv(sensitivity.T @ sensitivity)
-    except np.linalg.LinAlgError:
-        size = sensitivity.shape[1]
+    size = sensitivity.shape[1]
+    if sensitivity.shape[0] < size or np.linalg.matrix_rank(sensitivity) < size:
         return np.full(size, math.inf), np.full((size, size), math.nan)
+    covariance = noise**2 * np.linalg.inv(sensitivity.T @ sensitivity)
     se = np.sqrt(np.diag(covariance))
     return se, covariance / np.outer(se, se)
 
