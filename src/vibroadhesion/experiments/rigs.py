@@ -47,6 +47,8 @@ from vibroadhesion.numerics.progress import ProgressBar
 RIGS = ("base", "force_equivalent", "force_spring")
 #: The numbers of a row, NaN where the level has none or failed.
 NUMBERS = ("abar_m", "Abar", "w_eff_ratio", "A_over_am", "delta_amplitude", "pulloff_ratio")
+#: The status of the simulated row of a contact that is not forced (:func:`static_row`).
+STATIC = "static: the contact is not forced (Eq. B.3), the static state (Eq. 10) and the JKR pull-off (Eq. 71)"
 
 
 def drive(rig: str, eta1: float, fixation: Fixation, omega_check: float) -> tuple[float, float]:
@@ -91,27 +93,38 @@ def simulated_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: G
     """The SIMULATED steady state of ``rig`` at the nominal point contact and its virtual pull-off (Eqs. 3', 13).
 
     ``delta_amplitude`` is the modulus of the first harmonic of deltabar; the status joins the steady
-    state's and the pull-off's. Not simulated, with a status that says so: a rig without excitation (the
-    equal-amplitude force rig at the undamped anti-resonance, F1 = 0), and the pull-off of a rig whose
-    contact is not forced at any a_m (|force - eta1 d| = 0: the base rig there, Eq. B.3), whose family is
-    the static one (and whose undamped withdrawal the virtual pull-off does not finish in minutes).
+    state's and the pull-off's. A rig whose contact is not forced at any a_m (|force - eta1 d| = 0: the base rig
+    at the undamped anti-resonance, Eq. B.3, and the equal-amplitude force rig there, F1 = 0) has the forcing term
+    of Eq. (8) constant (Eq. 9 with c = 0, m omega^2 = k): :func:`static_row`.
     """
     base_eta1, force = drive(rig, eta1, fixation, omega_check)
-    row: dict[str, Any] = {"level": "simulation", **dict.fromkeys(NUMBERS, math.nan)}
-    if base_eta1 == 0 and force == 0:
-        return row | {"status": "not simulated: no excitation (F1 = 0)"}
     problem = Problem(law, chi0, base_eta1, omega_check, fixation, force_amplitude=force)
-    state = simulation.steady_state(problem)
     if fixation.indentation_response(1.0, chi0, omega_check, base_eta1, force) == 0:
-        row["status"] = f"{state.status}; pull-off not simulated: the contact is not forced (d = 0, Eq. B.3)"
-    else:
-        pulloff = simulated_pulloff(problem)
-        row |= {"status": f"{state.status}; pull-off {pulloff.status}", "pulloff_ratio": float(pulloff.pulloff_ratio)}
+        return static_row(problem)
+    row: dict[str, Any] = {"level": "simulation", **dict.fromkeys(NUMBERS, math.nan)}
+    state = simulation.steady_state(problem)
+    pulloff = simulated_pulloff(problem)
+    row |= {"status": f"{state.status}; pull-off {pulloff.status}", "pulloff_ratio": float(pulloff.pulloff_ratio)}
     if state.ok and state.orbit is not None:
         row |= {"abar_m": float(state.abar_m), "Abar": float(state.Abar), "w_eff_ratio": float(state.w_eff_ratio),
                 "A_over_am": float(state.A_over_am),
                 "delta_amplitude": math.hypot(state.orbit.deltabar_c, state.orbit.deltabar_s)}
     return row
+
+
+def static_row(problem: Problem) -> dict[str, Any]:
+    """The full model's steady state and pull-off of a contact that is not forced (Eqs. 8-10, A.4-A.7, 70, 71).
+
+    With the forcing term of Eq. (8) constant the static equilibrium of Eq. (10) (Appendix A,
+    :func:`vibroadhesion.simulation.static_state`) is the steady state: abar_m = a_0/a_o, no amplitude, w_eff = w0.
+    Withdrawn quasi-statically the contact passes through static JKR states (Eqs. A.4, A.5, w = w0), whose most
+    tensile force is P_cr^JKR (Eqs. 70, 71): pull-off ratio 1. Closed form, not shot (the shooting of an unforced
+    undamped contact is ill-conditioned: with F1 = 0 it ended in integration_failure after 4-18 s, and the virtual
+    pull-off of such a family, whose free oscillation never decays, did not finish in 100 s).
+    """
+    static = simulation.static_state(problem)
+    return {"level": "simulation", "status": STATIC, "abar_m": static.abar_0, "Abar": 0.0, "w_eff_ratio": 1.0,
+            "A_over_am": 0.0, "delta_amplitude": 0.0, "pulloff_ratio": 1.0}
 
 
 def rig_comparison(cases: Sequence[tuple[Fixation, Sequence[float]]], eta1: Sequence[float], chi0: float, n: float,
