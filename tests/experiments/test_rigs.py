@@ -97,6 +97,16 @@ def test_static_row_is_the_shot_steady_state_of_the_unforced_base_rig() -> None:
     assert float(shot.Abar) < 1e-12 and float(shot.w_eff_ratio) == pytest.approx(1.0, abs=1e-12)
 
 
+def test_a_known_base_pulloff_is_taken_not_traced(table: pd.DataFrame) -> None:
+    """base_pulloffs (the virtual pull-off job's rows in the pipeline) replace the base rig's traced pull-off only."""
+    spring = Fixation.compliant(1e-3, 0.01, NU0)
+    given = rig_comparison([(spring, [17.85])], [ETA1], CHI0, N_PUBLISHED, base_pulloffs={(17.85, ETA1): ("pulloff", 3.25)})
+    traced = table[table["zeta"] == 0.01].reset_index(drop=True)
+    base = int(np.flatnonzero((given["rig"] == "base") & (given["level"] == "simulation"))[0])
+    assert given.at[base, "pulloff_ratio"] == 3.25 and given.at[base, "status"] == traced.at[base, "status"]
+    pd.testing.assert_frame_equal(given.drop(index=base), traced.drop(index=base))
+
+
 def test_relative_difference_is_zero_where_both_vanish_and_nan_where_one_is_missing() -> None:
     a, b = pd.Series([0.0, 1.0, 2.0, math.nan]), pd.Series([0.0, 1.0, 1.0, 1.0])
     assert np.allclose(relative_difference(a, b), [0.0, 0.0, 0.5, math.nan], rtol=0, atol=0, equal_nan=True)

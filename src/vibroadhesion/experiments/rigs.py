@@ -27,7 +27,7 @@ virtual pull-off of :mod:`vibroadhesion.experiments.virtual_pulloff`). Failures 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -89,13 +89,15 @@ def leading_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: Gen
 
 
 def simulated_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz,
-                  omega_check: float) -> dict[str, Any]:
+                  omega_check: float, known: tuple[str, float] | None = None) -> dict[str, Any]:
     """The SIMULATED steady state of ``rig`` at the nominal point contact and its virtual pull-off (Eqs. 3', 13).
 
     ``delta_amplitude`` is the modulus of the first harmonic of deltabar; the status joins the steady
-    state's and the pull-off's. A rig whose contact is not forced at any a_m (|force - eta1 d| = 0: the base rig
-    at the undamped anti-resonance, Eq. B.3, and the equal-amplitude force rig there, F1 = 0) has the forcing term
-    of Eq. (8) constant (Eq. 9 with c = 0, m omega^2 = k): :func:`static_row`.
+    state's and the pull-off's. ``known`` = (status, P_cr/|P_JKR|) of this virtual pull-off where it was traced
+    already (the same family: :func:`rig_comparison`), which is then not traced again. A rig whose contact is not
+    forced at any a_m (|force - eta1 d| = 0: the base rig at the undamped anti-resonance, Eq. B.3, and the
+    equal-amplitude force rig there, F1 = 0) has the forcing term of Eq. (8) constant (Eq. 9 with c = 0,
+    m omega^2 = k): :func:`static_row`.
     """
     base_eta1, force = drive(rig, eta1, fixation, omega_check)
     problem = Problem(law, chi0, base_eta1, omega_check, fixation, force_amplitude=force)
@@ -103,8 +105,10 @@ def simulated_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: G
         return static_row(problem)
     row: dict[str, Any] = {"level": "simulation", **dict.fromkeys(NUMBERS, math.nan)}
     state = simulation.steady_state(problem)
-    pulloff = simulated_pulloff(problem)
-    row |= {"status": f"{state.status}; pull-off {pulloff.status}", "pulloff_ratio": float(pulloff.pulloff_ratio)}
+    if known is None:
+        pulloff = simulated_pulloff(problem)
+        known = (str(pulloff.status), float(pulloff.pulloff_ratio))
+    row |= {"status": f"{state.status}; pull-off {known[0]}", "pulloff_ratio": known[1]}
     if state.ok and state.orbit is not None:
         row |= {"abar_m": float(state.abar_m), "Abar": float(state.Abar), "w_eff_ratio": float(state.w_eff_ratio),
                 "A_over_am": float(state.A_over_am),
@@ -128,12 +132,16 @@ def static_row(problem: Problem) -> dict[str, Any]:
 
 
 def rig_comparison(cases: Sequence[tuple[Fixation, Sequence[float]]], eta1: Sequence[float], chi0: float, n: float,
-                   progress: ProgressBar | None = None) -> pd.DataFrame:
+                   progress: ProgressBar | None = None,
+                   base_pulloffs: Mapping[tuple[float, float], tuple[str, float]] | None = None) -> pd.DataFrame:
     """Rows (zeta, omega_bar, eta1, rig, level, drive) of the comparison (module docstring).
 
     ``cases``: (compliant fixation, its omega_bar values); omega_check = omega_bar/nu0 (Eqs. 97, 105).
     ``drive_ratio`` = F1/(k h1) of the force rigs (NaN for the base rig), ``force`` = F1/(E* R^2).
-    ``progress`` advances once per (omega_bar, eta1, rig).
+    ``progress`` advances once per (omega_bar, eta1, rig). ``base_pulloffs``: (omega_bar, eta1) -> (status,
+    P_cr/|P_JKR|) of the base rig's simulated virtual pull-off where it is known (the virtual pull-off of the
+    compliant fixation at the rig's test conditions, :mod:`vibroadhesion.experiments.virtual_pulloff`: the same
+    family), taken instead of tracing it again.
     """
     law, rows = GentSchultz(n), []
     for fixation, omega_bars in cases:
@@ -145,8 +153,9 @@ def rig_comparison(cases: Sequence[tuple[Fixation, Sequence[float]]], eta1: Sequ
                     key = {"kappa": fixation.kappa, "zeta": fixation.zeta, "omega_bar": omega_bar, "eta1": e,
                            "rig": rig, "force": force,
                            "drive_ratio": math.nan if rig == "base" else force / (fixation.kappa * e)}
+                    known = (base_pulloffs or {}).get((omega_bar, e)) if rig == "base" else None
                     rows += [key | leading_row(rig, e, fixation, chi0, law, omega_check),
-                             key | simulated_row(rig, e, fixation, chi0, law, omega_check)]
+                             key | simulated_row(rig, e, fixation, chi0, law, omega_check, known)]
                     if progress is not None:
                         progress.advance(1, f"omega_bar = {omega_bar:.4g}, eta1 = {e:.3g}, {rig}")
     return pd.DataFrame(rows)

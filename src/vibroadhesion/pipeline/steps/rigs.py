@@ -28,37 +28,47 @@ from vibroadhesion.pipeline.steps.inputs import rig, setup_fixations, setup_numb
 ANTI_RESONANCE = "antiresonance"
 
 
-def rigs_part(setup_json: str | Path, out: str | Path, cases: str) -> None:
+def rigs_part(setup_json: str | Path, virtual_csv: str | Path, out: str | Path, cases: str) -> None:
     """The comparison at the cases of one job: ``cases`` joined by "_", each a test frequency in Hz or ANTI_RESONANCE.
 
     Published parameters (the validation's); the rows of :func:`case_table` of each case (Figs. 1, 2; Eqs. 11, 13),
-    in the order given.
+    in the order given. ``virtual_csv``: the virtual pull-off of the compliant fixation at the published parameters
+    (results/simulation/published/virtual_pulloff_compliant.csv), whose simulated rows are the base rig's pull-offs
+    at the test frequencies (the same families: equal to 6e-14, the rounding of omega_check; not traced again).
     """
+    virtual = pd.read_csv(virtual_csv)
+    virtual = virtual[virtual["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
     setup, params, chi0 = rig(setup_json)
     (fixation,) = setup_fixations(setup, params["v0"], "compliant")
     omega0 = setup_number(setup, "fixation.natural_frequency")
     names = cases.split("_")
     progress = ProgressBar(sum(2 if c == ANTI_RESONANCE else 1 for c in names) * len(setup.amplitudes_um)
                            * len(rigs.RIGS), "rig points")
-    write_csv(pd.concat([case_table(case, setup, fixation, omega0, chi0, params["n"], progress) for case in names],
-                        ignore_index=True), out)
+    write_csv(pd.concat([case_table(case, setup, fixation, omega0, chi0, params["n"], progress, virtual)
+                         for case in names], ignore_index=True), out)
 
 
 def case_table(case: str, setup: Setup, fixation: Fixation, omega0: float, chi0: float, n: float,
-               progress: ProgressBar) -> pd.DataFrame:
+               progress: ProgressBar, virtual: pd.DataFrame) -> pd.DataFrame:
     """The comparison at one test frequency (``case`` in Hz) or at the anti-resonance (``case`` = ANTI_RESONANCE).
 
     Columns of :func:`vibroadhesion.experiments.rigs.rig_comparison` plus frequency_hz, h1_um, F1_N = force E* R^2
     (Eq. 13) and delta_amplitude_um = delta_amplitude a_o^2/R (Eq. 86); the anti-resonance omega = omega0 with the
-    configured damping and undamped (Appendix B).
+    configured damping and undamped (Appendix B). At a test frequency the base rig's pull-offs are ``virtual``'s
+    (simulated rows indexed by frequency_hz, h1_um).
     """
     frequency_hz = omega0 / (2.0 * math.pi) if case == ANTI_RESONANCE else float(case)
+    eta1 = [float(groups.eta1(h * 1e-6, setup.radius)) for h in setup.amplitudes_um]
+    known: dict[tuple[float, float], tuple[str, float]] = {}
     if case == ANTI_RESONANCE:
         cases = [(fixation, [1.0]), (replace(fixation, zeta=0.0), [1.0])]
     else:
-        cases = [(fixation, [2.0 * math.pi * frequency_hz / omega0])]
-    eta1 = [float(groups.eta1(h * 1e-6, setup.radius)) for h in setup.amplitudes_um]
-    table = rigs.rig_comparison(cases, eta1, chi0, n, progress)
+        omega_bar = 2.0 * math.pi * frequency_hz / omega0
+        cases = [(fixation, [omega_bar])]
+        known = {(omega_bar, e): (str(virtual.at[(frequency_hz, h), "status"]),
+                                  float(virtual.at[(frequency_hz, h), "pulloff_ratio"]))
+                 for e, h in zip(eta1, setup.amplitudes_um, strict=True)}
+    table = rigs.rig_comparison(cases, eta1, chi0, n, progress, known)
     c_o, radius = groups.contact_radius_ratio(chi0), setup.radius
     table.insert(0, "frequency_hz", frequency_hz)  # the configured frequency, not omega_bar omega0/2pi's rounding
     table.insert(4, "h1_um", table["eta1"] * radius * 1e6)
