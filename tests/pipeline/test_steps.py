@@ -118,7 +118,7 @@ def test_rigs_step_takes_the_base_rigs_pulloffs_from_the_virtual_pulloff_of_the_
     ingest(ROOT / "data/setup.yaml", ROOT / "data/pulloff.csv", setup_json, pulloff_csv)
     virtual, out = tmp_path / "virtual.csv", tmp_path / "200.csv"
     virtual_pulloff_part(setup_json, None, virtual, "compliant", [200.0])
-    rigs_part(setup_json, virtual, out, "200")
+    rigs_part(setup_json, [virtual], out, "200")
     simulated = pd.read_csv(virtual).query("model == 'simulation'")
     base = pd.read_csv(out).query("rig == 'base' and level == 'simulation'")
     assert base["pulloff_ratio"].tolist() == simulated["pulloff_ratio"].tolist()

@@ -10,8 +10,11 @@ rule rigs_part:
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
-        # The base rig's pull-offs at the test frequencies: the compliant virtual pull-off's (the same families).
-        virtual=expand(rules.virtual_pulloff_fixation.output[0], parameters="published", fixation="compliant"),
+        # The base rig's pull-offs at the test frequencies: the compliant virtual pull-off's (the same families), its
+        # parts (priority 10: ready early, so this job is too).
+        virtual=expand(
+            rules.virtual_pulloff.output[0], parameters="published", fixation="compliant", frequency=FREQUENCY_JOBS
+        ),
         code=code("rigs_part"),
     output:
         "results/validation/rigs/{case}.csv",

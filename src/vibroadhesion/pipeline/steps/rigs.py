@@ -28,15 +28,16 @@ from vibroadhesion.pipeline.steps.inputs import rig, setup_fixations, setup_numb
 ANTI_RESONANCE = "antiresonance"
 
 
-def rigs_part(setup_json: str | Path, virtual_csv: str | Path, out: str | Path, cases: str) -> None:
+def rigs_part(setup_json: str | Path, virtual_csvs: Sequence[str | Path], out: str | Path, cases: str) -> None:
     """The comparison at the cases of one job: ``cases`` joined by "_", each a test frequency in Hz or ANTI_RESONANCE.
 
     Published parameters (the validation's); the rows of :func:`case_table` of each case (Figs. 1, 2; Eqs. 11, 13),
-    in the order given. ``virtual_csv``: the virtual pull-off of the compliant fixation at the published parameters
-    (results/simulation/published/virtual_pulloff_compliant.csv), whose simulated rows are the base rig's pull-offs
-    at the test frequencies (the same families: equal to 6e-14, the rounding of omega_check; not traced again).
+    in the order given. ``virtual_csvs``: the virtual pull-off jobs' parts of the compliant fixation at the published
+    parameters (results/simulation/published/virtual_pulloff/compliant_*Hz.csv: ready early, their rule has the
+    pipeline's priority), whose simulated rows are the base rig's pull-offs at the test frequencies (the same
+    families: equal to 6e-14, the rounding of omega_check; not traced again).
     """
-    virtual = pd.read_csv(virtual_csv)
+    virtual = pd.concat([pd.read_csv(p) for p in virtual_csvs], ignore_index=True)
     virtual = virtual[virtual["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
     setup, params, chi0 = rig(setup_json)
     (fixation,) = setup_fixations(setup, params["v0"], "compliant")
