@@ -54,6 +54,15 @@ def test_force_rig_at_the_anti_resonance(pipeline_results: Path) -> None:
           [f1_mN, simulated.min(), simulated.max(), leading.min(), leading.max()])
 
 
+def test_unforced_contact_at_the_anti_resonance(pipeline_results: Path) -> None:
+    """The simulated rows of the base rig and the F1 = 0 force rig without damping: the static state's pull-off."""
+    table = read(pipeline_results, "rig_comparison")
+    unforced = table[table["rig"].isin(["base", "force_equivalent"]) & (table["zeta"] == 0.0)
+                     & (table["level"] == "simulation")]
+    assert len(unforced) == 10 and unforced["status"].str.startswith("static").all()
+    check("the static state (Eq. 10) and the JKR pull-off, ratio {1} (Eq. 71)", [unforced["pulloff_ratio"]])
+
+
 # ----------------------------------------------------------------- "Pull-off at a finite withdrawal speed"
 
 

@@ -4,7 +4,8 @@ References: the closed forms of the drives (F1 = k h1 |1 - omega_bar^2 + 2 i zet
 22, 65, 66), the identity of the base rig and the equal-amplitude force rig (their forcings of Eq. 20 differ by
 a shift of time only: equal to 1e-12 at leading order, 1e-9 in the simulation, as in tests/simulation/
 test_force_rig.py), and Appendix B's anti-resonance (the base rig's contact is not forced: w_eff = w0 exactly at
-leading order; the force rig at F1 = k h1 drives it: w_eff > w0 and the pull-off grows).
+leading order, and the simulated steady state is the static one of Eq. 10 to the shooting's tolerance; the force
+rig at F1 = k h1 drives it: w_eff > w0 and the pull-off grows).
 """
 
 from __future__ import annotations
@@ -16,8 +17,19 @@ import pandas as pd
 import pytest
 from conftest import CHI0, N_PUBLISHED, NU0, RADIUS
 
+from vibroadhesion import simulation
 from vibroadhesion.core.fixation import Fixation
-from vibroadhesion.experiments.rigs import RIGS, drive, equivalence_summary, relative_difference, rig_comparison
+from vibroadhesion.core.problem import Problem
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.experiments.rigs import (
+    RIGS,
+    STATIC,
+    drive,
+    equivalence_summary,
+    relative_difference,
+    rig_comparison,
+    static_row,
+)
 
 ETA1 = 20e-6 / RADIUS
 
@@ -52,21 +64,47 @@ def test_equal_amplitude_force_rig_is_the_base_rig(table: pd.DataFrame) -> None:
 
 
 def test_force_rig_drives_the_contact_at_the_base_rigs_anti_resonance(table: pd.DataFrame) -> None:
-    """Hard case (Appendix B): zeta = 0, omega_bar = 1. Base rig: w_eff = w0 and pull-off ratio 1 exactly (leading), the
-    simulated orbit has w_eff = w0 to 1e-9; the equal-amplitude force rig needs F1 = 0 (not simulated, said so);
-    the force rig at F1 = k h1 vibrates the contact: w_eff/w0 and the pull-off ratio above 1, simulated and leading
-    (their contact-displacement amplitudes agree as tests/simulation/test_force_rig.py states).
+    """Hard case (Appendix B): zeta = 0, omega_bar = 1. Base rig: w_eff = w0 and pull-off ratio 1 exactly (leading);
+    the equal-amplitude force rig needs F1 = 0; neither contact is forced, so the simulated rows are the static state
+    and the JKR pull-off (static_row, against the shooting in the next test); the force rig at F1 = k h1 vibrates the
+    contact: w_eff/w0 and the pull-off ratio above 1, simulated and leading (their contact-displacement amplitudes
+    agree as tests/simulation/test_force_rig.py states).
     """
     anti = table[table["zeta"] == 0.0]
     by = {(r.rig, r.level): r for r in anti.itertuples()}
     assert by["base", "leading"].w_eff_ratio == 1.0 and by["base", "leading"].pulloff_ratio == 1.0
-    assert by["base", "simulation"].w_eff_ratio == pytest.approx(1.0, abs=1e-9)
-    assert "not forced" in by["base", "simulation"].status and math.isnan(by["base", "simulation"].pulloff_ratio)
     assert by["force_equivalent", "leading"].drive_ratio == 0.0
-    assert by["force_equivalent", "simulation"].status.startswith("not simulated")
+    for rig in ("base", "force_equivalent"):
+        static = by[rig, "simulation"]
+        assert static.status == STATIC and static.pulloff_ratio == 1.0 and static.w_eff_ratio == 1.0
+        assert static.abar_m == pytest.approx(by[rig, "leading"].abar_m, rel=1e-9)
     leading, simulated = by["force_spring", "leading"], by["force_spring", "simulation"]
     assert simulated.w_eff_ratio > 1.0 and simulated.pulloff_ratio > 1.0
     assert leading.w_eff_ratio > 1.0 and leading.pulloff_ratio > 1.0
+    summary = equivalence_summary(table).set_index(["zeta", "level"])
+    assert (summary.loc[(0.0, "simulation")].drop("omega_bar") == 0.0).all()
+
+
+def test_static_row_is_the_shot_steady_state_of_the_unforced_base_rig() -> None:
+    """The base rig at the undamped anti-resonance, shot in time (the full model, Eq. 8 with the base moving): its
+    periodic state is static to rounding, at the static state's radius (Eq. 10, Appendix A) to 1e-9 (the shooting's
+    tolerance), so static_row's closed form is the simulation's answer.
+    """
+    undamped = Fixation.compliant(1e-3, 0.0, NU0)
+    problem = Problem(GentSchultz(N_PUBLISHED), CHI0, ETA1, 1.0 / NU0, undamped)
+    shot, static = simulation.steady_state(problem), static_row(problem)
+    assert shot.ok and float(shot.abar_m) == pytest.approx(static["abar_m"], rel=1e-9)
+    assert float(shot.Abar) < 1e-12 and float(shot.w_eff_ratio) == pytest.approx(1.0, abs=1e-12)
+
+
+def test_a_known_base_pulloff_is_taken_not_traced(table: pd.DataFrame) -> None:
+    """base_pulloffs (the virtual pull-off job's rows in the pipeline) replace the base rig's traced pull-off only."""
+    spring = Fixation.compliant(1e-3, 0.01, NU0)
+    given = rig_comparison([(spring, [17.85])], [ETA1], CHI0, N_PUBLISHED, base_pulloffs={(17.85, ETA1): ("pulloff", 3.25)})
+    traced = table[table["zeta"] == 0.01].reset_index(drop=True)
+    base = int(np.flatnonzero((given["rig"] == "base") & (given["level"] == "simulation"))[0])
+    assert given.at[base, "pulloff_ratio"] == 3.25 and given.at[base, "status"] == traced.at[base, "status"]
+    pd.testing.assert_frame_equal(given.drop(index=base), traced.drop(index=base))
 
 
 def test_relative_difference_is_zero_where_both_vanish_and_nan_where_one_is_missing() -> None:

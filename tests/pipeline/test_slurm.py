@@ -97,11 +97,11 @@ def test_the_small_rules_ran_on_the_submit_host(runs: dict[str, tuple[Path, str]
 
 
 def _is_part(path: Path) -> bool:
-    """Whether ``path`` is a simulation job's part file, named by its chunk of amplitudes or frequencies.
+    """Whether ``path`` is a simulation job's part file, named by its chunk of amplitudes, frequencies or rig cases.
 
     The profile sets the chunks: profiles/slurm/simulation.yaml one per job, workflow/config.yaml all in one.
     """
-    return path.parent.name in ("rigid", "virtual_pulloff")
+    return path.parent.name in ("rigid", "virtual_pulloff", "rigs")
 
 
 def test_the_artefacts_equal_those_of_a_local_run(runs: dict[str, tuple[Path, str]]) -> None:

@@ -24,6 +24,11 @@ from vibroadhesion.pipeline.steps.identifiability import rig_sensitivity, sensit
 from vibroadhesion.pipeline.steps.rigid import fig7_data
 from vibroadhesion.pipeline.steps.gather import concatenate
 from vibroadhesion.pipeline.steps.simulation import rigid_grid, rigid_part, virtual_pulloff_part
+from vibroadhesion.pipeline.steps.rigs import rigs_part
+from vibroadhesion.pipeline.steps.inputs import rig, setup_fixations, setup_number
+from vibroadhesion.experiments.rigs import simulated_row
+from vibroadhesion.core.ratelaw import GentSchultz
+from vibroadhesion.core.groups import eta1
 
 ROOT = Path(__file__).resolve().parents[2]
 AMPLITUDES = [25.5, 50.0, 150.0]
@@ -102,6 +107,28 @@ def test_sensitivity_and_design_steps_agree_with_the_virtual_pulloff_and_refuse_
     table.to_csv(virtual, index=False)
     with pytest.raises(ValueError, match="disagree at 200 Hz, h1 = 60 um"):
         rig_sensitivity(virtual, [part])
+
+
+
+def test_rigs_step_takes_the_base_rigs_pulloffs_from_the_virtual_pulloff_of_the_same_families(tmp_path: Path) -> None:
+    """Rule rigs_part at 200 Hz: the base rig's simulated pull-offs are the compliant virtual pull-off job's rows (the
+    same problems, taken, not traced again); traced by the rig comparison itself (h1 = 20 um) the family gives the
+    same force to 1e-12 (the two jobs form omega_check in a different order: 6e-14 was measured)."""
+    setup_json, pulloff_csv = tmp_path / "setup.json", tmp_path / "pulloff.csv"
+    ingest(ROOT / "data/setup.yaml", ROOT / "data/pulloff.csv", setup_json, pulloff_csv)
+    virtual, out = tmp_path / "virtual.csv", tmp_path / "200.csv"
+    virtual_pulloff_part(setup_json, None, virtual, "compliant", [200.0])
+    rigs_part(setup_json, [virtual], out, "200")
+    simulated = pd.read_csv(virtual).query("model == 'simulation'")
+    base = pd.read_csv(out).query("rig == 'base' and level == 'simulation'")
+    assert base["pulloff_ratio"].tolist() == simulated["pulloff_ratio"].tolist()
+    assert (base["status"] == "ok; pull-off " + simulated["status"].to_numpy()).all()
+    setup, params, chi0 = rig(setup_json)
+    (fixation,) = setup_fixations(setup, params["v0"], "compliant")
+    omega_bar = 2.0 * np.pi * 200.0 / setup_number(setup, "fixation.natural_frequency")
+    traced = simulated_row("base", float(eta1(20e-6, setup.radius)), fixation, chi0, GentSchultz(params["n"]),
+                           omega_bar / fixation.nu0)
+    assert traced["pulloff_ratio"] == pytest.approx(simulated["pulloff_ratio"].iloc[0], rel=1e-12, abs=0)
 
 
 

@@ -1,13 +1,20 @@
-# The base- and the force-excitation rigs compared (Figs. 1, 2; Eq. 13; Appendix B): one job per test frequency and
-# one at the fixation's anti-resonance omega0, gathered into one table, its summary and its figure.
+# The base- and the force-excitation rigs compared (Figs. 1, 2; Eq. 13; Appendix B): the test frequencies and the
+# fixation's anti-resonance omega0 (the cases), simulation_jobs.rig_cases_per_job of them per job (wildcard "200_300":
+# the cases joined by "_"), gathered into one table, its summary and its figure.
 RIG_CASES = FREQUENCIES + ["antiresonance"]
+RIG_CASE_JOBS = job_chunks(RIG_CASES, config["simulation_jobs"]["rig_cases_per_job"])
 
 
 rule rigs_part:
-    """Leading order and simulation of both rigs at one frequency, every amplitude (published parameters)."""
+    """Leading order and simulation of both rigs at the cases of one job, every amplitude (published parameters)."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
+        # The base rig's pull-offs at the test frequencies: the compliant virtual pull-off's (the same families), its
+        # parts (priority 10: ready early, so this job is too).
+        virtual=expand(
+            rules.virtual_pulloff.output[0], parameters="published", fixation="compliant", frequency=FREQUENCY_JOBS
+        ),
         code=code("rigs_part"),
     output:
         "results/validation/rigs/{case}.csv",
@@ -16,7 +23,7 @@ rule rigs_part:
     benchmark:
         "results/benchmarks/rules/rigs_part_{case}.tsv"
     wildcard_constraints:
-        case=r"antiresonance|[0-9.]+",
+        case=r"(antiresonance|[0-9.]+)(_(antiresonance|[0-9.]+))*",
     script:
         "../scripts/rigs_part.py"
 
@@ -24,7 +31,7 @@ rule rigs_part:
 rule rigs_gather:
     """Every case in results/validation/rig_comparison.csv, and the force rig's difference from the base rig."""
     input:
-        parts=expand(rules.rigs_part.output[0], case=RIG_CASES),
+        parts=expand(rules.rigs_part.output[0], case=RIG_CASE_JOBS),
         code=code("rigs_gather"),
     output:
         csv="results/validation/rig_comparison.csv",

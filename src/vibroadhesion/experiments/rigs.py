@@ -27,7 +27,7 @@ virtual pull-off of :mod:`vibroadhesion.experiments.virtual_pulloff`). Failures 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -47,6 +47,8 @@ from vibroadhesion.numerics.progress import ProgressBar
 RIGS = ("base", "force_equivalent", "force_spring")
 #: The numbers of a row, NaN where the level has none or failed.
 NUMBERS = ("abar_m", "Abar", "w_eff_ratio", "A_over_am", "delta_amplitude", "pulloff_ratio")
+#: The status of the simulated row of a contact that is not forced (:func:`static_row`).
+STATIC = "static: the contact is not forced (Eq. B.3), the static state (Eq. 10) and the JKR pull-off (Eq. 71)"
 
 
 def drive(rig: str, eta1: float, fixation: Fixation, omega_check: float) -> tuple[float, float]:
@@ -87,26 +89,26 @@ def leading_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: Gen
 
 
 def simulated_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz,
-                  omega_check: float) -> dict[str, Any]:
+                  omega_check: float, known: tuple[str, float] | None = None) -> dict[str, Any]:
     """The SIMULATED steady state of ``rig`` at the nominal point contact and its virtual pull-off (Eqs. 3', 13).
 
     ``delta_amplitude`` is the modulus of the first harmonic of deltabar; the status joins the steady
-    state's and the pull-off's. Not simulated, with a status that says so: a rig without excitation (the
-    equal-amplitude force rig at the undamped anti-resonance, F1 = 0), and the pull-off of a rig whose
-    contact is not forced at any a_m (|force - eta1 d| = 0: the base rig there, Eq. B.3), whose family is
-    the static one (and whose undamped withdrawal the virtual pull-off does not finish in minutes).
+    state's and the pull-off's. ``known`` = (status, P_cr/|P_JKR|) of this virtual pull-off where it was traced
+    already (the same family: :func:`rig_comparison`), which is then not traced again. A rig whose contact is not
+    forced at any a_m (|force - eta1 d| = 0: the base rig at the undamped anti-resonance, Eq. B.3, and the
+    equal-amplitude force rig there, F1 = 0) has the forcing term of Eq. (8) constant (Eq. 9 with c = 0,
+    m omega^2 = k): :func:`static_row`.
     """
     base_eta1, force = drive(rig, eta1, fixation, omega_check)
-    row: dict[str, Any] = {"level": "simulation", **dict.fromkeys(NUMBERS, math.nan)}
-    if base_eta1 == 0 and force == 0:
-        return row | {"status": "not simulated: no excitation (F1 = 0)"}
     problem = Problem(law, chi0, base_eta1, omega_check, fixation, force_amplitude=force)
-    state = simulation.steady_state(problem)
     if fixation.indentation_response(1.0, chi0, omega_check, base_eta1, force) == 0:
-        row["status"] = f"{state.status}; pull-off not simulated: the contact is not forced (d = 0, Eq. B.3)"
-    else:
+        return static_row(problem)
+    row: dict[str, Any] = {"level": "simulation", **dict.fromkeys(NUMBERS, math.nan)}
+    state = simulation.steady_state(problem)
+    if known is None:
         pulloff = simulated_pulloff(problem)
-        row |= {"status": f"{state.status}; pull-off {pulloff.status}", "pulloff_ratio": float(pulloff.pulloff_ratio)}
+        known = (str(pulloff.status), float(pulloff.pulloff_ratio))
+    row |= {"status": f"{state.status}; pull-off {known[0]}", "pulloff_ratio": known[1]}
     if state.ok and state.orbit is not None:
         row |= {"abar_m": float(state.abar_m), "Abar": float(state.Abar), "w_eff_ratio": float(state.w_eff_ratio),
                 "A_over_am": float(state.A_over_am),
@@ -114,13 +116,32 @@ def simulated_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: G
     return row
 
 
+def static_row(problem: Problem) -> dict[str, Any]:
+    """The full model's steady state and pull-off of a contact that is not forced (Eqs. 8-10, A.4-A.7, 70, 71).
+
+    With the forcing term of Eq. (8) constant the static equilibrium of Eq. (10) (Appendix A,
+    :func:`vibroadhesion.simulation.static_state`) is the steady state: abar_m = a_0/a_o, no amplitude, w_eff = w0.
+    Withdrawn quasi-statically the contact passes through static JKR states (Eqs. A.4, A.5, w = w0), whose most
+    tensile force is P_cr^JKR (Eqs. 70, 71): pull-off ratio 1. Closed form, not shot (the shooting of an unforced
+    undamped contact is ill-conditioned: with F1 = 0 it ended in integration_failure after 4-18 s, and the virtual
+    pull-off of such a family, whose free oscillation never decays, did not finish in 100 s).
+    """
+    static = simulation.static_state(problem)
+    return {"level": "simulation", "status": STATIC, "abar_m": static.abar_0, "Abar": 0.0, "w_eff_ratio": 1.0,
+            "A_over_am": 0.0, "delta_amplitude": 0.0, "pulloff_ratio": 1.0}
+
+
 def rig_comparison(cases: Sequence[tuple[Fixation, Sequence[float]]], eta1: Sequence[float], chi0: float, n: float,
-                   progress: ProgressBar | None = None) -> pd.DataFrame:
+                   progress: ProgressBar | None = None,
+                   base_pulloffs: Mapping[tuple[float, float], tuple[str, float]] | None = None) -> pd.DataFrame:
     """Rows (zeta, omega_bar, eta1, rig, level, drive) of the comparison (module docstring).
 
     ``cases``: (compliant fixation, its omega_bar values); omega_check = omega_bar/nu0 (Eqs. 97, 105).
     ``drive_ratio`` = F1/(k h1) of the force rigs (NaN for the base rig), ``force`` = F1/(E* R^2).
-    ``progress`` advances once per (omega_bar, eta1, rig).
+    ``progress`` advances once per (omega_bar, eta1, rig). ``base_pulloffs``: (omega_bar, eta1) -> (status,
+    P_cr/|P_JKR|) of the base rig's simulated virtual pull-off where it is known (the virtual pull-off of the
+    compliant fixation at the rig's test conditions, :mod:`vibroadhesion.experiments.virtual_pulloff`: the same
+    family), taken instead of tracing it again.
     """
     law, rows = GentSchultz(n), []
     for fixation, omega_bars in cases:
@@ -132,8 +153,9 @@ def rig_comparison(cases: Sequence[tuple[Fixation, Sequence[float]]], eta1: Sequ
                     key = {"kappa": fixation.kappa, "zeta": fixation.zeta, "omega_bar": omega_bar, "eta1": e,
                            "rig": rig, "force": force,
                            "drive_ratio": math.nan if rig == "base" else force / (fixation.kappa * e)}
+                    known = (base_pulloffs or {}).get((omega_bar, e)) if rig == "base" else None
                     rows += [key | leading_row(rig, e, fixation, chi0, law, omega_check),
-                             key | simulated_row(rig, e, fixation, chi0, law, omega_check)]
+                             key | simulated_row(rig, e, fixation, chi0, law, omega_check, known)]
                     if progress is not None:
                         progress.advance(1, f"omega_bar = {omega_bar:.4g}, eta1 = {e:.3g}, {rig}")
     return pd.DataFrame(rows)
