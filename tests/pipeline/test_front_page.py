@@ -13,7 +13,7 @@ import pytest
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.pages import findings_of, write_index
-from vibroadhesion.pipeline.steps.report import index_artefacts, refresh_findings
+from vibroadhesion.pipeline.front_page import index_artefacts, refresh_findings
 
 VIRTUAL = """fixation,kappa,zeta,frequency_hz,h1_um,model,status,pulloff_ratio,pulloff_mN,abar_m,abar_cr,steady_states
 rigid,,,200,20,simulation,pulloff,3.0,171.8,1.0,1.2,14

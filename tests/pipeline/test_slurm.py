@@ -22,8 +22,7 @@ from test_pipeline import SNAKEMAKE, _copy_repo, _planned_rules
 TARGETS = ["results/report/fig3.html", "results/fit/gent_schultz.json"]
 # The jobs of TARGETS that go to Slurm: the computing rules. The rest are local rules (the Snakefile's localrules,
 # the plot and report rules): inputs checked in milliseconds, a gather, matplotlib, papermill.
-SUBMITTED = {"simulation_kernels", "simulation_rigid", "fit_gent_schultz", "fig3_data", "fig5_data", "fig6_data",
-             "fig8_data"}
+SUBMITTED = {"simulation_kernels", "simulation_rigid", "fit_gent_schultz", "fig3_fig6_fig8_data", "fig5_data"}
 LOCAL = {"ingest_setup", "ingest_pulloff", "simulation_rigid_grid", "plot_steady_figures", "report_pages"}
 
 def _idle_node() -> str | None:

@@ -22,8 +22,8 @@ from vibroadhesion.pipeline.steps.fit import fit
 from vibroadhesion.pipeline.steps.plots import fig7_plot
 from vibroadhesion.pipeline.steps.identifiability import rig_sensitivity, sensitivity_part
 from vibroadhesion.pipeline.steps.rigid import fig7_data
-from vibroadhesion.pipeline.steps.gather import concatenate
-from vibroadhesion.pipeline.steps.simulation import rigid_grid, rigid_part, virtual_pulloff_part
+from vibroadhesion.pipeline.steps.gather import concatenate, rigid_grid
+from vibroadhesion.pipeline.steps.simulation import rigid_part, virtual_pulloff_part
 from vibroadhesion.pipeline.steps.rigs import rigs_part
 from vibroadhesion.pipeline.steps.inputs import rig, setup_fixations, setup_number
 from vibroadhesion.experiments.rigs import simulated_row

@@ -35,10 +35,19 @@ AMPLITUDE_JOBS = job_chunks(AMPLITUDES, config["simulation_jobs"]["amplitudes_pe
 FREQUENCY_JOBS = job_chunks(FREQUENCIES, config["simulation_jobs"]["frequencies_per_job"])
 
 
+def figure_tables(figs):
+    """The CSV tables of ``figs`` (results/<fig>/<fig>.csv), named by figure, in Snakemake's report (the
+    figures' compute rules)."""
+    return {
+        fig: report(f"results/{fig}/{fig}.csv", caption="../report/table.rst", category="Figures", subcategory="Tables")
+        for fig in figs
+    }
+
+
 def plot_inputs(figs):
-    """The tables of ``figs`` and what their plots read besides (PLOT_EXTRAS of figures.smk; Fig. 7 reads Fig. 4's
-    table too)."""
-    tables = {fig: getattr(rules, f"{fig}_data").output[0] for fig in figs}
+    """The tables of ``figs`` and what their plots read besides (FIGURE_TABLE and PLOT_EXTRAS of figures.smk; Fig. 7
+    reads Fig. 4's table too)."""
+    tables = {fig: FIGURE_TABLE[fig] for fig in figs}
     return {**tables, **{k: v for fig in figs for k, v in PLOT_EXTRAS[fig].items()}}
 
 
@@ -71,9 +80,10 @@ def parameter_inputs(wildcards):
 
 def refresh_report():
     """The Snakefile's onsuccess and onerror: the indexes' findings read again from the artefacts the run left
-    (pipeline.steps.report.refresh_findings, imported here: the numerics stack only once the jobs are done), then the
-    pages missing or older than an artefact they show marked on them (pipeline.pages.refresh_indexes) and printed."""
-    from vibroadhesion.pipeline.steps.report import refresh_findings
+    (pipeline.front_page.refresh_findings, imported here: pandas and the refined model only once the jobs are done,
+    not nbconvert or a kernel's client), then the pages missing or older than an artefact they show marked on them
+    (pipeline.pages.refresh_indexes) and printed."""
+    from vibroadhesion.pipeline.front_page import refresh_findings
 
     refresh_findings(
         {

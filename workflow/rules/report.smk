@@ -2,18 +2,18 @@
 from vibroadhesion.pipeline.pages import REPORT_JOBS
 
 # The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
-TIMED_RULES = ["fit_gent_schultz", "fig3_data", "fig4_data", "fig5_data", "fig6_data", "fig7_data", "fig8_data"]
+TIMED_RULES = ["fit_gent_schultz", "fig3_fig6_fig8_data", "fig4_fig7_data", "fig5_data"]
 
 
 FIT_JSON, SETUP_JSON = FITTED["fit"], PUBLISHED["setup"]
 PAGE_INPUTS = {
     "fig3": {
-        "fig_csv": rules.fig3_data.output[0],
+        "fig_csv": FIGURE_TABLE["fig3"],
         "fig_png": getattr(rules, PLOT_RULE["fig3"]).output.fig3_png,
         "setup_json": SETUP_JSON,
     },
     "fig4": {
-        "fig_csv": rules.fig4_data.output[0],
+        "fig_csv": FIGURE_TABLE["fig4"],
         "fig_png": getattr(rules, PLOT_RULE["fig4"]).output.fig4_png,
         "fit_json": FIT_JSON,
         "setup_json": SETUP_JSON,
@@ -29,7 +29,7 @@ PAGE_INPUTS = {
     },
     **{
         fig: {
-            "fig_csv": getattr(rules, f"{fig}_data").output[0],
+            "fig_csv": FIGURE_TABLE[fig],
             "fig_png": getattr(getattr(rules, PLOT_RULE[fig]).output, f"{fig}_png"),
             "setup_json": SETUP_JSON,
             **({"fit_json": FIT_JSON} if fig == "fig7" else {}),

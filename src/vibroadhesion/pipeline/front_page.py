@@ -17,6 +17,7 @@ import pandas as pd
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import fit_report
+from vibroadhesion.pipeline.pages import findings_of, write_index
 from vibroadhesion.pipeline.tables import Column, show, significant
 
 #: The validation's error summary: read when present (the default target does not build it and must not wait).
@@ -101,7 +102,7 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
 
     ``artefacts`` are the papermill parameters of the index's pages (``fit_json``, ``virtual_csv``); the validity
     comes from ``validation_summary`` when it exists (the Snakefile's onsuccess reads it again at the end of a run:
-    :func:`vibroadhesion.pipeline.steps.report.refresh_findings`).
+    :func:`refresh_findings`).
     """
     parts = [f"<p>Built from {html.escape(build())}.</p>"]
     if "fit_json" in artefacts:
@@ -135,3 +136,36 @@ def _validity_part(summary_csv: Path) -> str:
             f"of the full model. The most accurate level at the test frequencies, {html.escape(best['level'])}, errs "
             f"by up to {significant(100 * best['max_error_experiments_applicable'], 2)} %.</p>"
             + _table(table, VALIDITY_COLUMNS))
+
+
+def refresh_findings(indexes: Mapping[str, Mapping[str, Mapping[str, str]]]) -> list[str]:
+    """After every run (the Snakefile's onsuccess and onerror): rewrite the findings of each index that exists.
+
+    ``indexes`` maps each index file to the papermill parameters of its pages (as :func:`render`). The job that
+    writes an index may run before the artefacts of another target it reports on (the validity, built by the
+    ``validation`` target in the same run); read again at the end, the findings show what the run left. An index
+    whose artefacts are not all there (a run that stopped midway) keeps its findings: its stale marks say why. Each
+    index is rewritten only when its findings change; returns the indexes rewritten.
+    """
+    rewritten = []
+    for index, parameters in indexes.items():
+        artefacts = index_artefacts(parameters)
+        if not Path(index).exists() or not all(Path(path).exists() for path in artefacts.values()):
+            continue
+        text = findings(artefacts)
+        if text != findings_of(index):
+            write_index(index, findings=text)
+            rewritten.append(index)
+    return rewritten
+
+
+def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
+    """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
+
+    The validation page comes first among its index's pages, so its ``virtual_csv`` (every fixation) is the one read.
+    """
+    artefacts: dict[str, str] = {}
+    for values in parameters.values():
+        for name, path in values.items():
+            artefacts.setdefault(name, path)
+    return artefacts

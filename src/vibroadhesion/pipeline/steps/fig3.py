@@ -1,4 +1,7 @@
-"""Step of rule ``fig3_data``: the J-integrals (Eqs. 28, 29, 36) for the figure's n and the panel exponents."""
+"""Fig. 3's table: the J-integrals (Eqs. 28, 29, 36) for the figure's n and the panel exponents.
+
+Run by rule ``fig3_fig6_fig8_data`` (:mod:`vibroadhesion.pipeline.steps.fig3_fig6_fig8`).
+"""
 
 from __future__ import annotations
 

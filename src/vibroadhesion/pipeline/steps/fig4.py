@@ -1,4 +1,7 @@
-"""Step of rule ``fig4_data``: pull-off amplification, leading order (Eqs. 71-72) and refined (Eq. 106)."""
+"""Fig. 4's table: pull-off amplification, leading order (Eqs. 71-72) and refined (Eq. 106).
+
+Run by rule ``fig4_fig7_data`` (:mod:`vibroadhesion.pipeline.steps.fig4_fig7`).
+"""
 
 from __future__ import annotations
 

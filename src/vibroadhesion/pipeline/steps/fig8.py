@@ -1,4 +1,7 @@
-"""Step of rule ``fig8_data``: dynamic contact stiffness (Eqs. 117-121) along the Fig. 6 solution."""
+"""Fig. 8's table: dynamic contact stiffness (Eqs. 117-121) along the Fig. 6 solution.
+
+Run by rule ``fig3_fig6_fig8_data`` (:mod:`vibroadhesion.pipeline.steps.fig3_fig6_fig8`).
+"""
 
 from __future__ import annotations
 

@@ -21,9 +21,8 @@ import nbformat
 import papermill
 from jupyter_client.manager import KernelManager
 
-from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.atomic import atomic_path
-from vibroadhesion.pipeline.pages import findings_of, page_title_and_index, write_index
+from vibroadhesion.pipeline.pages import page_title_and_index, write_index
 
 #: The tag (and, here, the cell id) of the cell in which papermill injects a page's parameters.
 INJECTED = "injected-parameters"
@@ -73,7 +72,7 @@ def reset_namespace(manager: KernelManager, timeout: float = 60.0) -> None:
         raise RuntimeError(f"kernel reset failed: {reply['content'].get('evalue', reply['content']['status'])}")
 
 
-def render_page(page: Page, manager: KernelManager) -> None:
+def render_page(page: Page, manager: KernelManager, exporter: nbconvert.HTMLExporter | None = None) -> None:
     """Execute ``page.notebook`` in the kernel of ``manager`` and write the executed notebook and its HTML page.
 
     The page shows the outputs only (text, tables, figures): the code stays in the notebook, which remains the
@@ -83,6 +82,7 @@ def render_page(page: Page, manager: KernelManager) -> None:
     whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page. The
     page carries its title (:data:`~vibroadhesion.pipeline.pages.PAGES`) and a link back to its index, and loads
     nothing from the network (template ``offline``: no MathJax, no require.js; the pages have no math or widgets).
+    ``exporter`` (:func:`html_exporter`) may be shared by the pages of a job: its templates load once.
     """
     with atomic_path(page.executed) as tmp:
         nb = papermill.execute_notebook(str(page.notebook), str(tmp), parameters=dict(page.parameters),
@@ -92,11 +92,16 @@ def render_page(page: Page, manager: KernelManager) -> None:
                 cell.id = INJECTED
         nbformat.write(nb, tmp)
     title, index = page_title_and_index(page.notebook.stem)
-    exporter = nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True,
-                                      template_name="offline", extra_template_basedirs=[str(TEMPLATES)])
-    body, _ = exporter.from_notebook_node(nb, resources={"metadata": {"name": f"Vibroadhesion: {title}"}})
+    resources = {"metadata": {"name": f"Vibroadhesion: {title}"}}
+    body, _ = (exporter or html_exporter()).from_notebook_node(nb, resources=resources)
     with atomic_path(page.html) as tmp:
         tmp.write_text(with_index_link(body, index), encoding="utf-8")
+
+
+def html_exporter() -> nbconvert.HTMLExporter:
+    """The exporter of the pages: outputs only, template ``offline``."""
+    return nbconvert.HTMLExporter(exclude_input=True, exclude_input_prompt=True, exclude_output_prompt=True,
+                                  template_name="offline", extra_template_basedirs=[str(TEMPLATES)])
 
 
 def with_index_link(body: str, index: str) -> str:
@@ -117,42 +122,13 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
         raise ValueError(f"{len(parameters)} pages, {len(executed)} executed notebooks, {len(html)} HTML pages")
     pages = [Page(Path(f"notebooks/{stem}.ipynb"), Path(nb), Path(page), values)
              for (stem, values), nb, page in zip(parameters.items(), executed, html, strict=True)]
+    exporter = html_exporter()
     with shared_kernel() as manager:
         for page in pages:
             reset_namespace(manager)
-            render_page(page, manager)
-    for index in indexes:
-        write_index(index, findings=front_page.findings(index_artefacts(parameters)))
+            render_page(page, manager, exporter)
+    if indexes:  # the findings' imports (pandas, the refined model) only in the job that writes an index
+        from vibroadhesion.pipeline.front_page import findings, index_artefacts
 
-
-def refresh_findings(indexes: Mapping[str, Mapping[str, Mapping[str, str]]]) -> list[str]:
-    """After every run (the Snakefile's onsuccess and onerror): rewrite the findings of each index that exists.
-
-    ``indexes`` maps each index file to the papermill parameters of its pages (as :func:`render`). The job that
-    writes an index may run before the artefacts of another target it reports on (the validity, built by the
-    ``validation`` target in the same run); read again at the end, the findings show what the run left. An index
-    whose artefacts are not all there (a run that stopped midway) keeps its findings: its stale marks say why. Each
-    index is rewritten only when its findings change; returns the indexes rewritten.
-    """
-    rewritten = []
-    for index, parameters in indexes.items():
-        artefacts = index_artefacts(parameters)
-        if not Path(index).exists() or not all(Path(path).exists() for path in artefacts.values()):
-            continue
-        text = front_page.findings(artefacts)
-        if text != findings_of(index):
-            write_index(index, findings=text)
-            rewritten.append(index)
-    return rewritten
-
-
-def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
-    """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
-
-    The validation page comes first among its index's pages, so its ``virtual_csv`` (every fixation) is the one read.
-    """
-    artefacts: dict[str, str] = {}
-    for values in parameters.values():
-        for name, path in values.items():
-            artefacts.setdefault(name, path)
-    return artefacts
+        for index in indexes:
+            write_index(index, findings=findings(index_artefacts(parameters)))

@@ -1,4 +1,7 @@
-"""Steps of rules ``fig6_data`` and ``fig7_data``: rigidly fixed indenter, refined model (Secs. 3.5.4, 3.6)."""
+"""Figs. 6 and 7's tables: rigidly fixed indenter, refined model (Secs. 3.5.4, 3.6).
+
+Run by rules ``fig3_fig6_fig8_data`` and ``fig4_fig7_data``.
+"""
 
 from __future__ import annotations
 

@@ -40,12 +40,6 @@ def rigid_part(setup_json: str | Path, fit_json: str | Path | None, out: str | P
     write_csv(pd.DataFrame(rows)[validation.RIGID_GRID_COLUMNS], out)
 
 
-def rigid_grid(parts: Sequence[str | Path], out: str | Path) -> None:
-    """results/simulation/rigid_grid.csv: every amplitude's rows, sorted by (h1, omega_check)."""
-    grid = pd.concat([pd.read_csv(p) for p in parts], ignore_index=True)
-    write_csv(grid.sort_values(["h1_um", "omega_check"], kind="stable").reset_index(drop=True), out)
-
-
 def virtual_pulloff_part(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, fixation: FixationCase,
                          frequencies_hz: Sequence[float]) -> None:
     """The simulated pull-off (Sec. 3.4, Eqs. 70-72) at the test frequencies of one job, with the predictions.

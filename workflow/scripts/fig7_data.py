@@ -1,8 +1,0 @@
-"""Rule fig7_data: vibroadhesion.pipeline.steps.rigid.fig7_data."""
-
-from vibroadhesion.pipeline.steps import logged
-from vibroadhesion.pipeline.steps.rigid import fig7_data
-
-p = snakemake.params
-with logged(snakemake.log[0], snakemake.rule):
-    fig7_data(snakemake.input.setup, snakemake.input.fit, snakemake.output[0], p.lo, p.hi, p.points)
