@@ -72,8 +72,9 @@ def test_h1_zero_is_the_rate_dependent_jkr_pulloff(speed_ratio: float) -> None:
     run = withdraw_slowly(problem, speed_ratio)
     force, offset = rate_dependent_jkr_pulloff_mp(0.5, speed_ratio / problem.c_o, N_PUBLISHED)
     assert run.status == "pulloff"
-    # LSODA at rtol 1e-8 over a few hundred steps: measured 1e-9; mpmath's at tol 1e-16
-    assert run.mean_force == pytest.approx(float(force), rel=1e-7)
+    # LSODA at rtol 1e-8: measured 2.5e-8 (V = 0.05 v0) and 8.0e-8 (0.5 v0), its global error of ~10 rtol;
+    # mpmath's at tol 1e-16
+    assert run.mean_force == pytest.approx(float(force), rel=5e-7)
     assert run.force == run.mean_force  # no vibration: the peak is the mean
     assert run.mean_base_offset == pytest.approx(float(offset), abs=1e-3)  # sqrt of the force's error
 
@@ -92,7 +93,7 @@ def test_integration_error_against_a_tighter_run() -> None:
     for h1, speed in ((20.0, 0.1), (100.0, 1.0)):
         run, tight = withdraw_slowly(_preloaded(h1), speed), withdraw_slowly(_preloaded(h1), speed, rtol=1e-10)
         assert run.status == tight.status == "pulloff"
-        # measured <= 1e-9 relative (20 and 100 um, V = 1e-3 to 1 v0)
+        # measured 8e-11 (20 um, 0.1 v0) and 2e-10 (100 um, v0); 1.3e-8 at worst over 20-100 um, 1e-3 to 1 v0
         assert run.mean_force == pytest.approx(tight.mean_force, rel=1e-7)
         assert run.force == pytest.approx(tight.force, rel=1e-7)
 
