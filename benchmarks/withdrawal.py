@@ -8,8 +8,14 @@ steady state at the start (``simulation.steady_state``) and of the withdrawal (m
 the periods and steps integrated, the pull-off (peak and period-mean load-cell force over |P_JKR|) and the
 relative change of both when rtol goes from the default 1e-11 to 1e-13. The compiled kernel is warmed up
 first (numba's on-disk cache; a cold process pays the compilation once).
+
+Then the averaged slow flow (vibroadhesion.models.slow_flow, rigid only) against the time domain at the same V
+(200 Hz, h1 = 20 um, rigid, V = 0.1, 0.3, 1 v0): time per pull-off (min and median of REPEATS; the time domain's
+from its start state, which the slow flow does not need), periods (integrated, or spanned by the slow flow), the
+period-mean pull-off over |P_JKR| and the slow flow's relative difference from the time domain.
 """
 
+import math
 import statistics
 import time
 
@@ -18,6 +24,7 @@ from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.experiments.speed_sweep import start_problem
+from vibroadhesion.models.slow_flow import withdraw_slowly
 from vibroadhesion.simulation import steady_state
 from vibroadhesion.simulation.withdrawal import withdraw
 
@@ -54,6 +61,26 @@ def main() -> None:
         change = max(abs(run.force / tight.force - 1), abs(run.mean_force / tight.mean_force - 1))
         print(f"{name:26} {s_min:8.3f}/{s_med:<9.3f} {w_min:9.3f}/{w_med:<10.3f} {run.periods:8d} {run.steps:8d} "
               f"{-run.force / 0.75:12.6g} {-run.mean_force / 0.75:12.6g} {change:18.2e}")
+    slow_flow_against_time_domain()
+
+
+SLOW_SPEEDS = (0.1, 0.3, 1.0)
+
+
+def slow_flow_against_time_domain() -> None:
+    """The table of the module docstring's second part."""
+    problem = start_problem(Problem(GentSchultz(N), CHI0, 20e-6 / RADIUS, OMEGA_200HZ))
+    start = steady_state(problem).orbit.start_state
+    print("\nslow flow against time domain, 200 Hz, 20 um, rigid")
+    print(f"{'V/v0':>6} {'method':>12} {'time s min/med':>18} {'periods':>8} {'mean P/PJKR':>12} {'difference':>11}")
+    for speed in SLOW_SPEEDS:
+        t_min, t_med, run = _timed(withdraw, problem, speed, initial_state=start, rtol=1e-9)
+        s_min, s_med, slow = _timed(withdraw_slowly, problem, speed)
+        spanned = math.ceil(slow.slow_time_detached * problem.omega_check * problem.c_o / (2 * math.pi))
+        print(f"{speed:6g} {'time_domain':>12} {t_min:8.3f}/{t_med:<9.3f} {run.periods:8d} "
+              f"{-run.mean_force / 0.75:12.6g} {'':>11}")
+        print(f"{speed:6g} {'slow_flow':>12} {s_min:8.3f}/{s_med:<9.3f} {spanned:8d} "
+              f"{-slow.mean_force / 0.75:12.6g} {slow.mean_force / run.mean_force - 1:11.2e}")
 
 
 if __name__ == "__main__":

@@ -19,9 +19,10 @@ from vibroadhesion.core.groups import omega_check
 from vibroadhesion.experiments import speed_sweep
 
 
-def _table(speeds: np.ndarray, deviation: np.ndarray) -> pd.DataFrame:
+def _table(speeds: np.ndarray, deviation: np.ndarray, method: str = "time_domain") -> pd.DataFrame:
     return pd.DataFrame({"fixation": "rigid", "frequency_hz": 200.0, "h1_um": 20.0, "V_over_v0": speeds,
-                         "relative_deviation": deviation})
+                         "relative_deviation": deviation, "method": method,
+                         "source": "simulated" if method == "time_domain" else "averaged"})
 
 
 def test_limits_of_a_power_law_deviation_are_its_crossings() -> None:
@@ -40,11 +41,50 @@ def test_limits_outside_the_simulated_speeds_are_nan_with_a_note() -> None:
     assert math.isnan(all_in["V_over_v0_within_5pct"]) and "fastest" in all_in["note_5pct"]
 
 
+def test_limits_take_the_time_domain_where_both_ran_and_name_the_methods() -> None:
+    c = 0.2
+    slow = _table(np.array([0.001, 0.01, 0.1]), c * np.array([0.001, 0.01, 0.1]), "slow_flow")
+    # the time domain at 0.1 differs (0.03 instead of 0.02): where both ran, its row is the one used
+    timed = _table(np.array([0.1, 1.0]), np.array([0.03, 0.3]))
+    limits = speed_sweep.quasi_static_limits(pd.concat([slow, timed], ignore_index=True)).iloc[0]
+    # 1 %: between 0.01 (slow flow, 2e-3) and 0.1 (time domain, 0.03), log-log interpolated
+    assert limits["method_1pct"] == "slow_flow/time_domain"
+    crossing = 0.01 * 10 ** (math.log(0.01 / 2e-3) / math.log(0.03 / 2e-3))
+    assert limits["V_over_v0_within_1pct"] == pytest.approx(crossing, rel=1e-12)
+    assert limits["method_5pct"] == "time_domain"  # between 0.1 (0.03) and 1 (0.3): both time domain
+    assert limits["V_over_v0_within_5pct"] == pytest.approx(0.1 * 10 ** (math.log(0.05 / 0.03) / math.log(10)),
+                                                            rel=1e-12)
+    assert limits["source"] == "averaged/simulated"
+
+
+def test_slow_flow_placed_at_a_frequency() -> None:
+    slow = pd.DataFrame({"h1_um": [20.0, 20.0], "V_over_v0": [0.1, 1.0], "slow_time_pulloff": [0.25, 0.03],
+                         "slow_time_detached": [0.5, math.nan]})
+    placed = speed_sweep.at_frequency(slow, 1e6, 0.02, fixation_name="rigid", frequency_hz=200.0)
+    assert list(placed.columns) == speed_sweep.COLUMNS
+    assert (placed["method"] == "slow_flow").all() and (placed["source"] == "averaged").all()
+    # tau = omega_check c_o T (Eqs. 86, 105); periods up to detachment (else to the pull-off), rounded up
+    assert placed["tau_pulloff"].tolist() == pytest.approx([0.25 * 2e4, 0.03 * 2e4], rel=1e-15)
+    assert placed["periods"].tolist() == [math.ceil(0.5 * 2e4 / (2 * math.pi)), math.ceil(0.03 * 2e4 / (2 * math.pi))]
+
+
+def test_quasi_static_ratios_read_the_simulated_family() -> None:
+    table = pd.DataFrame({"model": ["simulation", "simulation", "exact_averaging", "simulation"],
+                          "frequency_hz": [200.0, 200.0, 200.0, 300.0], "h1_um": [20.0, 40.0, 20.0, 20.0],
+                          "status": ["pulloff", "contact_loss_before_extremum", "ok", "pulloff"],
+                          "pulloff_ratio": [3.0, math.nan, 2.0, 3.5]})
+    ratios = speed_sweep.quasi_static_ratios(table, 200.0)
+    assert ratios[20.0] == 3.0 and math.isnan(ratios[40.0]) and len(ratios) == 2
+
+
 def test_rows_of_the_200hz_test() -> None:
+    from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
+
     omega = float(omega_check(200.0, V0, RADIUS))
     problems = speed_sweep.rig_problems(CHI0, N_PUBLISHED, omega, RADIUS, [20.0], Fixation.rigid())
+    family = float(simulated_pulloff(problems[0][1]).pulloff_ratio)
     table = speed_sweep.sweep_table(problems, [0.3, 100.0], fixation_name="rigid", frequency_hz=200.0,
-                                    v0_um_s=V0 * 1e6)
+                                    v0_um_s=V0 * 1e6, quasi_static={20.0: family})
     assert list(table.columns) == speed_sweep.COLUMNS and (table["source"] == "simulated").all()
     slow, fast = table.iloc[0], table.iloc[1]
     assert slow["status"] == "pulloff" and fast["status"] == "detached_before_mean_extremum"

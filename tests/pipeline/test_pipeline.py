@@ -47,7 +47,7 @@ FITTED_SIMULATION_RULES = {"virtual_pulloff", "virtual_pulloff_fixation"}
 VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_compliant", "validation_compliant_plot",
                     "pulloff_sensitivity", "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
                     "identifiability_fit", "identifiability", "identifiability_design", "benchmark_j_integrals",
-                    "withdrawal", "withdrawal_gather", "withdrawal_plot",
+                    "withdrawal", "withdrawal_slow_flow", "withdrawal_gather", "withdrawal_plot",
                     "benchmark_simulate", "benchmark_speed_vs_error", "rigs_part", "rigs_gather", "rigs_plot",
                     "report_validation_index", "validation"}
 

@@ -1,5 +1,8 @@
 # Pull-off at a finite withdrawal speed (issue 15): the full model integrated in time with the base withdrawn
 # at V (simulated), one job per fixation and test frequency, at the published parameters; part of `validation`.
+# The V -> 0 value of each test is the published virtual pull-off (read, not re-traced). The averaged slow flow
+# (rigid only: the exact averaging's fixation) does not depend on the frequency: one job, placed at each
+# frequency by the gather.
 
 
 rule withdrawal:
@@ -7,6 +10,7 @@ rule withdrawal:
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
+        virtual_pulloff=expand(rules.virtual_pulloff_fixation.output[0], parameters="published", fixation="{fixation}"),
         code=code("withdrawal"),
     output:
         "results/withdrawal/{fixation}_{frequency}Hz.csv",
@@ -23,10 +27,29 @@ rule withdrawal:
         "../scripts/withdrawal.py"
 
 
+rule withdrawal_slow_flow:
+    """The averaged slow flow of every amplitude (rigid) at the speeds of config withdrawal.slow_flow_speed_ratios."""
+    input:
+        **PUBLISHED,
+        code=code("withdrawal_slow_flow"),
+    output:
+        "results/withdrawal/slow_flow.csv",
+    log:
+        "results/logs/withdrawal_slow_flow.log",
+    benchmark:
+        "results/benchmarks/rules/withdrawal_slow_flow.tsv"
+    params:
+        speed_ratios=config["withdrawal"]["slow_flow_speed_ratios"],
+    script:
+        "../scripts/withdrawal_slow_flow.py"
+
+
 rule withdrawal_gather:
     """speed_sweep.csv (both fixations, every test) and the speeds below which the quasi-static value holds."""
     input:
+        **PUBLISHED,
         parts=expand(rules.withdrawal.output[0], fixation=["rigid", "compliant"], frequency=FREQUENCIES),
+        slow_flow=rules.withdrawal_slow_flow.output[0],
         code=code("withdrawal_gather"),
     output:
         csv="results/withdrawal/speed_sweep.csv",

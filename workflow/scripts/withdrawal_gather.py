@@ -4,4 +4,5 @@ from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.withdrawal import withdrawal_gather
 
 with logged(snakemake.log[0], snakemake.rule):
-    withdrawal_gather(snakemake.input.parts, snakemake.output.csv, snakemake.output.limits)
+    withdrawal_gather(snakemake.input.setup, snakemake.input.parts, snakemake.input.slow_flow, snakemake.output.csv,
+                      snakemake.output.limits)

@@ -31,6 +31,8 @@ SteadyStatus = Literal["ok", "no_solution", "contact_loss", "not_converged", "in
                        "speed_unresolved"]
 PulloffStatus = Literal["ok", "pulloff", "no_solution", "contact_loss_before_extremum",
                         "no_steady_state_before_extremum"]
+#: Statuses of a withdrawal at a finite speed, in time (simulation.withdrawal) or by the slow flow (models.slow_flow).
+WithdrawalStatus = Literal["pulloff", "detached_before_mean_extremum", "not_detached", "integration_failure"]
 
 #: Statuses of a steady state that carry numbers ("speed_unresolved": an orbit that came within 1e-3
 #: of the simulation's speed cap keeps them, flagged).

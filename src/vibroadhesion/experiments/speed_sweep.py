@@ -18,11 +18,20 @@ quasi-static family there. Each row gives
 * the status of the withdrawal (``pulloff``, ``detached_before_mean_extremum``: the contact was lost before
   the period-mean force passed its extremum, the numbers being the instantaneous ones; ``not_detached``,
   ``integration_failure``; ``no_start_state`` when the steady state at the start does not converge),
-  ``method`` = ``time_domain`` (every point here is integrated in time) and the periods integrated.
+  ``method``: ``time_domain`` (integrated in time, the periods integrated) or ``slow_flow`` (the averaged slow flow of
+  :mod:`vibroadhesion.models.slow_flow`, rigid fixation only: the exact high-frequency averaging with the base
+  offset slow; ``periods`` = the periods the withdrawal spans, ``steps`` = the slow flow's steps). A slow-flow row's
+  ``quasi_static_ratio`` is its own V -> 0 limit, the exact averaging's force minimum
+  (:func:`vibroadhesion.models.exact_averaging.pulloff_at_force_minimum`), and its ``relative_deviation`` is
+  measured from that: the speed effect the averaging predicts (its own quasi-static error against the
+  simulation, ~1e-4 at 20 um and 10-22 % at 100 um, cancels in the ratio to first order). The slow flow does not
+  depend on the frequency (omega_check -> infinity at fixed etahat and V/v0): it is integrated once per amplitude
+  and speed (:func:`slow_flow_rows`, slow times) and placed at each frequency (:func:`at_frequency`).
 
-All of it is simulated (``source`` = ``simulated``). :func:`quasi_static_limits` gives, per test, the
-largest speed below which every simulated speed keeps the period-mean pull-off within 1 % (5 %) of the
-quasi-static value, interpolated in log V between the neighbouring simulated speeds.
+Rows are labelled ``source`` = ``simulated`` (time domain) or ``averaged`` (slow flow). :func:`quasi_static_limits`
+gives, per test, the largest speed below which every speed keeps the period-mean pull-off within 1 % (5 %) of its
+quasi-static value, interpolated in log V between the neighbouring speeds: at each speed the time domain where it
+ran, the slow flow elsewhere; its ``method_*`` columns say which method the neighbouring rows came from.
 """
 
 from __future__ import annotations
@@ -40,7 +49,9 @@ from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import PHAT_JKR
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.experiments.virtual_pulloff import preloaded_offset, simulated_pulloff
+from vibroadhesion.experiments.virtual_pulloff import preloaded_offset
+from vibroadhesion.models.exact_averaging import pulloff_at_force_minimum
+from vibroadhesion.models.slow_flow import withdraw_slowly
 from vibroadhesion.simulation.withdrawal import withdraw
 
 COLUMNS = ["source", "fixation", "frequency_hz", "h1_um", "V_over_v0", "V_um_s", "method", "status",
@@ -59,17 +70,26 @@ def start_problem(problem: Problem) -> Problem:
     return replace(problem, base_offset=preloaded_offset(problem) if problem.fixation.is_rigid else 0.0)
 
 
-def _quasi_static_ratio(problem: Problem) -> float:
-    """P_cr/|P_JKR| of the family of steady states (Eq. 4' mean force, Eq. 70), NaN without a tensile extremum."""
-    family = simulated_pulloff(replace(problem, base_offset=0.0))
-    return float(family.pulloff_ratio) if str(family.status) == "pulloff" else math.nan
+def quasi_static_ratios(virtual_pulloff: pd.DataFrame, frequency_hz: float) -> dict[float, float]:
+    """{h1: P_cr/|P_JKR|} of the simulated family of steady states (Eq. 4' mean force, Eq. 70) at one frequency.
+
+    Read from the published virtual pull-off table (:mod:`vibroadhesion.experiments.virtual_pulloff`, model
+    ``simulation``): NaN where the family has no tensile extremum (status other than ``pulloff``).
+    """
+    rows = virtual_pulloff[(virtual_pulloff["model"] == "simulation")
+                           & (virtual_pulloff["frequency_hz"] == frequency_hz)]
+    return {float(h1): float(ratio) if status == "pulloff" else math.nan
+            for h1, ratio, status in zip(rows["h1_um"], rows["pulloff_ratio"], rows["status"], strict=True)}
 
 
-def speed_rows(problem: Problem, speed_ratios: Sequence[float], v0_um_s: float) -> list[dict[str, Any]]:
-    """Rows of :data:`COLUMNS` (without the test's identifying columns) for one test at each V/v0 (Eq. 11')."""
+def speed_rows(problem: Problem, speed_ratios: Sequence[float], v0_um_s: float,
+               quasi_static: float) -> list[dict[str, Any]]:
+    """Rows of :data:`COLUMNS` (without the test's identifying columns) for one test at each V/v0 (Eq. 11').
+
+    ``quasi_static``: the family's P_cr/|P_JKR| (:func:`quasi_static_ratios`), the V -> 0 value.
+    """
     start = start_problem(problem)
     steady = simulation.steady_state(start)
-    quasi_static = _quasi_static_ratio(problem)
     rows = []
     for ratio in speed_ratios:
         row: dict[str, Any] = {"V_over_v0": ratio, "V_um_s": ratio * v0_um_s, "method": "time_domain",
@@ -87,38 +107,93 @@ def speed_rows(problem: Problem, speed_ratios: Sequence[float], v0_um_s: float) 
 
 
 def sweep_table(problems: Sequence[tuple[float, Problem]], speed_ratios: Sequence[float], *, fixation_name: str,
-                frequency_hz: float, v0_um_s: float) -> pd.DataFrame:
-    """The speed sweep of the tests ``problems`` = [(h1 in um, problem)] at one frequency and fixation (simulated)."""
-    rows = [{**row, "h1_um": h1} for h1, problem in problems for row in speed_rows(problem, speed_ratios, v0_um_s)]
+                frequency_hz: float, v0_um_s: float, quasi_static: dict[float, float]) -> pd.DataFrame:
+    """The speed sweep of the tests ``problems`` = [(h1 in um, problem)] at one frequency and fixation (simulated).
+
+    ``quasi_static``: {h1: the family's P_cr/|P_JKR|} (:func:`quasi_static_ratios`).
+    """
+    rows = [{**row, "h1_um": h1} for h1, problem in problems
+            for row in speed_rows(problem, speed_ratios, v0_um_s, quasi_static[h1])]
     table = pd.DataFrame(rows).assign(source="simulated", fixation=fixation_name, frequency_hz=frequency_hz)
     return table.reindex(columns=COLUMNS)
 
 
-def _limit(speeds: np.ndarray, deviation: np.ndarray, tolerance: float) -> tuple[float, str]:
-    """Largest V/v0 below which every simulated speed is within ``tolerance`` (log-interpolated), and a note."""
+#: Columns of the frequency-free slow-flow table (:func:`slow_flow_rows`): slow times T = v0 t/a_o.
+SLOW_COLUMNS = ["h1_um", "V_over_v0", "V_um_s", "status", "peak_pulloff_ratio", "mean_pulloff_ratio",
+                "quasi_static_ratio", "relative_deviation", "base_offset", "slow_time_pulloff", "slow_time_detached",
+                "steps"]
+
+
+def slow_flow_rows(problems: Sequence[tuple[float, Problem]], speed_ratios: Sequence[float],
+                   v0_um_s: float) -> pd.DataFrame:
+    """The slow flow (rigid) of the tests [(h1, problem)] at each V/v0, from the rigid start (:func:`start_problem`).
+
+    Rows of :data:`SLOW_COLUMNS`; ``quasi_static_ratio`` is the exact averaging's force minimum (module docstring).
+    """
+    rows = []
+    for h1, problem in problems:
+        start = start_problem(problem)
+        limit = float(pulloff_at_force_minimum(problem.eta1, problem.chi0, problem.law).pulloff_ratio)
+        for ratio in speed_ratios:
+            run = withdraw_slowly(start, ratio)
+            mean = -run.mean_force / abs(PHAT_JKR)
+            rows.append({"h1_um": h1, "V_over_v0": ratio, "V_um_s": ratio * v0_um_s, "status": run.status,
+                         "peak_pulloff_ratio": -run.force / abs(PHAT_JKR), "mean_pulloff_ratio": mean,
+                         "quasi_static_ratio": limit, "relative_deviation": mean / limit - 1.0,
+                         "base_offset": run.base_offset, "slow_time_pulloff": run.slow_time,
+                         "slow_time_detached": run.slow_time_detached, "steps": run.steps})
+    return pd.DataFrame(rows).reindex(columns=SLOW_COLUMNS)
+
+
+def at_frequency(slow: pd.DataFrame, omega_check: float, c_o: float, *, fixation_name: str,
+                 frequency_hz: float) -> pd.DataFrame:
+    """The slow-flow rows as rows of :data:`COLUMNS` at one frequency: tau = omega_check c_o T (Eqs. 86, 105).
+
+    ``periods`` = the periods up to detachment (or to the end of the flow), what a time domain would integrate.
+    """
+    to_tau = omega_check * c_o
+    end = slow["slow_time_detached"].fillna(slow["slow_time_pulloff"]) * to_tau
+    table = slow.assign(source="averaged", fixation=fixation_name, frequency_hz=frequency_hz, method="slow_flow",
+                        tau_pulloff=slow["slow_time_pulloff"] * to_tau,
+                        tau_detached=slow["slow_time_detached"] * to_tau,
+                        periods=np.ceil(end / (2.0 * math.pi)).astype("Int64"))
+    return table.reindex(columns=COLUMNS)
+
+
+def _limit(speeds: np.ndarray, deviation: np.ndarray, tolerance: float) -> tuple[float, str, slice]:
+    """Largest V/v0 below which every speed is within ``tolerance`` (log-interpolated), a note, the rows used."""
     inside = np.abs(deviation) <= tolerance
     if not inside[0]:
-        return math.nan, f"not within {100 * tolerance:g} % even at the slowest simulated speed {speeds[0]:g} v0"
+        return math.nan, f"not within {100 * tolerance:g} % even at the slowest speed {speeds[0]:g} v0", slice(0, 1)
     if inside.all():
-        return math.nan, f"within {100 * tolerance:g} % up to the fastest simulated speed {speeds[-1]:g} v0"
+        return math.nan, f"within {100 * tolerance:g} % up to the fastest speed {speeds[-1]:g} v0", slice(None)
     k = int(np.argmin(inside))  # first speed outside
     lo, hi = np.log(speeds[k - 1]), np.log(speeds[k])
     d_lo, d_hi = math.log(abs(deviation[k - 1]) or 1e-300), math.log(abs(deviation[k]))
     at = lo + (math.log(tolerance) - d_lo) * (hi - lo) / (d_hi - d_lo)
-    return float(np.exp(at)), "log-interpolated between simulated speeds"
+    return float(np.exp(at)), "log-interpolated between neighbouring speeds", slice(k - 1, k + 1)
+
+
+def _one_row_per_speed(test: pd.DataFrame) -> pd.DataFrame:
+    """The rows of one test with a deviation, one per speed: the time domain where it ran, else the slow flow."""
+    test = test.dropna(subset=["relative_deviation"])
+    ranked = test.assign(rank=(test["method"] != "time_domain").astype(int))
+    return ranked.sort_values(["V_over_v0", "rank"], kind="stable").drop_duplicates("V_over_v0")
 
 
 def quasi_static_limits(table: pd.DataFrame) -> pd.DataFrame:
     """Per test: the V/v0 below which the quasi-static estimate is within 1 % and 5 % (module docstring)."""
     rows = []
     for (fixation, frequency, h1), test in table.groupby(["fixation", "frequency_hz", "h1_um"], sort=True):
-        test = test.dropna(subset=["relative_deviation"]).sort_values("V_over_v0")
-        row: dict[str, Any] = {"source": "simulated", "fixation": fixation, "frequency_hz": frequency, "h1_um": h1}
+        test = _one_row_per_speed(test)
+        row: dict[str, Any] = {"source": "/".join(sorted(set(test["source"]))), "fixation": fixation,
+                               "frequency_hz": frequency, "h1_um": h1}
         for tolerance in TOLERANCES:
-            speed, note = (_limit(test["V_over_v0"].to_numpy(), test["relative_deviation"].to_numpy(), tolerance)
-                           if len(test) else (math.nan, "no simulated speed"))
+            speed, note, used = (_limit(test["V_over_v0"].to_numpy(), test["relative_deviation"].to_numpy(), tolerance)
+                                 if len(test) else (math.nan, "no speed", slice(0, 0)))
             row[f"V_over_v0_within_{round(100 * tolerance)}pct"] = speed
             row[f"note_{round(100 * tolerance)}pct"] = note
+            row[f"method_{round(100 * tolerance)}pct"] = "/".join(dict.fromkeys(test["method"].iloc[used]))
         rows.append(row)
     return pd.DataFrame(rows)
 
@@ -128,3 +203,18 @@ def rig_problems(chi0: float, law_n: float, omega_check: float, radius: float, h
     """[(h1, problem)] of the rig's amplitudes at one frequency (Eqs. 64, 65, 105)."""
     return [(float(h1), Problem(GentSchultz(law_n), chi0, float(h1) * 1e-6 / radius, omega_check, fixation))
             for h1 in h1_um]
+
+
+def method_agreement(table: pd.DataFrame) -> pd.DataFrame:
+    """Where a test ran both methods at one speed: the slow flow's pull-off (mean, peak) against the time domain's.
+
+    ``*_difference`` = slow flow/time domain - 1 (rows of :data:`COLUMNS`; bounded below by the exact averaging's own
+    quasi-static error against the simulation, module docstring).
+    """
+    keys = ["fixation", "frequency_hz", "h1_um", "V_over_v0"]
+    values = ["status", "mean_pulloff_ratio", "peak_pulloff_ratio", "periods"]
+    timed, slow = (table[table["method"] == method][keys + values] for method in ("time_domain", "slow_flow"))
+    both = timed.merge(slow, on=keys, suffixes=("_time_domain", "_slow_flow"))
+    for value in ("mean_pulloff_ratio", "peak_pulloff_ratio"):
+        both[f"{value}_difference"] = both[f"{value}_slow_flow"] / both[f"{value}_time_domain"] - 1.0
+    return both.reset_index(drop=True)

@@ -358,3 +358,47 @@ def alpha_star(beta: ArrayLike, law: GentSchultz) -> Array:
     """alpha*(beta): the mean of sqrt(w/w0) that cancels the drift of the frozen radius, Eq. (*)."""
     return frozen_radius_cycle(beta, law).alpha
 
+
+#: Gauss-Legendre nodes in phi on (0, pi) for a cycle that stays on one branch (s > 1 or s < 1 throughout).
+_ONE_BRANCH_NODES = 96
+
+
+@cache
+def _one_branch_rule() -> tuple[Array, Array]:
+    """Gauss-Legendre nodes phi on (0, pi) and weights summing to 2 (:func:`mean_front_speed`, one branch)."""
+    x, w = np.polynomial.legendre.leggauss(_ONE_BRANCH_NODES)
+    return 0.5 * np.pi * (x + 1.0), w
+
+
+def mean_front_speed(alpha: ArrayLike, beta: ArrayLike, law: GentSchultz) -> Array:
+    """G(alpha, beta) = (1/2pi) int_0^2pi X(alpha + beta sin tau) d tau: the drift of the frozen radius, Eq. (*).
+
+    The period mean of the signed front speed x = (da/dt)/v0 (Eq. 6 inverted, Eqs. 73-74) at a radius frozen
+    at abar_m, with s = alpha + beta sin tau (Eq. 5 exact); zero on the drift-free cycle alpha = alpha*(beta),
+    negative (opening, a shrinking contact) above it. By the symmetry of sin about pi/2 the mean is that over
+    theta in (-pi/2, pi/2): G = (I_cl - I_op)/pi with the integrals of the quadrature of (*) (module docstring),
+    with the closing arc l_cl = 2 arcsin sqrt((1 - s_min)/(2 beta)) and the opening one l_op = 2 arcsin
+    sqrt((s_max - 1)/(2 beta)), s_min = alpha - beta, s_max = alpha + beta (each accurate when small). A cycle
+    on one branch (s_min >= 1 or s_max <= 1) is integrated by Gauss-Legendre in phi = theta + pi/2 (accurate
+    while s stays away from 0). Vectorised over alpha > beta >= 0 (broadcast); alpha <= beta (s reaches 0,
+    w = 0 within the period: no contact) is NaN.
+    """
+    alpha, beta = (np.asarray(v, dtype=float) for v in np.broadcast_arrays(alpha, beta))
+    shape, alpha, beta = alpha.shape, alpha.ravel(), beta.ravel()
+    p, g = 1.0 / law.n, np.full(alpha.shape, np.nan)
+    s_min, s_max = alpha - beta, alpha + beta
+    mixed = (s_min > 0) & (s_min < 1) & (s_max > 1)
+    if np.any(mixed):
+        b, lo, hi = beta[mixed], s_min[mixed], s_max[mixed]
+        arc_cl = 2.0 * np.arcsin(np.sqrt(np.minimum(1.0, (1.0 - lo) / (2.0 * b))))
+        arc_op = 2.0 * np.arcsin(np.sqrt(np.minimum(1.0, (hi - 1.0) / (2.0 * b))))
+        log_cl, log_op = _log_drift_integrals(b, arc_cl, arc_op, lo, p)
+        g[mixed] = (np.exp(log_cl) - np.exp(log_op)) / np.pi
+    one_branch = (s_min > 0) & ~mixed
+    if np.any(one_branch):
+        phi, w = _one_branch_rule()
+        s = s_min[one_branch, None] + 2.0 * beta[one_branch, None] * np.sin(0.5 * phi) ** 2
+        speed = np.where(s > 1.0, -np.abs(s * s - 1.0) ** p, np.abs(1.0 / (s * s) - 1.0) ** p)
+        g[one_branch] = 0.5 * speed @ w
+    return g.reshape(shape)
+

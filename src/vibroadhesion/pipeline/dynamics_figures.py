@@ -20,11 +20,13 @@ __all__ = ["plot_rig_comparison", "plot_speed_sweep"]
 # --- Withdrawal at a finite speed (issue 15) ----------------------------------------------------
 
 def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
-    """Simulated period-mean pull-off P/|P_JKR| (Eqs. 4', 70) against V/v0, one panel per fixation.
+    """Period-mean pull-off P/|P_JKR| (Eqs. 4', 70) against V/v0, one panel per fixation, the method of each point.
 
-    One line per (frequency, h1) of :mod:`vibroadhesion.experiments.speed_sweep`; the quasi-static family value
-    (the V -> 0 asymptote) as a dashed tick at the left of each line; open markers: detached before the
-    period-mean force passed its extremum (the instantaneous reading). One legend below the panels, off the data.
+    One colour and marker per (frequency, h1) of :mod:`vibroadhesion.experiments.speed_sweep`: the time-domain
+    withdrawal (SIMULATED) as a solid line with markers, the averaged slow flow (rigid only) as a dotted line with
+    plus signs; the quasi-static family value (the V -> 0 asymptote) as a dashed tick at the left of each line;
+    open markers: detached before the period-mean force passed its extremum (the instantaneous reading). One legend
+    below the panels, off the data.
     """
     fixations = list(dict.fromkeys(sweep["fixation"]))
     amplitudes, frequencies = sorted(set(sweep["h1_um"])), sorted(set(sweep["frequency_hz"]))
@@ -35,15 +37,18 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
         for (frequency, h1), test in rows.groupby(["frequency_hz", "h1_um"], sort=True):
             test = test.sort_values("V_over_v0")
             color, marker = f"C{amplitudes.index(h1) % 10}", "os^Dv"[frequencies.index(frequency) % 5]
-            done = test["status"] == "pulloff"
-            ax.plot(test["V_over_v0"], test["mean_pulloff_ratio"], "-", color=color, lw=0.8, marker=marker, ms=4,
+            timed, slow = test[test["method"] == "time_domain"], test[test["method"] == "slow_flow"]
+            done = timed["status"] == "pulloff"
+            ax.plot(timed["V_over_v0"], timed["mean_pulloff_ratio"], "-", color=color, lw=0.8, marker=marker, ms=4,
                     mfc="none", label=f"{frequency:g} Hz, {h1:g} µm")
-            ax.plot(test.loc[done, "V_over_v0"], test.loc[done, "mean_pulloff_ratio"], marker, color=color, ms=4)
+            ax.plot(timed.loc[done, "V_over_v0"], timed.loc[done, "mean_pulloff_ratio"], marker, color=color, ms=4)
+            ax.plot(slow["V_over_v0"], slow["mean_pulloff_ratio"], ":", color=color, lw=0.8, marker="+", ms=5)
             v_min = float(test["V_over_v0"].min())
-            ax.plot([v_min / 4.0, v_min], [test["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
+            ax.plot([v_min / 4.0, v_min], [timed["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
         ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
-               ylabel=r"simulated pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation (simulated)")
-    legend_below(fig, axes[0], fontsize=6.5, ncols=5, title="dashed: quasi-static (V → 0); open: detached before "
+               ylabel=r"pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation")
+    legend_below(fig, axes[0], fontsize=6.5, ncols=5, title="solid, o s ^: time domain (SIMULATED); dotted, +: "
+                 "averaged slow flow (rigid only); dashed: quasi-static (V → 0, simulated); open: detached before "
                  "the mean extremum", title_fontsize=6.5)
     return fig
 

@@ -31,8 +31,8 @@ and a parabola through the three periods around the smallest: as V -> 0 it tends
 pull-off of :mod:`vibroadhesion.experiments.virtual_pulloff` (the most tensile mean force of the family
 of steady states).
 
-Status (:data:`WithdrawalStatus`): ``pulloff`` when the period-mean force passed a tensile minimum
-before the contact was lost; ``detached_before_mean_extremum`` when the contact was lost first (e.g.
+Status (:data:`vibroadhesion.core.records.WithdrawalStatus`): ``pulloff`` when the period-mean force passed a
+tensile minimum before the contact was lost; ``detached_before_mean_extremum`` when the contact was lost first (e.g.
 in the tensile half-period of a fast or large stroke): the numbers are then the instantaneous ones an
 instrument records, and there is no quasi-static counterpart; ``not_detached`` when the contact is
 still there after ``max_periods``; ``integration_failure`` when the integrator gives up (step budget
@@ -43,20 +43,19 @@ from __future__ import annotations
 
 import math
 from operator import attrgetter
-from typing import Literal, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.optimize import brentq
 
 from vibroadhesion.core.problem import Problem
+from vibroadhesion.core.records import WithdrawalStatus
 from vibroadhesion.simulation import kernel
 from vibroadhesion.simulation.excitation import CONSTANT_SCHEDULE, ExcitationSchedule
 from vibroadhesion.simulation.integrators import Period
 from vibroadhesion.simulation.model import TWO_PI, Array, Model, absolute_start
 from vibroadhesion.simulation.scales import v_scale_estimate, x_scale
-
-WithdrawalStatus = Literal["pulloff", "detached_before_mean_extremum", "not_detached", "integration_failure"]
 
 #: Index of the withdrawal ramp and of the variational switch in the kernel's constants.
 _RAMP = kernel.CONSTANTS.index("ramp")

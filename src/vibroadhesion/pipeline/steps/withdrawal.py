@@ -2,9 +2,11 @@
 
 One job per (fixation, test frequency) runs every amplitude of data/setup.yaml at the speeds of
 workflow/config.yaml (:mod:`vibroadhesion.experiments.speed_sweep`, time-domain withdrawal of the full model,
-Eqs. 3'-11'); the gather step concatenates them and writes the speeds below which the quasi-static
+Eqs. 3'-11'), its V -> 0 values read from the published virtual pull-off; one job runs the averaged slow flow
+(rigid, frequency-free: :mod:`vibroadhesion.models.slow_flow`) of every amplitude; the gather step places the
+slow flow at each rigid test frequency, concatenates them and writes the speeds below which the quasi-static
 pull-off is within 1 % and 5 % (the figure: :func:`vibroadhesion.pipeline.steps.plots.withdrawal_plot`).
-Every number here is simulated.
+Time-domain rows are simulated, slow-flow rows averaged (``method``, ``source``).
 """
 
 from __future__ import annotations
@@ -14,6 +16,8 @@ from pathlib import Path
 
 import pandas as pd
 
+from vibroadhesion.core import groups
+from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.experiments import speed_sweep
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
@@ -22,25 +26,48 @@ from vibroadhesion.pipeline.steps.inputs import FixationCase, experiment_omega_c
 Path_ = str | Path
 
 
-def withdrawal_part(setup_json: Path_, out: Path_, fixation: FixationCase, frequency_hz: float,
-                    speed_ratios: Sequence[float]) -> None:
-    """results/withdrawal/{fixation}_{frequency}Hz.csv: every amplitude of the rig at each V/v0 (Eq. 11')."""
+def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, fixation: FixationCase,
+                    frequency_hz: float, speed_ratios: Sequence[float]) -> None:
+    """results/withdrawal/{fixation}_{frequency}Hz.csv: every amplitude of the rig at each V/v0 (Eq. 11').
+
+    The V -> 0 value of each test is read from ``virtual_pulloff_csv`` (the published virtual pull-off of the
+    fixation, the same family of steady states).
+    """
     setup, params, chi0 = rig(setup_json)
     (case,) = setup_fixations(setup, params["v0"], fixation)
     omega_check = experiment_omega_check(setup, params["v0"])[frequency_hz]
     problems = speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius, setup.amplitudes_um, case)
+    quasi_static = speed_sweep.quasi_static_ratios(pd.read_csv(virtual_pulloff_csv), frequency_hz)
     progress = ProgressBar(len(problems), "amplitudes")
     parts = []
     for h1, problem in problems:
         parts.append(speed_sweep.sweep_table([(h1, problem)], speed_ratios, fixation_name=fixation,
-                                             frequency_hz=frequency_hz, v0_um_s=params["v0"] * 1e6))
+                                             frequency_hz=frequency_hz, v0_um_s=params["v0"] * 1e6,
+                                             quasi_static=quasi_static))
         progress.advance(1, f"{fixation}, {frequency_hz:g} Hz, h1 = {h1:g} um")
     write_csv(pd.concat(parts, ignore_index=True), out)
 
 
-def withdrawal_gather(parts: Sequence[Path_], out: Path_, limits_out: Path_) -> None:
-    """results/withdrawal/speed_sweep.csv and quasi_static_limits.csv (1 % and 5 %, simulated)."""
+def withdrawal_slow_flow(setup_json: Path_, out: Path_, speed_ratios: Sequence[float]) -> None:
+    """results/withdrawal/slow_flow.csv: the slow flow (rigid) of every amplitude at each V/v0, slow times."""
+    setup, params, chi0 = rig(setup_json)
+    omega_check = experiment_omega_check(setup, params["v0"])[setup.frequencies_hz[0]]  # the flow does not use it
+    problems = speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius, setup.amplitudes_um,
+                                        Fixation.rigid())
+    write_csv(speed_sweep.slow_flow_rows(problems, speed_ratios, params["v0"] * 1e6), out)
+
+
+def withdrawal_gather(setup_json: Path_, parts: Sequence[Path_], slow_flow_csv: Path_, out: Path_,
+                      limits_out: Path_) -> None:
+    """results/withdrawal/speed_sweep.csv (the slow flow at each rigid frequency) and quasi_static_limits.csv."""
+    setup, params, chi0 = rig(setup_json)
+    slow, c_o = pd.read_csv(slow_flow_csv), float(groups.contact_radius_ratio(chi0))
+    placed = [speed_sweep.at_frequency(slow, omega_check, c_o, fixation_name="rigid", frequency_hz=frequency)
+              for frequency, omega_check in experiment_omega_check(setup, params["v0"]).items()]
     table = pd.concat([pd.read_csv(p) for p in parts], ignore_index=True)
-    write_csv(table, out)
+    table = pd.concat([table, *placed], ignore_index=True).sort_values(
+        ["fixation", "frequency_hz", "h1_um", "V_over_v0", "method"], kind="stable", ascending=[False, True, True,
+                                                                                              True, True])
+    write_csv(table.reset_index(drop=True), out)
     write_csv(speed_sweep.quasi_static_limits(table), limits_out)
 
