@@ -93,3 +93,25 @@ def test_rows_of_the_200hz_test() -> None:
     # measured with the withdrawal's O(V) approach (test_withdrawal.py): 3.7 % at V = 0.3 v0, pulling harder
     assert 0.0 < slow["relative_deviation"] < 0.05
     assert slow["peak_pulloff_ratio"] > slow["mean_pulloff_ratio"] > 0.0
+
+
+def test_stopping_rule_skips_only_speeds_below_the_first_within_tolerance_and_keeps_the_limits() -> None:
+    """200 Hz, 40 um, rigid at 3, 1, 0.3 v0: deviations 1.9 %, 0.57 %, 0.17 % (the full sweep): with stop_within 1 %
+    the sweep ends at 1 v0, 0.3 v0 is skipped, the rows run are the full sweep's bit for bit (the same integration),
+    and the 1 % and 5 % limits are those of the full sweep."""
+    from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
+
+    omega = float(omega_check(200.0, V0, RADIUS))
+    problems = speed_sweep.rig_problems(CHI0, N_PUBLISHED, omega, RADIUS, [40.0], Fixation.rigid())
+    family = {40.0: float(simulated_pulloff(problems[0][1]).pulloff_ratio)}
+    speeds = [0.3, 1.0, 3.0]
+    kwargs = {"fixation_name": "rigid", "frequency_hz": 200.0, "v0_um_s": V0 * 1e6, "quasi_static": family}
+    full = speed_sweep.sweep_table(problems, speeds, **kwargs)
+    stopped = speed_sweep.sweep_table(problems, speeds, stop_within=0.01, **kwargs)
+    assert full["V_over_v0"].tolist() == stopped["V_over_v0"].tolist() == speeds
+    assert (full["status"] == "pulloff").all()
+    assert 0.01 < full["relative_deviation"].iloc[2] < 0.05 and abs(full["relative_deviation"].iloc[1]) <= 0.01
+    assert stopped["status"].tolist() == [speed_sweep.SKIPPED, "pulloff", "pulloff"]
+    assert stopped.iloc[0][["mean_pulloff_ratio", "peak_pulloff_ratio", "periods"]].isna().all()
+    pd.testing.assert_frame_equal(stopped.iloc[1:], full.iloc[1:])
+    pd.testing.assert_frame_equal(speed_sweep.quasi_static_limits(stopped), speed_sweep.quasi_static_limits(full))

@@ -6,7 +6,7 @@
 
 
 rule withdrawal:
-    """Every amplitude of the rig withdrawn at the speeds of config withdrawal.speed_ratios (simulated)."""
+    """Every amplitude of the rig withdrawn at the speeds of config withdrawal.speed_ratios down to stop_within (simulated)."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
@@ -23,6 +23,7 @@ rule withdrawal:
         frequency=r"[0-9.]+",
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
+        stop_within=lambda wildcards: config["withdrawal"]["stop_within"][wildcards.fixation],
     script:
         "../scripts/withdrawal.py"
 

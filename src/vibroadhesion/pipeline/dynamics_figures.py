@@ -25,8 +25,8 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
     One colour and marker per (frequency, h1) of :mod:`vibroadhesion.experiments.speed_sweep`: the time-domain
     withdrawal (SIMULATED) as a solid line with markers, the averaged slow flow (rigid only) as a dotted line with
     plus signs; the quasi-static family value (the V -> 0 asymptote) as a dashed tick at the left of each line;
-    open markers: detached before the period-mean force passed its extremum (the instantaneous reading). One legend
-    below the panels, off the data.
+    open markers: detached before the period-mean force passed its extremum (the instantaneous reading); speeds skipped
+    by the stopping rule (status skipped_within_tolerance) have no point. One legend below the panels, off the data.
     """
     fixations = list(dict.fromkeys(sweep["fixation"]))
     amplitudes, frequencies = sorted(set(sweep["h1_um"])), sorted(set(sweep["frequency_hz"]))
@@ -43,7 +43,7 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
                     mfc="none", label=f"{frequency:g} Hz, {h1:g} µm")
             ax.plot(timed.loc[done, "V_over_v0"], timed.loc[done, "mean_pulloff_ratio"], marker, color=color, ms=4)
             ax.plot(slow["V_over_v0"], slow["mean_pulloff_ratio"], ":", color=color, lw=0.8, marker="+", ms=5)
-            v_min = float(test["V_over_v0"].min())
+            v_min = float(test.dropna(subset=["mean_pulloff_ratio"])["V_over_v0"].min())  # skipped speeds: no point
             ax.plot([v_min / 4.0, v_min], [timed["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
         ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
                ylabel=r"pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation")

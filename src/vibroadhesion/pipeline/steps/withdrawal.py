@@ -27,8 +27,10 @@ Path_ = str | Path
 
 
 def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, fixation: FixationCase,
-                    frequency_hz: float, speed_ratios: Sequence[float]) -> None:
+                    frequency_hz: float, speed_ratios: Sequence[float], stop_within: float | None = None) -> None:
     """results/withdrawal/{fixation}_{frequency}Hz.csv: every amplitude of the rig at each V/v0 (Eq. 11').
+
+    ``stop_within``: the stopping rule of :func:`vibroadhesion.experiments.speed_sweep.speed_rows` (None: every speed).
 
     The V -> 0 value of each test is read from ``virtual_pulloff_csv`` (the published virtual pull-off of the
     fixation, the same family of steady states).
@@ -43,7 +45,7 @@ def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, f
     for h1, problem in problems:
         parts.append(speed_sweep.sweep_table([(h1, problem)], speed_ratios, fixation_name=fixation,
                                              frequency_hz=frequency_hz, v0_um_s=params["v0"] * 1e6,
-                                             quasi_static=quasi_static))
+                                             quasi_static=quasi_static, stop_within=stop_within))
         progress.advance(1, f"{fixation}, {frequency_hz:g} Hz, h1 = {h1:g} um")
     write_csv(pd.concat(parts, ignore_index=True), out)
 
