@@ -234,3 +234,37 @@ def test_a_row_whose_force_is_not_a_positive_number_fails_the_level_and_names_it
     summary = fit_gent_schultz(rows, model, PUBLISHED, **GEOMETRY)
     assert summary["status"] == "failed" and summary["note"].startswith("line(s) 3, 5: "), summary["note"]
     assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}
+
+
+@pytest.mark.parametrize(("n", "scale", "status"), [(3.99, 1e-3, "at_bound"), (3.5, 1e-3, "fitted"),
+                                                     (1.0, 1.0, "fitted")])
+def test_a_parameter_whose_bound_lies_within_two_standard_errors_is_at_bound(n: float, scale: float,
+                                                                             status: str) -> None:
+    """A search that stops by its xtol just inside the box (n = 3.99, ln-distance 2.5e-3 from the bound 4) with rows
+    that hardly constrain n (its Jacobian column 1e-3 against w0's 1: relative SE of n ~ 7 at s = 1.7e-2) reports n
+    ``at_bound`` without a standard error, and w0's standard error with n held: s/|J_w0| w0 in closed form. The same
+    rows with the search ending 13 % from the bound (n = 3.5: more than 1 %, the estimate is the data's, however
+    uncertain), and rows that constrain n (column ~1: relative SE ~ 1e-2) at n = 1 leave it ``fitted``."""
+    jac = np.array([[1.0, scale], [1.0, -scale], [1.0, 2.0 * scale]])
+    residuals = np.array([1e-2, -1e-2, 1e-2])
+    params = GentSchultzParameters(w0=0.3, n=n, v0=V0)
+    lo, hi = np.log([fitting.BOUNDS[k] for k in ("w0", "n")]).T
+    x = np.log([params.w0, params.n])
+    fit = fitting.fit_record(params, _Result(x, jac), residuals, ("w0", "n"), (lo, hi))
+    rows = pd.DataFrame({"line": [2, 3, 4], "pulloff_mN": [100.0, 110.0, 120.0]})
+    summary = fitting.fitted_summary(rows, fit, ("w0", "n"), "")
+    s = np.sqrt(residuals @ residuals / (3 - 2))
+    assert summary["status"] == status
+    if status == "at_bound":
+        assert summary["at_bound"] == ["n"] and summary["parameters"]["n"]["std_error"] is None
+        assert summary["parameters"]["w0"]["std_error"] == pytest.approx(s / np.sqrt(3.0) * 0.3, rel=1e-12)
+        assert "within 1 % and 2 standard errors" in summary["note"]
+    else:
+        assert summary["at_bound"] == [] and summary["parameters"]["n"]["std_error"] > 0
+
+
+class _Result:
+    """The fields of scipy's OptimizeResult that fit_record reads."""
+
+    def __init__(self, x: np.ndarray, jac: np.ndarray) -> None:
+        self.x, self.jac, self.nfev, self.message = x, jac, 1, "test"

@@ -17,7 +17,8 @@ by a trust-region reflective least-squares search (scipy ``trf``) inside :data:`
 relative residuals model/observed - 1 (pull-off forces span an order of magnitude; measurement
 error is roughly proportional). A parameter that ends on its bound is reported as such
 (``status`` ``at_bound``, no standard error): the data push it out of the physical range, which
-means the model cannot represent them, not that the bound is the answer. The covariance of the
+means the model cannot represent them, not that the bound is the answer; so is a parameter that ends within 1 %
+of a bound lying within two of its standard errors (the rows do not exclude the bound). The covariance of the
 parameters inside the box is s^2 (J^T J)^-1 with s^2 = RSS/(m - p), mapped back to natural units
 by the delta method. For the identifiability test the relative residual scale is floored at
 ``noise_floor``, so that noise-free (synthetic) rows do not make any parameter look identifiable.
@@ -61,6 +62,11 @@ BOUNDS = {"w0": (1e-3, 10.0), "n": (0.05, 4.0), "v0": (1e-9, 1.0)}
 
 #: A log-parameter closer than this to ln of a bound is on it.
 _ON_BOUND = 1e-6
+#: A parameter within _NEAR_BOUND of a bound in ln (1 %) whose bound lies within _BOUND_SE of its standard errors is
+#: reported on it: where the rows hardly constrain it the search stops short of the bound they push it to (by its
+#: ftol/gtol, with standard errors up to 1e10), and the rows do not exclude the bound.
+_NEAR_BOUND = 1e-2
+_BOUND_SE = 2.0
 
 
 class FitError(RuntimeError):
@@ -135,14 +141,16 @@ def fit_record(params: GentSchultzParameters, result: OptimizeResult, residuals:
     """The fit record of a finished search in ln(free) (every level's, the simulation's too).
 
     ``params`` and ``residuals`` at ``result.x``; the free parameters within 1e-6 of ln of a bound are
-    ``at_bound``; s^2 = RSS/(m - p) over the m rows and p free parameters.
+    ``at_bound``, and ``bound_distance`` keeps each one's distance to the nearer bound in ln (for
+    :func:`fitted_summary`); s^2 = RSS/(m - p) over the m rows and p free parameters.
     """
     lo, hi = log_bounds
-    on_bound = (result.x - lo < _ON_BOUND) | (hi - result.x < _ON_BOUND)
+    distance = np.minimum(result.x - lo, hi - result.x)
     return {
         "params": params,
         "jac": result.jac,
-        "at_bound": [name for name, b in zip(free, on_bound, strict=True) if b],
+        "at_bound": [name for name, d in zip(free, distance, strict=True) if d < _ON_BOUND],
+        "bound_distance": dict(zip(free, distance.tolist(), strict=True)),
         "s2": float(residuals @ residuals) / (len(residuals) - len(free)),
         "residuals": residuals,
         "nfev": int(result.nfev),
@@ -259,13 +267,19 @@ def v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
 
 def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...], v0_note: str) -> dict[str, Any]:
     """Status, estimates, covariance (Gauss-Newton, J^T J at the optimum, in logarithms), residuals."""
-    inside = tuple(name for name in free if name not in fit["at_bound"])
-    columns = [free.index(name) for name in inside]
-    theta = np.array([getattr(fit["params"], name) for name in inside])
-    cov = _covariance(fit["jac"][:, columns], fit["s2"], theta)
+    inside, cov = _inside_and_covariance(fit, free, fit["at_bound"])
+    distance = fit.get("bound_distance", {})
+    se = {name: _ln_se(cov, inside, name, fit) for name in inside} if cov is not None else {}
+    near = [name for name in se if distance.get(name, math.inf) < min(_NEAR_BOUND, _BOUND_SE * se[name])]
     notes = [f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
              f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"]]
-    status = "at_bound" if fit["at_bound"] else "fitted"
+    notes += [f"{name} = {getattr(fit['params'], name):.4g} {UNITS[name]} ends within 1 % and {_BOUND_SE:g} standard "
+              f"errors (relative {se[name]:.3g}) of its bound in {BOUNDS[name]}: the rows do not determine it inside "
+              "the box (no standard error)" for name in near]
+    at_bound = [*fit["at_bound"], *near]
+    if near:
+        inside, cov = _inside_and_covariance(fit, free, at_bound)
+    status = "at_bound" if at_bound else "fitted"
     if cov is None:
         status = "not_identifiable"
         notes.append(f"the Jacobian has lower rank than the {len(inside)} free parameters inside the box: the rows "
@@ -275,7 +289,7 @@ def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...
         "status": status,
         "note": "; ".join(notes),
         "free_parameters": list(free),
-        "at_bound": fit["at_bound"],
+        "at_bound": at_bound,
         "parameters": _parameter_table(fit["params"], free, inside, cov),
         "covariance": {"parameters": list(inside), "matrix": [] if cov is None else cov.tolist()},
         "residuals_mN": [{"line": int(line), "residual": float(r * obs)}
@@ -286,6 +300,20 @@ def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...
         "function_evaluations": fit["nfev"],
         "optimizer_message": fit["message"],
     }
+
+
+def _inside_and_covariance(fit: dict[str, Any], free: tuple[str, ...],
+                           at_bound: list[str]) -> tuple[tuple[str, ...], np.ndarray | None]:
+    """The free parameters not on a bound and their covariance (:func:`_covariance`) with the others held."""
+    inside = tuple(name for name in free if name not in at_bound)
+    theta = np.array([getattr(fit["params"], name) for name in inside])
+    return inside, _covariance(fit["jac"][:, [free.index(name) for name in inside]], fit["s2"], theta)
+
+
+def _ln_se(cov: np.ndarray, inside: tuple[str, ...], name: str, fit: dict[str, Any]) -> float:
+    """Standard error of ln ``name`` (its relative standard error) from the natural-unit covariance."""
+    k = inside.index(name)
+    return math.sqrt(max(float(cov[k, k]), 0.0)) / float(getattr(fit["params"], name))
 
 
 def _covariance(jac: np.ndarray, s2: float, theta: np.ndarray) -> np.ndarray | None:
