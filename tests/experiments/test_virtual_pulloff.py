@@ -179,3 +179,20 @@ def test_a_compressive_local_minimum_of_the_mean_force_is_not_a_pulloff() -> Non
     assert _tensile_extremum([-0.3, -0.5, -0.45])
     assert not _tensile_extremum([-0.5, -0.45, -0.4])  # rising from the start: no minimum bracketed
     assert not _tensile_extremum([-0.4, -0.5])
+
+
+def test_published_pulloffs_read_the_simulated_rows_of_one_frequency_with_their_status() -> None:
+    """The lookup the withdrawal and the rig comparison share: only model ``simulation`` at the asked frequency,
+    keyed by h1, status and ratio as written (NaN kept where the family has no pull-off)."""
+    import pandas as pd
+
+    from vibroadhesion.experiments.virtual_pulloff import published_pulloffs
+
+    table = pd.DataFrame({"model": ["simulation", "simulation", "exact_averaging", "simulation"],
+                          "frequency_hz": [200.0, 200.0, 200.0, 300.0], "h1_um": [20.0, 40.0, 20.0, 20.0],
+                          "status": ["pulloff", "contact_loss_before_extremum", "ok", "pulloff"],
+                          "pulloff_ratio": [3.0, math.nan, 2.0, 3.5]})
+    found = published_pulloffs(table, 200.0)
+    assert list(found) == [20.0, 40.0] and found[20.0] == ("pulloff", 3.0)
+    assert found[40.0][0] == "contact_loss_before_extremum" and math.isnan(found[40.0][1])
+    assert published_pulloffs(table, 400.0) == {}

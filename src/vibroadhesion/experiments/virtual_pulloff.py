@@ -443,3 +443,15 @@ def _compliant_prediction(model: str, fixation: Fixation, chi0: float, eta1: flo
     if model == "refined":
         return _refined_compliant_pulloff(fixation.omega_bar(omega_check), fixation, chi0, eta1, law)
     raise ValueError(f"no compliant pull-off prediction for model level {model!r}")
+
+
+def published_pulloffs(table: pd.DataFrame, frequency_hz: float) -> dict[float, tuple[str, float]]:
+    """{h1_um: (status, P_cr/|P_JKR|)} of the simulated rows of a virtual pull-off table at one frequency.
+
+    ``table``: the CSV of the virtual pull-off rules (columns model, frequency_hz, h1_um, status, pulloff_ratio), whose
+    ``simulation`` rows are :func:`simulated_pulloff`'s; read where a later experiment needs the same families
+    (the withdrawal's V -> 0 value, the base rig of the rig comparison) instead of tracing them again.
+    """
+    rows = table[(table["model"] == "simulation") & (table["frequency_hz"] == frequency_hz)]
+    return {float(h1): (str(status), float(ratio))
+            for h1, status, ratio in zip(rows["h1_um"], rows["status"], rows["pulloff_ratio"], strict=True)}

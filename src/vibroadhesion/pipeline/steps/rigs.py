@@ -19,6 +19,7 @@ import pandas as pd
 from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.experiments import rigs
+from vibroadhesion.experiments.virtual_pulloff import published_pulloffs
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.data import Setup
@@ -38,7 +39,6 @@ def rigs_part(setup_json: str | Path, virtual_csvs: Sequence[str | Path], out: s
     families: equal to 6e-14, the rounding of omega_check; not traced again).
     """
     virtual = pd.concat([pd.read_csv(p) for p in virtual_csvs], ignore_index=True)
-    virtual = virtual[virtual["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
     setup, params, chi0 = rig(setup_json)
     (fixation,) = setup_fixations(setup, params["v0"], "compliant")
     omega0 = setup_number(setup, "fixation.natural_frequency")
@@ -56,7 +56,7 @@ def case_table(case: str, setup: Setup, fixation: Fixation, omega0: float, chi0:
     Columns of :func:`vibroadhesion.experiments.rigs.rig_comparison` plus frequency_hz, h1_um, F1_N = force E* R^2
     (Eq. 13) and delta_amplitude_um = delta_amplitude a_o^2/R (Eq. 86); the anti-resonance omega = omega0 with the
     configured damping and undamped (Appendix B). At a test frequency the base rig's pull-offs are ``virtual``'s
-    (simulated rows indexed by frequency_hz, h1_um).
+    (its simulated rows, :func:`vibroadhesion.experiments.virtual_pulloff.published_pulloffs`).
     """
     frequency_hz = omega0 / (2.0 * math.pi) if case == ANTI_RESONANCE else float(case)
     eta1 = [float(groups.eta1(h * 1e-6, setup.radius)) for h in setup.amplitudes_um]
@@ -66,9 +66,8 @@ def case_table(case: str, setup: Setup, fixation: Fixation, omega0: float, chi0:
     else:
         omega_bar = 2.0 * math.pi * frequency_hz / omega0
         cases = [(fixation, [omega_bar])]
-        known = {(omega_bar, e): (str(virtual.at[(frequency_hz, h), "status"]),
-                                  float(virtual.at[(frequency_hz, h), "pulloff_ratio"]))
-                 for e, h in zip(eta1, setup.amplitudes_um, strict=True)}
+        published = published_pulloffs(virtual, frequency_hz)
+        known = {(omega_bar, e): published[float(h)] for e, h in zip(eta1, setup.amplitudes_um, strict=True)}
     table = rigs.rig_comparison(cases, eta1, chi0, n, progress, known)
     c_o, radius = groups.contact_radius_ratio(chi0), setup.radius
     table.insert(0, "frequency_hz", frequency_hz)  # the configured frequency, not omega_bar omega0/2pi's rounding
