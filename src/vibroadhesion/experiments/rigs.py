@@ -165,7 +165,8 @@ def equivalence_summary(table: pd.DataFrame) -> pd.DataFrame:
     """Per (zeta, omega_bar, level): the largest relative difference of the equal-amplitude force rig from the base rig.
 
     Over the strokes, in w_eff/w0, the pull-off ratio and the contact-displacement amplitude: 0 in exact
-    arithmetic (module docstring), so these are the numerical differences of two independent computations.
+    arithmetic (module docstring), so these are the numerical differences of two independent computations, except
+    where neither rig forces the contact (:func:`static_row` on both sides: 0 by construction).
     """
     keys = ["zeta", "omega_bar", "eta1", "level"]
     base = table[table["rig"] == "base"].set_index(keys)
