@@ -69,18 +69,20 @@ def test_finite_difference_jacobian_against_a_cubic_fitted_over_a_wide_grid(name
 
 
 def test_speed_rows_recover_w0_and_n_and_the_same_rows_fitted_as_quasi_static_are_biased() -> None:
-    """200/300/400 Hz x 20, 60 um at V = v0 and 3 v0 (12 rows, all with a pull-off), from w0 +50 %, n -40 %.
+    """200 Hz x 20, 40, 60 um at V = v0 and 3 v0 (6 rows, all with a pull-off), from w0 +50 %, n -40 %.
 
-    As speed rows they recover w0 and n to RECOVERY. Fitted as quasi-static (the speed column dropped: the virtual
-    pull-off, the V -> 0 limit) the same rows give w0 +272 % and n -48 % (measured) with a misfit of 18 %: the
-    withdrawal pulls harder than the quasi-static family (up to 1.7 times at 20 um, V = 3 v0), and the quasi-static
-    model can only reach those forces by a larger w0.
+    As speed rows they recover w0 and n to RECOVERY (one frequency: v0 is not freed, so the search costs 300
+    withdrawals, 18 s, where 200/300/400 Hz x 20, 60 um took 624 and 60 s and recovered the same). Fitted as
+    quasi-static (the speed column dropped: the virtual pull-off, the V -> 0 limit) the same rows give w0 +207 % and
+    n -41 % (measured; +272 % and -48 % from the three frequencies) with a misfit of 19 %: the withdrawal pulls harder
+    than the quasi-static family (up to 1.7 times at 20 um, V = 3 v0), and the quasi-static model can only reach
+    those forces by a larger w0.
     """
-    rows = _rows([(f, h, r * V0_UM_S) for f in (200.0, 300.0, 400.0) for h in (20.0, 60.0) for r in (1.0, 3.0)])
+    rows = _rows([(200.0, h, r * V0_UM_S) for h in (20.0, 40.0, 60.0) for r in (1.0, 3.0)])
     fit = fit_gent_schultz(rows, "simulation", DISTANT, **GEOMETRY)
     assert fit["status"] == "fitted"
     assert max(_errors(fit).values()) < RECOVERY
-    assert [r["status"] for r in fit["row_status"]] == ["pulloff"] * 12
+    assert [r["status"] for r in fit["row_status"]] == ["pulloff"] * 6
     assert [r["withdrawal_speed_um_s"] for r in fit["row_status"]] == rows["withdrawal_speed_um_s"].tolist()
     assert fit["withdrawals_run"] > 0 and fit["families_traced"] == 0
     quasi_static = fit_gent_schultz(rows.drop(columns="withdrawal_speed_um_s"), "simulation", DISTANT, **GEOMETRY)
