@@ -20,7 +20,9 @@ sequence pi/2 +- 10^k / A, on which tanh-sinh quadrature converges fast.
 
 from __future__ import annotations
 
+import csv
 import functools
+from pathlib import Path
 
 import mpmath as mp
 
@@ -38,9 +40,29 @@ def _breakpoints(Abar: mp.mpf) -> list:
     return sorted(points)
 
 
+#: The stored quadratures (tests/reference/j_integrals_mpmath.py writes them from :func:`j_integrals_mp_computed`).
+STORED = Path(__file__).resolve().parent / "reference" / "j_integrals_mpmath.csv"
+
+
 @functools.cache
+def _stored() -> dict[tuple[float, float], tuple[mp.mpf, mp.mpf, mp.mpf]]:
+    """{(n, Abar): (J0, Jc1, J1)} of the stored table, parsed at 50 digits (the table keeps 45)."""
+    with STORED.open(newline="") as handle, mp.workdps(50):
+        return {(float(row["n"]), float(row["Abar"])): (mp.mpf(row["J0"]), mp.mpf(row["Jc1"]), mp.mpf(row["J1"]))
+                for row in csv.DictReader(handle)}
+
+
 def j_integrals_mp(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
-    """(J0, Jc1, J1) at ``DIGITS`` significant digits for the Gent–Schultz law."""
+    """(J0, Jc1, J1) at ``DIGITS`` significant digits: the stored quadrature where (n, Abar) is a row of
+    :data:`STORED` (the points of tests/core/test_integrals.py, whose stored-reference test recomputes a sample of
+    them), else :func:`j_integrals_mp_computed`."""
+    stored = _stored().get((float(n), float(Abar)))
+    return stored if stored is not None else j_integrals_mp_computed(Abar, n)
+
+
+@functools.cache
+def j_integrals_mp_computed(Abar: float, n: float) -> tuple[mp.mpf, mp.mpf, mp.mpf]:
+    """(J0, Jc1, J1) at ``DIGITS`` significant digits for the Gent–Schultz law (the quadrature of the docstring)."""
     # Jc1 is a difference of two O(1) halves that cancel to O(A^n) for small A: carry
     # n*log10(1/A) guard digits so that the result still has DIGITS significant digits.
     guard = 10 + (int(n * -mp.log10(Abar)) + 1 if 0 < Abar < 1 else 0)

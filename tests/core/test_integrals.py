@@ -2,7 +2,8 @@
 
 Every expected number comes from an independent reference:
 
-* ``mpmath_reference.j_integrals_mp``: 30-digit mpmath quadrature of the definitions;
+* ``mpmath_reference.j_integrals_mp``: 30-digit mpmath quadrature of the definitions (stored for the points of
+  :func:`stored_points`, tests/reference/j_integrals_mpmath.csv, a sample recomputed here);
 * a second, 45-digit mpmath evaluation written here in a different variable (the folded form
   over t in (0, pi/2), with its own breakpoints) that checks the 30-digit reference itself;
 * closed forms: the limits J(0) = (1, 0, 1), rigorous bounds on the large-Abar remainders,
@@ -18,6 +19,7 @@ import warnings
 import mpmath as mp
 import numpy as np
 import pytest
+import mpmath_reference
 from conftest import N_PUBLISHED
 from mpmath_reference import j_integrals_mp
 
@@ -186,13 +188,17 @@ def test_abar_zero_gives_exactly_one_zero_one() -> None:
     assert not wrong, f"J(0) - (1, 0, 1) per n: {wrong}"
 
 
+#: The probes of the rule's hardest region (n = 4, Abar ~ 2).
+NEAR_2 = [1.7, 1.9, 1.95, 2.1, 2.15]
+
+
 @pytest.mark.parametrize("n", [4.0])
 def test_documented_1e12_accuracy_holds_near_abar_2(n: float) -> None:
     """Reference: 30-digit mpmath. The module docstring of ``integrals`` promises relative error
     below 1e-13 for Abar in [0, 1e12] and n in [0.05, 4]; probe the hardest region found (n = 4,
     Abar ~ 2, where the integrand's analyticity strip |Im y| < pi/n is narrowest).
     """
-    Abar = np.array([1.7, 1.9, 1.95, 2.1, 2.15])
+    Abar = np.array(NEAR_2)
     values = j_integrals(Abar, n)
     errs = [max(_errors(float(values[k][i]), j_integrals_mp(float(a), n)[k]) for k in range(3))
             for i, a in enumerate(Abar)]
@@ -216,6 +222,26 @@ def test_hard_cases_match_mpmath_to_1e12(n: float, Abar: float) -> None:
     ref = j_integrals_mp(Abar, n)
     errs = [_errors(float(values[k]), ref[k]) for k in range(3)]
     assert max(errs) < REL_TOL, f"n={n}, Abar={Abar}: relative errors {errs}"
+
+
+def stored_points() -> list[tuple[float, float]]:
+    """(n, Abar) of the stored 30-digit references (tests/reference/j_integrals_mpmath.csv): the grid of each n, the
+    hard cases and the probes near Abar = 2, each once, in that order."""
+    grid = [(n, float(a)) for n in N_VALUES for a in _abar_grid(n)]
+    return list(dict.fromkeys([*grid, *((float(n), float(a)) for n, a in HARD_CASES), *((4.0, a) for a in NEAR_2)]))
+
+
+def test_stored_reference_is_the_mpmath_quadrature() -> None:
+    """The stored table holds exactly :func:`stored_points`, and a sample of its rows equals a fresh 30-digit
+    quadrature to 1e-25 relative (it keeps 45 digits of it): each n at Abar = 1e-12 (Jc1's cancellation) and 30 (the
+    boundary layer), and n = 4 at Abar = 1e12 (the large-Abar end; 4 s in all, the whole table 75 s)."""
+    stored = mpmath_reference._stored()
+    assert list(stored) == stored_points()
+    sample = [(n, a) for n in N_VALUES for a in (1e-12, 30.0)] + [(4.0, 1e12)]
+    for n, a in sample:
+        fresh = mpmath_reference.j_integrals_mp_computed(a, n)
+        with mp.workdps(40):
+            assert all(abs(stored[n, a][k] - fresh[k]) <= mp.mpf("1e-25") * abs(fresh[k]) for k in range(3)), (n, a)
 
 
 def _reference_rule() -> tuple[np.ndarray, np.ndarray]:
