@@ -3,7 +3,8 @@
 Usage: python benchmarks/j_integrals.py [OUT_CSV [OUT_TXT]]
 
 Prints the table; writes it as CSV and text when paths are given. The 30-digit reference is
-the tests' own mpmath evaluation of Eqs. (28), (29), (36) (tests/mpmath_reference.py). Each method
+the tests' own mpmath evaluation of Eqs. (28), (29), (36) (tests/mpmath_reference.py; stored at the error points,
+tests/reference/j_integrals_mpmath.csv). Each method
 is timed REPEATS times, the two in turn (min and median), with the machine's load before and after.
 """
 

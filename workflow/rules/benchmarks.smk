@@ -3,6 +3,7 @@ rule benchmark_j_integrals:
     input:
         script="benchmarks/j_integrals.py",
         reference="tests/mpmath_reference.py",
+        reference_table="tests/reference/j_integrals_mpmath.csv",
         code=code("benchmarks/j_integrals.py"),
     output:
         csv="results/benchmarks/j_integrals.csv",
