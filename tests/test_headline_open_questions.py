@@ -103,7 +103,7 @@ def _time_domain(results: Path) -> pd.DataFrame:
 
 
 def test_compliant_speeds_stop_within_one_percent(pipeline_results: Path) -> None:
-    """The stopping rule (config withdrawal.stop_within): monotone deviations, the slowest speed run per test."""
+    """The stopping rule (config withdrawal.stop): monotone deviations, the slowest speed run per test."""
     sweep = _time_domain(pipeline_results)
     done = sweep[sweep["status"] == "pulloff"].sort_values("V_over_v0")
     for _, test in done.groupby(["fixation", "frequency_hz", "h1_um"]):
@@ -115,7 +115,8 @@ def test_compliant_speeds_stop_within_one_percent(pipeline_results: Path) -> Non
     check("monotonically as V -> 0 in every test, so the limits are those of the full sweep. At 40–100 um V = {3} or "
           "{10} v0 is already within 1 %", [slowest.min(), slowest.max()])
     skipped = sweep[sweep["status"] == "skipped_within_tolerance"]
-    assert (skipped["fixation"] == "compliant").all() and skipped["mean_pulloff_ratio"].isna().all()
+    assert skipped["mean_pulloff_ratio"].isna().all()
+    assert (skipped.loc[skipped["fixation"] == "rigid", "V_over_v0"] < 1.0).all()  # rigid: every test reaches 1 v0
 
 
 def test_rigid_pulloff_at_v0(pipeline_results: Path) -> None:
@@ -172,11 +173,12 @@ def test_slow_flow_tends_to_the_force_minimum(pipeline_results: Path) -> None:
 
 
 def test_slow_flow_against_the_time_domain(pipeline_results: Path) -> None:
-    """method_agreement of speed_sweep.csv: where both methods ran (rigid, 0.3 and 1 v0)."""
+    """method_agreement of speed_sweep.csv: where both methods ran (rigid: 1 v0 at every test, 0.3 v0 at 20 um)."""
     from vibroadhesion.experiments.speed_sweep import method_agreement
 
     both = method_agreement(read(pipeline_results, "speed_sweep"))
-    assert set(both["V_over_v0"]) == {0.3, 1.0} and len(both) == 30
+    assert set(both["V_over_v0"]) == {0.3, 1.0} and len(both) == 18
+    assert (both.loc[both["V_over_v0"] == 0.3, "h1_um"] == 20.0).all()
     thin, thick = both[both["h1_um"] == 20.0], both[both["h1_um"] > 20.0]
     mean, peak = "mean_pulloff_ratio_difference", "peak_pulloff_ratio_difference"
     at_v0 = read(pipeline_results, "speed_sweep")
@@ -184,7 +186,7 @@ def test_slow_flow_against_the_time_domain(pipeline_results: Path) -> None:
     effect = at_v0.pivot_table(index=["frequency_hz", "h1_um"], columns="method", values="relative_deviation")
     ratio = effect["time_domain"] / effect["slow_flow"]
     check("at 20 um the period-mean pull-offs agree to {0.03}–{0.13} % (the difference falls from 200 to 400 Hz, as "
-          "1/omega) and the peaks to {bound:6.5e-6}; at 40–100 um the slow flow is {0.05}–{22} % high",
+          "1/omega) and the peaks to {bound:6.5e-6}; at 40–100 um the slow flow is {0.05}–{21} % high",
           [100 * thin[mean].abs().min(), 100 * thin[mean].abs().max(), thin[peak].abs(), 100 * thick[mean].min(),
            100 * thick[mean].max()])
     check("its speed effect at V = v0 is {1.4}–{96} times smaller than the simulated one", [ratio.min(), ratio.max()])

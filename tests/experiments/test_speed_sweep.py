@@ -96,7 +96,7 @@ def test_rows_of_the_200hz_test() -> None:
 
 
 def test_stopping_rule_skips_only_speeds_below_the_first_within_tolerance_and_keeps_the_limits() -> None:
-    """200 Hz, 40 um, rigid at 3, 1, 0.3 v0: deviations 1.9 %, 0.57 %, 0.17 % (the full sweep): with stop_within 1 %
+    """200 Hz, 40 um, rigid at 3, 1, 0.3 v0: deviations 1.9 %, 0.57 %, 0.17 % (the full sweep): stopping within 1 %
     the sweep ends at 1 v0, 0.3 v0 is skipped, the rows run are the full sweep's bit for bit (the same integration),
     and the 1 % and 5 % limits are those of the full sweep."""
     from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
@@ -107,7 +107,7 @@ def test_stopping_rule_skips_only_speeds_below_the_first_within_tolerance_and_ke
     speeds = [0.3, 1.0, 3.0]
     kwargs = {"fixation_name": "rigid", "frequency_hz": 200.0, "v0_um_s": V0 * 1e6, "quasi_static": family}
     full = speed_sweep.sweep_table(problems, speeds, **kwargs)
-    stopped = speed_sweep.sweep_table(problems, speeds, stop_within=0.01, **kwargs)
+    stopped = speed_sweep.sweep_table(problems, speeds, stop=speed_sweep.StopRule(0.01), **kwargs)
     assert full["V_over_v0"].tolist() == stopped["V_over_v0"].tolist() == speeds
     assert (full["status"] == "pulloff").all()
     assert 0.01 < full["relative_deviation"].iloc[2] < 0.05 and abs(full["relative_deviation"].iloc[1]) <= 0.01
@@ -115,3 +115,17 @@ def test_stopping_rule_skips_only_speeds_below_the_first_within_tolerance_and_ke
     assert stopped.iloc[0][["mean_pulloff_ratio", "peak_pulloff_ratio", "periods"]].isna().all()
     pd.testing.assert_frame_equal(stopped.iloc[1:], full.iloc[1:])
     pd.testing.assert_frame_equal(speed_sweep.quasi_static_limits(stopped), speed_sweep.quasi_static_limits(full))
+
+
+def test_stop_rule_from_the_config_and_its_not_above_limit() -> None:
+    """config withdrawal.stop: within null runs every speed, not_above null sets no limit. At 200 Hz, 40 um, rigid,
+    3 v0 (1.9 %) and 1 v0 (0.57 %): with not_above = 0.5 the rule cannot stop at 1 v0, so 0.3 v0 runs too."""
+    assert speed_sweep.StopRule.from_config({"within": None, "not_above": 1.0}) is None
+    assert speed_sweep.StopRule.from_config({"within": 0.01, "not_above": None}) == speed_sweep.StopRule(0.01, math.inf)
+    assert speed_sweep.StopRule.from_config({"within": 0.01, "not_above": 1}) == speed_sweep.StopRule(0.01, 1.0)
+    omega = float(omega_check(200.0, V0, RADIUS))
+    problems = speed_sweep.rig_problems(CHI0, N_PUBLISHED, omega, RADIUS, [40.0], Fixation.rigid())
+    table = speed_sweep.sweep_table(problems, [0.3, 1.0, 3.0], fixation_name="rigid", frequency_hz=200.0,
+                                    v0_um_s=V0 * 1e6, quasi_static={40.0: 7.435},
+                                    stop=speed_sweep.StopRule(0.01, not_above=0.5))
+    assert (table["status"] == "pulloff").all()

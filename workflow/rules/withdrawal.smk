@@ -6,7 +6,7 @@
 
 
 rule withdrawal:
-    """Every amplitude of the rig withdrawn at the speeds of config withdrawal.speed_ratios down to stop_within (simulated)."""
+    """Every amplitude of the rig withdrawn at the speeds of config withdrawal.speed_ratios down to the stopping rule (simulated)."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
@@ -23,7 +23,7 @@ rule withdrawal:
         frequency=r"[0-9.]+",
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
-        stop_within=lambda wildcards: config["withdrawal"]["stop_within"][wildcards.fixation],
+        stop=lambda wildcards: config["withdrawal"]["stop"][wildcards.fixation],
     script:
         "../scripts/withdrawal.py"
 

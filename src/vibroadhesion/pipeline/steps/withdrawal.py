@@ -11,7 +11,7 @@ Time-domain rows are simulated, slow-flow rows averaged (``method``, ``source``)
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 
 import pandas as pd
@@ -27,10 +27,11 @@ Path_ = str | Path
 
 
 def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, fixation: FixationCase,
-                    frequency_hz: float, speed_ratios: Sequence[float], stop_within: float | None = None) -> None:
+                    frequency_hz: float, speed_ratios: Sequence[float], stop: Mapping[str, float | None]) -> None:
     """results/withdrawal/{fixation}_{frequency}Hz.csv: every amplitude of the rig at each V/v0 (Eq. 11').
 
-    ``stop_within``: the stopping rule of :func:`vibroadhesion.experiments.speed_sweep.speed_rows` (None: every speed).
+    ``stop``: config withdrawal.stop of the fixation
+    (:meth:`vibroadhesion.experiments.speed_sweep.StopRule.from_config`).
 
     The V -> 0 value of each test is read from ``virtual_pulloff_csv`` (the published virtual pull-off of the
     fixation, the same family of steady states).
@@ -40,12 +41,13 @@ def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, f
     omega_check = experiment_omega_check(setup, params["v0"])[frequency_hz]
     problems = speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius, setup.amplitudes_um, case)
     quasi_static = speed_sweep.quasi_static_ratios(pd.read_csv(virtual_pulloff_csv), frequency_hz)
+    rule = speed_sweep.StopRule.from_config(stop)
     progress = ProgressBar(len(problems), "amplitudes")
     parts = []
     for h1, problem in problems:
         parts.append(speed_sweep.sweep_table([(h1, problem)], speed_ratios, fixation_name=fixation,
                                              frequency_hz=frequency_hz, v0_um_s=params["v0"] * 1e6,
-                                             quasi_static=quasi_static, stop_within=stop_within))
+                                             quasi_static=quasi_static, stop=rule))
         progress.advance(1, f"{fixation}, {frequency_hz:g} Hz, h1 = {h1:g} um")
     write_csv(pd.concat(parts, ignore_index=True), out)
 
