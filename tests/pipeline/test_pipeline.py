@@ -59,8 +59,9 @@ def _copy_repo(dest: Path) -> Path:
             shutil.copytree(src, dest / name, ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
         else:
             shutil.copy2(src, dest / name)
-    (dest / "tests").mkdir()
-    shutil.copy2(ROOT / "tests" / "mpmath_reference.py", dest / "tests")
+    (dest / "tests" / "reference").mkdir(parents=True)
+    for name in ("mpmath_reference.py", "reference/j_integrals_mpmath.csv"):  # the J-integral benchmark's reference
+        shutil.copy2(ROOT / "tests" / name, dest / "tests" / name)
     return dest
 
 
