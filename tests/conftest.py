@@ -7,8 +7,9 @@ deliberately uses another value writes that value itself. ``data/setup.yaml`` ho
 numbers for the pipeline; ``tests/pipeline/test_data.py`` checks that file against these.
 
 Fixture ``pipeline_results``: the ``results/`` directory of one ``snakemake -c2 all validation`` run
-(about 3-5 min on 2 cores) in a temporary copy of the repository (the files ``git ls-files``
-lists, as they are in the working tree), made once per session. Set the environment variable
+(about 2-4 min on 2 cores) in a temporary copy of the repository (the files ``git ls-files``
+lists, as they are in the working tree), made once per session and shared by the xdist workers; tests
+read it and never change it (one that edits the data works in a copy). Set the environment variable
 ``VIBROADHESION_RESULTS`` to a finished results directory (for example ``results`` after your own
 run) to use it instead of running the pipeline.
 """
@@ -67,15 +68,35 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
             item.add_marker(pytest.mark.pipeline)
 
 
+def _build(work: Path) -> None:
+    """``<venv>/bin/snakemake -c2 all validation`` in the repository copy ``work`` (the assertion names a failure)."""
+    snakemake = Path(sys.prefix) / "bin" / "snakemake"
+    out = subprocess.run([str(snakemake), "-c2", "all", "validation"], cwd=work, capture_output=True, text=True,
+                         timeout=3600)
+    assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+
+
 @pytest.fixture(scope="session")
 def pipeline_results(tmp_path_factory: pytest.TempPathFactory) -> Path:
     """``results/`` of ``<venv>/bin/snakemake -c2 all validation`` in a copy of the repository, or $VIBROADHESION_RESULTS."""
     finished = os.environ.get("VIBROADHESION_RESULTS")
     if finished:
         return Path(finished)
-    work = _copy_tracked_files(tmp_path_factory.mktemp("repository"))
-    snakemake = Path(sys.prefix) / "bin" / "snakemake"
-    out = subprocess.run([str(snakemake), "-c2", "all", "validation"], cwd=work, capture_output=True, text=True,
-                         timeout=3600)
-    assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+    if "PYTEST_XDIST_WORKER" not in os.environ:
+        work = _copy_tracked_files(tmp_path_factory.mktemp("repository"))
+        _build(work)
+        return work / "results"
+    # Under pytest-xdist (pyproject.toml: -n 2) the workers share one build in their common temporary directory:
+    # the first to get the lock builds, the other waits for it (the pattern of pytest-xdist's documentation).
+    import fcntl  # POSIX; the suite runs on Linux (CI)
+
+    shared = tmp_path_factory.getbasetemp().parent
+    work = shared / "repository-all-validation"
+    built = shared / "repository-all-validation.built"
+    with (shared / "repository-all-validation.lock").open("w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not built.exists():
+            shutil.rmtree(work, ignore_errors=True)
+            _build(_copy_tracked_files(work))
+            built.touch()
     return work / "results"

@@ -207,7 +207,7 @@ def test_the_slurm_executor_is_locked_in_the_cluster_group() -> None:
     assert pins["snakemake-executor-plugin-slurm"][1] and pins["snakemake-executor-plugin-slurm-jobstep"][1]
 
 
-@pytest.mark.parametrize("tool", ["pytest", "ruff", "mypy", "snakefmt"])
+@pytest.mark.parametrize("tool", ["pytest", "pytest-xdist", "ruff", "mypy", "snakefmt"])
 def test_test_tools_are_in_the_extra_and_the_lock(tool: str) -> None:
     assert tool in {Requirement(r).name for r in PYPROJECT["project"]["optional-dependencies"]["test"]}
     assert canonicalize_name(tool) in _pins()
