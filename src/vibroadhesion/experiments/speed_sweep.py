@@ -30,7 +30,7 @@ quasi-static family there. Each row gives
   and speed (:func:`slow_flow_rows`, slow times) and placed at each frequency (:func:`at_frequency`).
 
 Stopping rule (:class:`StopRule`, config ``withdrawal.stop``). The slowest speeds cost the most (the periods grow as
-1/V: at the compliant fixation 68 % of the full sweep's steps were at V = v0, and 98 % of those at 40-100 um, where
+1/V: at the compliant fixation 69 % of the full sweep's steps were at V = v0, and 98 % of those at 40-100 um, where
 V = 3 v0 was already within 0.6 % of the quasi-static value; at the rigid one 70 % at 0.3 v0). The speeds of a test
 therefore run from the fastest down, and the first speed at or below ``not_above`` whose period-mean pull-off is
 within ``within`` of the quasi-static value ends it: the slower speeds get a row of status
