@@ -68,12 +68,14 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
             item.add_marker(pytest.mark.pipeline)
 
 
-def _build(work: Path) -> None:
-    """``<venv>/bin/snakemake -c2 all validation`` in the repository copy ``work`` (the assertion names a failure)."""
+def _built_copy(work: Path) -> Path:
+    """``results/`` of ``<venv>/bin/snakemake -c2 all validation`` in a copy of the repository made at ``work``."""
+    _copy_tracked_files(work)
     snakemake = Path(sys.prefix) / "bin" / "snakemake"
     out = subprocess.run([str(snakemake), "-c2", "all", "validation"], cwd=work, capture_output=True, text=True,
                          timeout=3600)
     assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+    return work / "results"
 
 
 @pytest.fixture(scope="session")
@@ -83,9 +85,7 @@ def pipeline_results(tmp_path_factory: pytest.TempPathFactory) -> Path:
     if finished:
         return Path(finished)
     if "PYTEST_XDIST_WORKER" not in os.environ:
-        work = _copy_tracked_files(tmp_path_factory.mktemp("repository"))
-        _build(work)
-        return work / "results"
+        return _built_copy(tmp_path_factory.mktemp("repository"))
     # Under pytest-xdist (pyproject.toml: -n 2) the workers share one build in their common temporary directory:
     # the first to get the lock builds, the other waits for it (the pattern of pytest-xdist's documentation).
     import fcntl  # POSIX; the suite runs on Linux (CI)
@@ -97,6 +97,6 @@ def pipeline_results(tmp_path_factory: pytest.TempPathFactory) -> Path:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not built.exists():
             shutil.rmtree(work, ignore_errors=True)
-            _build(_copy_tracked_files(work))
+            _built_copy(work)
             built.touch()
     return work / "results"

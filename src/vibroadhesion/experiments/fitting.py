@@ -268,9 +268,8 @@ def v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
 def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...], v0_note: str) -> dict[str, Any]:
     """Status, estimates, covariance (Gauss-Newton, J^T J at the optimum, in logarithms), residuals."""
     inside, cov = _inside_and_covariance(fit, free, fit["at_bound"])
-    distance = fit.get("bound_distance", {})
     se = {name: _ln_se(cov, inside, name, fit) for name in inside} if cov is not None else {}
-    near = [name for name in se if distance.get(name, math.inf) < min(_NEAR_BOUND, _BOUND_SE * se[name])]
+    near = [name for name in se if fit["bound_distance"][name] < min(_NEAR_BOUND, _BOUND_SE * se[name])]
     notes = [f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
              f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"]]
     notes += [f"{name} = {getattr(fit['params'], name):.4g} {UNITS[name]} ends within 1 % and {_BOUND_SE:g} standard "
