@@ -24,6 +24,7 @@ from conftest import N_PUBLISHED
 from mpmath_reference import j_integrals_mp
 
 from vibroadhesion.core.integrals import (
+    abar_for_abs_jc1,
     folded_rule,
     gent_schultz_u,
     j_integrals,
@@ -31,6 +32,7 @@ from vibroadhesion.core.integrals import (
     j_integrals_general,
     j_integrals_large_Abar,
     j_integrals_small_Abar,
+    jc1_log_slope,
 )
 from vibroadhesion.core.ratelaw import GentSchultz
 
@@ -535,3 +537,38 @@ def test_nonpositive_n_raises_value_error(bad_n: float) -> None:
         j_integrals(1.0, bad_n)
     with pytest.raises(ValueError):
         GentSchultz(bad_n)
+
+
+# ----------------------------------------------------------------------------- the inverse of |Jc1|
+
+
+def test_inverse_of_jc1_returns_the_stored_mpmath_abar() -> None:
+    """abar_for_abs_jc1 at ln|Jc1| of every stored 30-digit reference with Jc1 != 0 (9 n from 0.05 to 4, Abar from
+    1e-12 to 1e12 and the hard cases to 1e-300) returns its Abar: relative error below 2e-13/n + 1e-14 |ln Abar|, the
+    rule's 1e-13 bound on |Jc1| divided by the least slope n/2 of ln|Jc1| in ln Abar, plus the 1e-14 + 4 eps |z|
+    stop of Newton's method in z = ln Abar. All Abar of one n in one call."""
+    by_n: dict[float, list[tuple[float, float]]] = {}
+    for (n, a), (_, jc1, _) in mpmath_reference._stored().items():
+        if jc1 != 0 and n * math.log(a) > math.log(1e-300):  # Abar^n representable
+            by_n.setdefault(n, []).append((a, float(mp.log(-jc1))))
+    assert sorted(by_n) == sorted(N_VALUES)
+    for n, rows in by_n.items():
+        abar = np.array([a for a, _ in rows])
+        got = abar_for_abs_jc1(np.array([log_jc1 for _, log_jc1 in rows]), n, "stored")
+        assert np.all(np.abs(got / abar - 1) <= 2e-13 / n + 1e-14 * np.abs(np.log(abar)) + 1e-14), n
+
+
+@pytest.mark.parametrize("n", [0.05, N_PUBLISHED, 4.0])
+def test_jc1_log_slope_is_within_n_over_2_and_n_falling_and_the_derivative(n: float) -> None:
+    """The slope of ln|Jc1| in ln Abar lies in (n/2, n] (to rounding) and falls with Abar (the concavity Newton's start relies
+    on, proved in the docstring), over Abar from 1e-12 to 1e130 (or the overflow limit); ln|Jc1| is that of
+    j_integrals; and the slope is the derivative: a central difference with step h = 1e-3 in ln Abar agrees to 1e-6
+    (its error h^2/6 times the third derivative, at most n^3 in size, plus 1e-13/h of the rule's error)."""
+    z = np.linspace(math.log(1e-12), min(600.0 / n, 300.0), 3001)
+    log_jc1, slope = jc1_log_slope(np.exp(z), n)
+    assert np.all((slope >= n / 2 * (1 - 1e-14)) & (slope <= n * (1 + 1e-14)))  # n/2 at the large end, rounded
+    assert np.all(np.diff(slope) <= 1e-14 * n)
+    h = 1e-3
+    difference = (jc1_log_slope(np.exp(z + h), n)[0] - jc1_log_slope(np.exp(z - h), n)[0]) / (2 * h)
+    assert np.max(np.abs(difference - slope)) < 1e-6
+    assert np.allclose(log_jc1, np.log(-j_integrals(np.exp(z), n)[1]), rtol=0, atol=1e-14 * np.abs(log_jc1).max())

@@ -14,6 +14,9 @@ import math
 from dataclasses import dataclass
 from typing import Literal
 
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
 from vibroadhesion.core.groups import contact_radius_ratio
 
 #: "compliant" (the spring–mass–dashpot) is the CSV value of the column ``fixation``.
@@ -139,7 +142,9 @@ class Fixation:
         denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
         return math.inf if denominator == 0 else abs(d) / denominator
 
-    def indentation_response(self, abar_m: float, chi0: float, omega_check: float, eta1: float, force: float) -> float:
+    def indentation_response(
+        self, abar_m: ArrayLike, chi0: float, omega_check: float, eta1: float, force: float
+    ) -> NDArray[np.float64]:
         """|delta_c| / R = |force - eta1 d| / |d + 2 c_o abar_m| at leading order, both rigs (Eqs. 13, 20-22, 43).
 
         eta1 = h1/R of the base rig, ``force`` = F1/(E* R^2) of the force rig (Eq. 13). The oscillating forcing of
@@ -148,14 +153,16 @@ class Fixation:
         |F1 - h1 D|; divided by E* R^2 this is the formula. force = 0: eta1 times :meth:`transmissibility`. eta1 = 0:
         the mass on the fixation and the contact spring in parallel (Fig. 10a of Appendix B with damping), finite at
         the base rig's anti-resonance d = 0, where it is force/(2 c_o abar_m). Rigid: eta1 (a force is a ValueError).
-        inf at the contact resonance (:meth:`contact_resonance`).
+        inf at the contact resonance (:meth:`contact_resonance`). Elementwise in ``abar_m`` (the shape of it).
         """
+        abar_m = np.asarray(abar_m, dtype=float)
         if self.is_rigid:
             _require(force == 0, f"force: a rigid fixation carries the force of Eq. (13) itself, got {force!r}")
-            return eta1
+            return np.full_like(abar_m, eta1)
         d = self.d(omega_check)
-        denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
-        return math.inf if denominator == 0 else abs(force - eta1 * d) / denominator
+        denominator = np.abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
+        with np.errstate(divide="ignore"):
+            return np.where(denominator == 0, math.inf, abs(force - eta1 * d) / denominator)
 
     @property
     def csv_constants(self) -> dict[str, object]:

@@ -50,13 +50,14 @@ The rule is several thousand times faster than adaptive quadrature (see ``benchm
 from __future__ import annotations
 
 import math
-from functools import cache
+from functools import cache, partial
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy.special import beta, gammaln, roots_jacobi
 
 from vibroadhesion.core.ratelaw import GentSchultz, RateLaw
+from vibroadhesion.numerics.roots import solve_increasing_bounded_slope
 
 #: Three arrays of one shape: (J0, Jc1, J1), or nodes, sin t and weights of the rule.
 Triple = tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]
@@ -219,3 +220,55 @@ def j_integrals_small_Abar(Abar: ArrayLike, n: float) -> Triple:
         -2.0 / math.pi * an * _cos_power_integral(n + 1) + a2n * _cos_power_integral(2 * n + 1) / math.pi,
         1.0 + a2n * _sin2_cos_power_integral(2 * n) / (2 * math.pi),
     )
+
+
+def jc1_log_slope(Abar: NDArray[np.float64], n: float) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """ln|Jc1| and s = d ln|Jc1| / d ln Abar of the Gent–Schultz law, on the rule of :func:`j_integrals` (Eq. 29).
+
+    With u_k = (Abar sin t_k)^n, |Jc1| = sum_k w_k D(u_k), D(u) = u/sqrt(1+u) and w_k > 0 the Jc1 weights;
+    d D(u_k)/d ln Abar = n D(u_k) q(u_k), q(u) = (2+u)/(2(1+u)) in (1/2, 1]. So s is n times the mean of q
+    weighted by w_k D(u_k): s lies in (n/2, n]. It falls as Abar grows (every u_k rises, q falls, and the
+    weight moves to the nodes of larger u_k, where q is smaller), so ln|Jc1| is concave in ln Abar. 1-d
+    ``Abar``, positive, with Abar^n far from underflow (ln|Jc1| is -inf where it underflows).
+    """
+    u = gent_schultz_u(Abar, n)
+    w = folded_rule()[2][:, 1]
+    d = u / np.sqrt(1.0 + u)
+    jc1 = d @ w
+    return np.log(jc1), n * ((d * ((1.0 + 0.5 * u) / (1.0 + u))) @ w) / jc1
+
+
+#: Below this u = Abar^n, D(u) = u (1 - u/2 + ...) is u to rounding: |Jc1| = Abar^n sum_k w_k (sin t_k)^n.
+_LINEAR_U = 1e-17
+
+
+def abar_for_abs_jc1(log_target: ArrayLike, n: float, what: str) -> NDArray[np.float64]:
+    """Abar with ln|Jc1(Abar)| = log_target elementwise: the amplitude equations' inversion (Eqs. 29, 43, 73–75).
+
+    |Jc1| rises from 0 to infinity with Abar, its log concave in ln Abar with slope in (n/2, n]
+    (:func:`jc1_log_slope`). It lies below both c1 Abar^n (D(u) <= u; c1 = sum_k w_k (sin t_k)^n on the
+    rule, (2/pi) int cos^(n+1) exactly) and c2 Abar^(n/2) (:func:`j_integrals_large_Abar`, whose remainder is
+    positive), so the larger of the two roots of those bounds lies at or below the root: the start of
+    Newton's method (:func:`vibroadhesion.numerics.roots.solve_increasing_bounded_slope`, to 1e-14 in
+    ln Abar). Where c1 Abar^n < _LINEAR_U the first bound is |Jc1| to rounding and its root is returned.
+    :class:`vibroadhesion.numerics.roots.NoRootError` naming ``what`` where the root may lie beyond the
+    rule's range (n ln Abar > 690).
+    """
+    log_target = np.atleast_1d(np.asarray(log_target, dtype=float))
+    c1 = float(folded_rule()[1] ** n @ folded_rule()[2][:, 1])
+    c2 = 2.0 * _cos_power_integral(0.5 * n + 1.0) / math.pi
+    z = np.maximum((log_target - math.log(c1)) / n, (log_target - math.log(c2)) / (0.5 * n))
+    newton = np.flatnonzero(n * z + math.log(c1) >= math.log(_LINEAR_U))
+    if newton.size:
+        z[newton] = solve_increasing_bounded_slope(
+            partial(_jc1_log_excess, log_target=log_target[newton], n=n), z[newton], 0.5 * n, n,
+            z_max=math.log(_MAX_ABAR_POWER) / n, what=what)
+    return np.exp(z)
+
+
+def _jc1_log_excess(
+    z: NDArray[np.float64], index: NDArray[np.intp], log_target: NDArray[np.float64], n: float
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """ln|Jc1(e^z)| - log_target[index] and its slope in z (:func:`jc1_log_slope`; Eq. 29)."""
+    log_jc1, slope = jc1_log_slope(np.exp(z), n)
+    return log_jc1 - log_target[index], slope

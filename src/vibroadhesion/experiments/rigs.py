@@ -82,7 +82,7 @@ def leading_row(rig: str, eta1: float, fixation: Fixation, chi0: float, law: Gen
     if stable.size:
         k = int(stable[0])
         abar_m = float(states.abar_m[k])
-        response = fixation.indentation_response(abar_m, chi0, omega_check, base_eta1, force)
+        response = float(fixation.indentation_response(abar_m, chi0, omega_check, base_eta1, force))
         row |= {"abar_m": abar_m, "Abar": float(states.Abar[k]), "w_eff_ratio": float(states.w_eff_ratio[k]),
                 "A_over_am": float(states.A_over_am[k]), "delta_amplitude": response / contact_radius_ratio(chi0)**2}
     return row

@@ -73,10 +73,10 @@ from numpy.typing import ArrayLike, NDArray
 from vibroadhesion.core import groups
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.groups import contact_radius_ratio
-from vibroadhesion.core.integrals import j_integrals_for_law
+from vibroadhesion.core.integrals import abar_for_abs_jc1, j_integrals
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.records import SteadyState, stacked
-from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
+from vibroadhesion.numerics.roots import NoRootError
 from vibroadhesion.numerics.scan import (
     Node,
     approach_pole,
@@ -108,52 +108,63 @@ def mean_indentation(abar_m: ArrayLike, j0: ArrayLike) -> NDArray[np.float64]:
     return abar_m**2 - np.asarray(j0) * np.sqrt(abar_m)
 
 
-def internal_variable(
-    abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float,
+def internal_variables(
+    abar_m: ArrayLike, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float,
     force: float = 0.0,
-) -> float:
-    """Abar on the amplitude equation (II') at a given abar_m, d of the fixation at ``omega_check`` (Eqs. 13, 43, 105).
+) -> NDArray[np.float64]:
+    """Abar on the amplitude equation (II') at each abar_m, d of the fixation at ``omega_check`` (Eqs. 13, 43, 105).
 
     The root of |Jc1(Abar)| = target,
 
         target = |force - eta1 d| / (c_o^2 abar_m^(1/2) |d + 2 c_o abar_m|)
 
     (force = F1/(E* R^2) of the force rig, 0 for the base rig: then eta1 |d| in the numerator, (II)),
-    unique because |Jc1| rises strictly from 0 to infinity (module docstring). A zero numerator
-    (no excitation, or the base rig at its anti-resonance d = 0, Appendix B) gives Abar = 0 exactly;
-    at the contact resonance the amplitude is unbounded and :class:`NoRootError` is raised.
+    unique because |Jc1| rises strictly from 0 to infinity (module docstring); solved for every abar_m at
+    once (:func:`vibroadhesion.core.integrals.abar_for_abs_jc1`, to 1e-14 in ln Abar). A zero numerator
+    (no excitation, or the base rig at its anti-resonance d = 0, Appendix B) gives Abar = 0 exactly; at
+    the contact resonance the amplitude is unbounded and :class:`NoRootError` is raised.
     """
-    if not (abar_m > 0 and math.isfinite(abar_m)):
-        raise ValueError(f"abar_m must be a positive number, got {abar_m!r}")
+    abar_m = np.atleast_1d(np.asarray(abar_m, dtype=float))
+    if not np.all((abar_m > 0) & np.isfinite(abar_m)):
+        raise ValueError(f"abar_m must be positive numbers, got {abar_m[~((abar_m > 0) & np.isfinite(abar_m))]!r}")
     if eta1 < 0 or not math.isfinite(eta1):
         raise ValueError(f"eta1 must be finite and non-negative, got {eta1!r}")
     if force < 0 or not math.isfinite(force):
         raise ValueError(f"force must be finite and non-negative, got {force!r}")
     response = fixation.indentation_response(abar_m, chi0, omega_check, eta1, force)
-    if math.isinf(response):
-        raise NoRootError(
-            f"Eq. (43) at abar_m = {abar_m:.6g}: contact resonance (d + 2 c_o abar_m = 0), amplitude unbounded"
-        )
-    if response == 0:
-        return 0.0
-    log_target = math.log(response) - math.log(float(indentation_amplitude(abar_m, 1.0, chi0)))
-    return solve_log_increasing(
-        lambda z: float(np.log(np.abs(j_integrals_for_law(math.exp(z), law)[1]))) - log_target,
-        what=f"Eq. (43) at abar_m = {abar_m:.6g}, eta1 = {eta1:.6g}",
-    )
+    if np.any(np.isinf(response)):
+        raise NoRootError(f"Eq. (43) at abar_m = {abar_m[np.isinf(response)][0]:.6g}: contact resonance "
+                          "(d + 2 c_o abar_m = 0), amplitude unbounded")
+    Abar = np.zeros_like(abar_m)
+    excited = response > 0
+    log_target = np.log(response[excited]) - np.log(indentation_amplitude(abar_m[excited], 1.0, chi0))
+    Abar[excited] = abar_for_abs_jc1(log_target, law.n, f"Eq. (43) at eta1 = {eta1:.6g}, force = {force:.6g}")
+    return Abar
 
 
-def mean_balance_residual(abar_m: float, j0: float, fixation: Fixation, chi0: float, base_offset: float) -> float:
+def internal_variable(
+    abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float,
+    force: float = 0.0,
+) -> float:
+    """Abar on the amplitude equation (II') at one abar_m (:func:`internal_variables`; Eqs. 13, 43, 105)."""
+    return float(internal_variables(abar_m, eta1, fixation, chi0, law, omega_check, force)[0])
+
+
+def mean_balance_residual(
+    abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float, base_offset: float
+) -> NDArray[np.float64]:
     """Eq. (III) of the module docstring, left minus right; for rigid fixation deltabar_m - base_offset (Eq. 56).
+
+    Elementwise in ``abar_m`` and ``j0``.
 
     ``base_offset`` = (hhat - h0) R / a_o^2 (positive: base pushed towards the indenter); for a
     rigid fixation it is the imposed mean indentation. The weight mu is the fixation's (Eq. 81).
     """
-    deltabar_m = float(mean_indentation(abar_m, j0))
+    deltabar_m = mean_indentation(abar_m, j0)
     if fixation.is_rigid:
         return deltabar_m - base_offset
     c_o = contact_radius_ratio(chi0)
-    force = 0.75 * float(pm_over_abs_pjkr(abar_m, j0))  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
+    force = 0.75 * pm_over_abs_pjkr(abar_m, j0)  # (4/3) abar_m^3 - 2 J0 abar_m^(3/2)
     load = load_group(fixation.mu, base_offset, fixation.kappa, chi0)
     return c_o * force + fixation.kappa * deltabar_m - load / c_o**2
 
@@ -291,17 +302,25 @@ class MeanBalance(NamedTuple):
     force: float = 0.0  # F1 / (E* R^2) of the force rig, Eq. (13)
 
 
-def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
-    """(F, Abar, J0) at abar_m = e^z along the amplitude equation (II) (Eqs. 43, 54).
+def balance_states(
+    z: ArrayLike, balance: MeanBalance
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """(F, Abar, J0) at abar_m = e^z along the amplitude equation (II) (Eqs. 43, 54), elementwise in the 1-d ``z``.
 
-    Abar solves (II) (Eq. 43, :func:`internal_variable`), J0 = J0(Abar) (Eq. 28) and F is the
+    Abar solves (II) (Eq. 43, :func:`internal_variables`), J0 = J0(Abar) (Eq. 28) and F is the
     mean-balance residual (III) (Eq. 54, :func:`mean_balance_residual`).
     """
-    abar_m = math.exp(z)
-    Abar = internal_variable(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check,
-                             balance.force)
-    j0 = float(j_integrals_for_law(Abar, balance.law)[0])
+    abar_m = np.exp(np.asarray(z, dtype=float))
+    Abar = internal_variables(abar_m, balance.eta1, balance.fixation, balance.chi0, balance.law, balance.omega_check,
+                              balance.force)
+    j0 = j_integrals(Abar, balance.law.n)[0]
     return mean_balance_residual(abar_m, j0, balance.fixation, balance.chi0, balance.base_offset), Abar, j0
+
+
+def balance_state(z: float, balance: MeanBalance) -> tuple[float, float, float]:
+    """(F, Abar, J0) at one abar_m = e^z (:func:`balance_states`; Eqs. 43, 54)."""
+    f, Abar, j0 = balance_states(np.array([z]), balance)
+    return float(f[0]), float(Abar[0]), float(j0[0])
 
 
 def balance_residual(z: float, balance: MeanBalance) -> float:
@@ -346,21 +365,35 @@ def scan_segments(
     z = z_min
     if z_res is not None:
         grid = z_min + SCAN_STEP * np.arange(max(0, math.ceil((z_res - z_min) / SCAN_STEP) - 1))
-        below = [(float(node), residual(float(node))) for node in grid]
+        below = list(zip(grid.tolist(), balance_states(grid, balance)[0].tolist(), strict=True))
         to_pole = approach_pole(residual, z_res, -1.0, SCAN_STEP, _RESONANCE_REFINEMENTS, what)
         segments.append([node for node in below + to_pole if node[0] >= z_min])
         z = z_res + SCAN_STEP
     above: list[Node] = []
     if z_res is not None:
         above = approach_pole(residual, z_res, +1.0, SCAN_STEP, _RESONANCE_REFINEMENTS, what)[::-1]
-    while True:
-        f, _, j0 = balance_state(z, balance)
-        above.append((z, f))
-        if in_monotone_tail(z, j0, abar_turn):
-            break
-        z += SCAN_STEP
-    segments.append(above)
+    segments.append(above + nodes_to_monotone_tail(z, balance, abar_turn))
     return segments
+
+
+#: Nodes of the scan solved at once (one vectorised solve of Eq. 43): at most this many lie past the end.
+_SCAN_CHUNK = 64
+
+
+def nodes_to_monotone_tail(z: float, balance: MeanBalance, abar_turn: float) -> list[Node]:
+    """Nodes (z + k SCAN_STEP, F), k = 0, 1, ..., up to the first in the monotone tail (Eqs. 43, 54).
+
+    F is the residual of the mean balance (III) along the amplitude equation (II), the end
+    :func:`in_monotone_tail`; the nodes are solved _SCAN_CHUNK at a time (:func:`balance_states`).
+    """
+    nodes: list[Node] = []
+    while True:
+        zs = z + SCAN_STEP * np.arange(len(nodes), len(nodes) + _SCAN_CHUNK)
+        f, _, j0 = balance_states(zs, balance)
+        for node, node_j0 in zip(zip(zs.tolist(), f.tolist(), strict=True), j0.tolist(), strict=True):
+            nodes.append(node)
+            if in_monotone_tail(node[0], node_j0, abar_turn):
+                return nodes
 
 
 def steady_state_at(abar_m: float, stable: bool, balance: MeanBalance, omega_check: float) -> SteadyState:

@@ -196,6 +196,6 @@ def critical_log_excess(
     """
     j0, jc1, _ = j_integrals_for_law(np.exp(log_Abar), law)
     abar_cr = pulloff_closure(j0)
-    response = np.array([fixation.indentation_response(float(a), chi0, omega_check, eta1, force) for a in abar_cr])
+    response = fixation.indentation_response(abar_cr, chi0, omega_check, eta1, force)
     return np.log(indentation_amplitude(abar_cr, jc1, chi0)) - np.log(response)
 
