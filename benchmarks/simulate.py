@@ -3,8 +3,9 @@
 Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON] [--compile]
 
 For each case it prints
-* the time per steady state (min and median of 5 of process CPU time, median of wall time), with the
-  machine's load before and after the timings (a shared machine: the minimum is the least disturbed run),
+* the time per steady state (min and median of 5 of process CPU time, of 3 for a case slower than 0.5 s; median
+  of wall time), with the machine's load before and after the timings (a shared machine: the minimum is the least
+  disturbed run),
 * the periods integrated by the shooting,
 * the self-consistency error: the largest relative change of a_m, Abar, w_eff/w0 and Pm when
   rtol goes from the default 1e-12 to 1e-13,
@@ -47,6 +48,9 @@ CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5
 FIELDS = ("abar_m", "Abar", "w_eff_ratio", "pm_over_abs_pjkr")
 TRANSIENT_PERIODS = 5
 REPEATS = 5
+#: A case whose run takes longer than this (n = 4 at omega_check = 1e8: about 2 s) is timed 3 times, not REPEATS.
+SLOW_RUN_S = 0.5
+SLOW_REPEATS = 3
 OMEGA_200HZ = 1454310.3070550503  # omega_check of 200 Hz for v0 = 44.5 um/s, R = 51.5 mm (groups.omega_check)
 #: Run by each interpreter of the side-by-side comparison: reads "ss H1" or "vp H1", answers in JSON.
 WORKER = f"""
@@ -94,7 +98,7 @@ def cases():
 
 def timed(function):
     cpu, wall, result = [], [], None
-    for _ in range(REPEATS):
+    while len(cpu) < (SLOW_REPEATS if cpu and cpu[0] > SLOW_RUN_S else REPEATS):
         c0, w0 = time.process_time(), time.perf_counter()
         result = function()
         cpu.append(time.process_time() - c0)
