@@ -1,0 +1,64 @@
+"""Benchmark: the integration tolerance of the withdrawal sweep (experiments.speed_sweep.SWEEP_RTOL).
+
+Usage: python benchmarks/withdrawal_rtol.py [RESULTS_DIR]   (default results; needs a finished `validation` there)
+
+Every withdrawal the sweep ran (status other than skipped_within_tolerance in RESULTS_DIR/withdrawal/) of the
+compliant fixation at 200 and 400 Hz and the rigid one at 400 Hz, every amplitude, from the sweep's start state, at
+rtol 1e-9, 1e-8 and 1e-7 against rtol 1e-12: the process CPU time of all of them per rtol and the largest relative
+difference of the pull-off (peak and period-mean force over |P_JKR|), and whether every status is the reference's.
+"""
+
+import sys
+import time
+
+import pandas as pd
+
+from vibroadhesion.experiments import speed_sweep
+from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, rig, setup_fixations
+from vibroadhesion.simulation import steady_state
+from vibroadhesion.simulation.withdrawal import withdraw
+
+RTOLS = (1e-9, 1e-8, 1e-7)
+REFERENCE = 1e-12
+TESTS = (("compliant", 200.0), ("compliant", 400.0), ("rigid", 400.0))
+
+
+def runs(results):
+    """(start problem, start state, V/v0) of every withdrawal of TESTS that the sweep in ``results`` ran."""
+    setup, params, chi0 = rig(f"{results}/data/setup.json")
+    for fixation, frequency in TESTS:
+        (case,) = setup_fixations(setup, params["v0"], fixation)
+        omega_check = experiment_omega_check(setup, params["v0"])[frequency]
+        ran = pd.read_csv(f"{results}/withdrawal/{fixation}_{frequency:g}Hz.csv")
+        ran = ran[ran["status"] != speed_sweep.SKIPPED]
+        for h1, problem in speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius,
+                                                    setup.amplitudes_um, case):
+            start = speed_sweep.start_problem(problem)
+            state = steady_state(start).orbit.start_state
+            for ratio in ran.loc[ran["h1_um"] == h1, "V_over_v0"]:
+                yield start, state, float(ratio)
+
+
+def main(results):
+    cpu = dict.fromkeys((*RTOLS, REFERENCE), 0.0)
+    error, same_status, count = dict.fromkeys(RTOLS, 0.0), dict.fromkeys(RTOLS, True), 0
+    for start, state, ratio in runs(results):
+        out = {}
+        for rtol in (REFERENCE, *RTOLS):
+            begin = time.process_time()
+            out[rtol] = withdraw(start, ratio, initial_state=state, rtol=rtol)
+            cpu[rtol] += time.process_time() - begin
+        ref, count = out[REFERENCE], count + 1
+        for rtol in RTOLS:
+            error[rtol] = max(error[rtol], abs(out[rtol].force / ref.force - 1),
+                              abs(out[rtol].mean_force / ref.mean_force - 1))
+            same_status[rtol] &= out[rtol].status == ref.status
+    print(f"{count} withdrawals ({', '.join(f'{f} {h:g} Hz' for f, h in TESTS)}), against rtol {REFERENCE:g}")
+    print(f"{'rtol':>8}{'CPU s':>9}{'max rel. diff.':>16}{'statuses':>10}")
+    print(f"{REFERENCE:>8.0e}{cpu[REFERENCE]:>9.2f}")
+    for rtol in RTOLS:
+        print(f"{rtol:>8.0e}{cpu[rtol]:>9.2f}{error[rtol]:>16.2e}{'same' if same_status[rtol] else 'differ':>10}")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "results")
