@@ -42,7 +42,7 @@ from vibroadhesion.models.leading_order import (
     balance_state,
     in_monotone_tail,
     indentation_amplitude,
-    internal_variable,
+    internal_variables,
     mean_balance_residual,
     monotone_tail_start,
     scan_segments,
@@ -534,7 +534,7 @@ def test_residual_increases_beyond_the_tail_criterion(n: float) -> None:
     c_o = float(A_O)
 
     def residual_and_j0(x: float, fixation: Fixation, omega_check: float) -> tuple[float, float]:
-        j0 = float(j_integrals(internal_variable(x, ETA1, fixation, CHI0, law, omega_check), n)[0])
+        j0 = float(j_integrals(internal_variables(x, ETA1, fixation, CHI0, law, omega_check), n)[0][0])
         return mean_balance_residual(x, j0, fixation, CHI0, 0.2), j0
 
     for fixation, omega_check in (RIGID, free(0.3, MU_SMALL), spring(0.1, 2.0, 0.0, MU_SMALL),
@@ -663,4 +663,4 @@ def test_contact_resonance_raises_in_the_amplitude_equation() -> None:
     fixation = Fixation.free(2.0 * c_o)
     assert fixation.contact_resonance(CHI0, 1.0) == pytest.approx(1.0, rel=1e-15)
     with pytest.raises(NoRootError, match="resonance"):
-        internal_variable(1.0, ETA1, fixation, CHI0, GentSchultz(0.531), 1.0)
+        internal_variables(1.0, ETA1, fixation, CHI0, GentSchultz(0.531), 1.0)

@@ -72,7 +72,7 @@ def test_h1_zero_is_the_rate_dependent_jkr_pulloff(speed_ratio: float) -> None:
     run = withdraw_slowly(problem, speed_ratio)
     force, offset = rate_dependent_jkr_pulloff_mp(0.5, speed_ratio / problem.c_o, N_PUBLISHED)
     assert run.status == "pulloff"
-    # LSODA at rtol 1e-8: measured 2.5e-8 (V = 0.05 v0) and 8.0e-8 (0.5 v0), its global error of ~10 rtol;
+    # LSODA at rtol 1e-7 (SLOW_FLOW_RTOL): measured 1.4e-7 (V = 0.05 v0) and 1.2e-7 (0.5 v0), about its rtol;
     # mpmath's at tol 1e-16
     assert run.mean_force == pytest.approx(float(force), rel=5e-7)
     assert run.force == run.mean_force  # no vibration: the peak is the mean
@@ -93,9 +93,9 @@ def test_integration_error_against_a_tighter_run() -> None:
     for h1, speed in ((20.0, 0.1), (100.0, 1.0)):
         run, tight = withdraw_slowly(_preloaded(h1), speed), withdraw_slowly(_preloaded(h1), speed, rtol=1e-10)
         assert run.status == tight.status == "pulloff"
-        # measured 8e-11 (20 um, 0.1 v0) and 2e-10 (100 um, v0); 1.3e-8 at worst over 20-100 um, 1e-3 to 1 v0
-        assert run.mean_force == pytest.approx(tight.mean_force, rel=1e-7)
-        assert run.force == pytest.approx(tight.force, rel=1e-7)
+        # measured 5.4e-9 (20 um, 0.1 v0) and 3.4e-9 (100 um, v0); 1.4e-7 at worst over 20-100 um, 1e-3 to 1 v0
+        assert run.mean_force == pytest.approx(tight.mean_force, rel=3e-7)
+        assert run.force == pytest.approx(tight.force, rel=3e-7)
 
 
 @pytest.mark.parametrize(("speed_ratio", "bound"), [(0.3, 3e-3), (1.0, 5e-3)])

@@ -142,14 +142,6 @@ def internal_variables(
     return Abar
 
 
-def internal_variable(
-    abar_m: float, eta1: float, fixation: Fixation, chi0: float, law: GentSchultz, omega_check: float,
-    force: float = 0.0,
-) -> float:
-    """Abar on the amplitude equation (II') at one abar_m (:func:`internal_variables`; Eqs. 13, 43, 105)."""
-    return float(internal_variables(abar_m, eta1, fixation, chi0, law, omega_check, force)[0])
-
-
 def mean_balance_residual(
     abar_m: ArrayLike, j0: ArrayLike, fixation: Fixation, chi0: float, base_offset: float
 ) -> NDArray[np.float64]:
@@ -205,7 +197,7 @@ def steady_states(
     contact resonance), the record has one element of status ``no_solution`` with NaN numbers and the
     reason in ``message``: the exception becomes a status here, at the level boundary.
 
-    Method. For given abar_m, (II) fixes Abar uniquely (:func:`internal_variable`), so the
+    Method. For given abar_m, (II) fixes Abar uniquely (:func:`internal_variables`), so the
     solutions are the roots of the one-variable residual F(abar_m) of (III) along that curve
     (:func:`balance_state`). F is scanned on a grid of step ``SCAN_STEP`` in ln abar_m
     (:func:`scan_segments`); each sign change is polished by Brent's method, and each interior

@@ -45,7 +45,7 @@ infinity: one root, the force rig's pull-off where the base rig has none.
 
 Which root is the pull-off. The withdrawal lowers the mean contact radius. With F(a_m) = a_m -
 a_cr(Abar(a_m)), Abar(a_m) the unique solution of (II) at a_m
-(:func:`vibroadhesion.models.leading_order.internal_variable`), the contact holds while F > 0 and
+(:func:`vibroadhesion.models.leading_order.internal_variables`), the contact holds while F > 0 and
 detaches where F first vanishes as a_m decreases; roots in a_m and roots of (IV) in Abar are in the
 same order (a_cr increases with Abar). F < 0 as a_m -> 0 (T -> 1,
 so Abar and a_cr -> infinity) and F > 0 as a_m -> infinity (T -> 0). Further roots come from T rising
