@@ -186,7 +186,8 @@ def test_slow_flow_against_the_time_domain(pipeline_results: Path) -> None:
     effect = at_v0.pivot_table(index=["frequency_hz", "h1_um"], columns="method", values="relative_deviation")
     ratio = effect["time_domain"] / effect["slow_flow"]
     check("at 20 um the period-mean pull-offs agree to {0.03}–{0.13} % (the difference falls from 200 to 400 Hz, as "
-          "1/omega) and the peaks to {bound:6.5e-6}; at 40–100 um the slow flow is {0.05}–{21} % high",
+          "1/omega) and the peaks to {bound:1e-5} (the time domain's integration error at its rtol 1e-7 is 1e-6); at\n"
+          "40–100 um the slow flow is {0.05}–{21} % high",
           [100 * thin[mean].abs().min(), 100 * thin[mean].abs().max(), thin[peak].abs(), 100 * thick[mean].min(),
            100 * thick[mean].max()])
     check("its speed effect at V = v0 is {1.4}–{96} times smaller than the simulated one", [ratio.min(), ratio.max()])

@@ -35,7 +35,9 @@ from vibroadhesion.pipeline.imports import import_closure
 from vibroadhesion.pipeline.pages import PAGES, REPORT_JOBS
 
 ROOT = Path(__file__).resolve().parents[2]
-SNAKEMAKE = [sys.executable, "-m", "snakemake"]
+# The launcher the shared build used (conftest._built_copy): the rules' interpreter (common.smk PYTHON = sys.executable,
+# a parameter of the shell rules) is then the same path, .venv/bin/python3, however pytest itself was started.
+SNAKEMAKE = [str(Path(sys.prefix) / "bin" / "snakemake")]
 COPY = ["Snakefile", "workflow", "src", "data", "notebooks", "benchmarks", "environment.lock", "profiles"]
 # What an edit of data/pulloff.csv reruns: the rows, the fit and what shows them (Figs. 4 and 7, the fit page and
 # the index beside them); nothing at the published parameters (Figs. 3, 5, 6, 8, the simulations behind them).
