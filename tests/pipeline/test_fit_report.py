@@ -142,6 +142,23 @@ def test_speed_column_shown_where_a_row_has_one_and_the_static_frequency_is_miss
     assert "withdrawal_speed_um_s" not in quasi_static and fit_report.speed_sentence(quasi_static) == ""
 
 
+def test_figure_pages_show_the_measured_rows_as_the_fit_page_does(tmp_path: Path) -> None:
+    """Fig. 4's page shows the measured rows by measured_table: a static JKR test's frequency "—" (the canonical file
+    stores 0), a quasi-static row's speed "—" (stored 0), the speed column read "V, withdrawal speed (µm/s)" and the
+    force "measured |P_cr| (mN)" -- the first columns of the fit page's table, the same cells."""
+    csv = tmp_path / "pulloff.csv"
+    csv.write_text("frequency_hz,h1_um,pulloff_mN,source,withdrawal_speed_um_s\n200.0,20.0,170.0,lab A,44.5\n"
+                   ",0.0,57.0,lab C,\n")
+    rows = fit_report.measured_rows(csv)
+    shown = tables.formatted(fit_report.measured_table(rows), fit_report.MEASURED_COLUMNS)
+    assert shown["f (Hz)"].tolist() == ["200", tables.MISSING]
+    assert shown["V, withdrawal speed (µm/s)"].tolist() == ["44.5", tables.MISSING]
+    assert shown["measured |P_cr| (mN)"].tolist() == ["170", "57"]
+    fit_page = tables.formatted(fit_report.measured_vs_predicted(_fit(3), rows, _setup_json(tmp_path)),
+                                fit_report.measured_vs_predicted_columns(fit_report.measured_table(rows)))
+    assert shown.equals(fit_page[shown.columns])
+
+
 @pytest.mark.parametrize("omega_check, a_over_am, expected", [
     (1.437e6, 0.0019, "inside"),
     (1.437e6, 0.1, "inside"),  # the paper's A <= 0.1 a_m

@@ -169,22 +169,33 @@ def _refined_ratio(params: GentSchultzParameters, frequency_hz: float, h1_um: fl
     return float(pulloff.A_over_am)
 
 
-def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: str | Path) -> pd.DataFrame:
-    """Per measured row: frequency, h1, source, measured and predicted pull-off (mN) per level that fitted.
+#: How the columns of :func:`measured_table` read on a page.
+MEASURED_COLUMNS = {"pulloff_mN": Column("measured |P_cr|", "mN"),
+                    data.SPEED_COLUMN: Column("V, withdrawal speed", "µm/s")}
 
-    A static JKR test has no frequency (NaN, shown "—", not 0); where a row has a withdrawal speed, the column
-    ``withdrawal_speed_um_s`` (NaN, "—", for a quasi-static row).
+
+def measured_table(rows: pd.DataFrame) -> pd.DataFrame:
+    """The measured rows (:func:`measured_rows`) as a page shows them: frequency, h1, source, |P_cr| in mN.
+
+    A static JKR test has no frequency (NaN, shown "—", not the 0 of the canonical file); where a row has a withdrawal
+    speed, the column ``withdrawal_speed_um_s`` (NaN, "—", for a quasi-static row).
+    """
+    speeds = rows[data.SPEED_COLUMN] if data.SPEED_COLUMN in rows else pd.Series(0.0, index=rows.index)
+    table = rows[["frequency_hz", "h1_um", "source", "pulloff_mN"]].assign(
+        frequency_hz=rows["frequency_hz"].where(rows["h1_um"] > 0))
+    if (speeds > 0).any():
+        table.insert(2, data.SPEED_COLUMN, speeds.where(speeds > 0))
+    return table
+
+
+def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: str | Path) -> pd.DataFrame:
+    """Per measured row: :func:`measured_table`'s columns and the predicted pull-off (mN) per level that fitted.
 
     Then the relative residual predicted/measured - 1 of :func:`reference_level`, the status of the simulation's
     virtual pull-off per row when the simulation was fitted (``contact_loss_*`` where the family lost contact before
     a pull-off), and the asymptotic levels' range at that level's fit (:func:`applicability`).
     """
-    speeds = rows[data.SPEED_COLUMN] if data.SPEED_COLUMN in rows else pd.Series(0.0, index=rows.index)
-    table = rows[["line", "frequency_hz", "h1_um", "source", "pulloff_mN"]].assign(
-        frequency_hz=rows["frequency_hz"].where(rows["h1_um"] > 0))
-    if (speeds > 0).any():
-        table.insert(3, data.SPEED_COLUMN, speeds.where(speeds > 0))
-    table = table.set_index("line")
+    table = measured_table(rows).set_axis(rows["line"])
     reference = reference_level(fit)
     for name in ordered_levels(fit):
         predicted = predicted_mN(fit["fits"][name], rows)
@@ -201,8 +212,7 @@ def measured_vs_predicted(fit: dict[str, Any], rows: pd.DataFrame, setup_json: s
 
 def measured_vs_predicted_columns(table: pd.DataFrame) -> dict[str, Column]:
     """How :func:`measured_vs_predicted`'s columns read: the level's name (short: the table is wide) and mN."""
-    columns = {"pulloff_mN": Column("measured |P_cr|", "mN"),
-               data.SPEED_COLUMN: Column("V, withdrawal speed", "µm/s")}
+    columns = dict(MEASURED_COLUMNS)
     for name in table.columns:
         kind, _, level = str(name).partition(":")
         if kind == "predicted_mN":
