@@ -99,6 +99,9 @@ rule virtual_pulloff_fixation:
     wildcard_constraints:
         parameters="published|fitted",
         fixation="rigid|compliant",
+    # Under a second, and on two long chains: the rigid table to Figs. 4 and 7, the compliant one to the withdrawal
+    # sweep (its longest jobs): run as soon as the parts are, not after every job of default priority.
+    priority: 10
     script:
         "../scripts/virtual_pulloff_fixation.py"
 

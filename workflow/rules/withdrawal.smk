@@ -24,6 +24,9 @@ rule withdrawal:
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
         stop=lambda wildcards: config["withdrawal"]["stop"][wildcards.fixation],
+    # The longest chain of the validation target (a sweep, its gather and plot, then the validation pages, which wait
+    # for every check): ahead of the jobs of default priority, so that the pages do not wait for it at the end.
+    priority: 5
     script:
         "../scripts/withdrawal.py"
 
