@@ -10,6 +10,11 @@ from vibroadhesion.pipeline.pages import refresh_indexes
 # (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
 PYTHON = sys.executable
 
+# The validation target's long jobs (5-15 s: the withdrawal sweep, the rig comparison, the identifiability fits and
+# sensitivities) wait for the pages that show them, which wait for every check: started ahead of the jobs of default
+# priority (longest first), the short ones fill both cores at the end instead of a long one running alone.
+LONG_JOB_PRIORITY = 5
+
 FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
 

@@ -33,6 +33,7 @@ rule pulloff_sensitivity:
         frequency=r"[0-9._e+-]+",
     params:
         amplitudes=DESIGN["amplitudes_um"],
+    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/pulloff_sensitivity.py"
 
@@ -51,6 +52,7 @@ rule identifiability_fit:
         "results/benchmarks/rules/identifiability_fit_{model}.tsv"
     wildcard_constraints:
         model="|".join(FITTED_LEVELS),
+    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/identifiability_fit.py"
 

@@ -24,9 +24,7 @@ rule withdrawal:
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
         stop=lambda wildcards: config["withdrawal"]["stop"][wildcards.fixation],
-    # The longest chain of the validation target (a sweep, its gather and plot, then the validation pages, which wait
-    # for every check): ahead of the jobs of default priority, so that the pages do not wait for it at the end.
-    priority: 5
+    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/withdrawal.py"
 
@@ -44,6 +42,7 @@ rule withdrawal_slow_flow:
         "results/benchmarks/rules/withdrawal_slow_flow.tsv"
     params:
         speed_ratios=config["withdrawal"]["slow_flow_speed_ratios"],
+    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/withdrawal_slow_flow.py"
 
