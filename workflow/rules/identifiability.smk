@@ -31,9 +31,9 @@ rule pulloff_sensitivity:
         "results/benchmarks/rules/pulloff_sensitivity_{frequency}Hz.tsv"
     wildcard_constraints:
         frequency=r"[0-9._e+-]+",
+    priority: LONG_JOB_PRIORITY
     params:
         amplitudes=DESIGN["amplitudes_um"],
-    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/pulloff_sensitivity.py"
 

@@ -21,10 +21,10 @@ rule withdrawal:
     wildcard_constraints:
         fixation="rigid|compliant",
         frequency=r"[0-9.]+",
+    priority: LONG_JOB_PRIORITY
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
         stop=lambda wildcards: config["withdrawal"]["stop"][wildcards.fixation],
-    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/withdrawal.py"
 
@@ -40,9 +40,9 @@ rule withdrawal_slow_flow:
         "results/logs/withdrawal_slow_flow.log",
     benchmark:
         "results/benchmarks/rules/withdrawal_slow_flow.tsv"
+    priority: LONG_JOB_PRIORITY
     params:
         speed_ratios=config["withdrawal"]["slow_flow_speed_ratios"],
-    priority: LONG_JOB_PRIORITY
     script:
         "../scripts/withdrawal_slow_flow.py"
 
