@@ -238,7 +238,8 @@ def jc1_log_slope(Abar: NDArray[np.float64], n: float) -> tuple[NDArray[np.float
     return np.log(jc1), n * ((d * ((1.0 + 0.5 * u) / (1.0 + u))) @ w) / jc1
 
 
-#: Below this u = Abar^n, D(u) = u (1 - u/2 + ...) is u to rounding: |Jc1| = Abar^n sum_k w_k (sin t_k)^n.
+#: Where c1 Abar^n is below this, every u_k <= Abar^n < 3e-17 (c1 > 1/3 for n <= 4) and D(u) = u (1 - u/2 + ...) is
+#: u to rounding: |Jc1| = c1 Abar^n, c1 = sum_k w_k (sin t_k)^n (:func:`abar_for_abs_jc1`).
 _LINEAR_U = 1e-17
 
 
