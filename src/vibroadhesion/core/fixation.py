@@ -134,13 +134,9 @@ class Fixation:
         """|delta_c| / h1 = |d| / |d + 2 c_o abar_m|: Eq. (43) at leading order (Eq. B.3 with damping).
 
         c_o = a_o/R of ``chi0`` (Eqs. 64, 86). 1 for rigid fixation, infinite at the contact resonance
-        (:meth:`contact_resonance`), zero at d = 0.
+        (:meth:`contact_resonance`), zero at d = 0: :meth:`indentation_response` of the base rig per unit eta1.
         """
-        if self.is_rigid:
-            return 1.0
-        d = self.d(omega_check)
-        denominator = abs(d + 2.0 * contact_radius_ratio(chi0) * abar_m)
-        return math.inf if denominator == 0 else abs(d) / denominator
+        return float(self.indentation_response(abar_m, chi0, omega_check, 1.0, 0.0))
 
     def indentation_response(
         self, abar_m: ArrayLike, chi0: float, omega_check: float, eta1: float, force: float

@@ -256,8 +256,7 @@ def abar_for_abs_jc1(log_target: ArrayLike, n: float, what: str) -> NDArray[np.f
     rule's range (n ln Abar > 690).
     """
     log_target = np.atleast_1d(np.asarray(log_target, dtype=float))
-    c1 = float(folded_rule()[1] ** n @ folded_rule()[2][:, 1])
-    c2 = 2.0 * _cos_power_integral(0.5 * n + 1.0) / math.pi
+    c1, c2 = _jc1_bound_constants(n)
     z = np.maximum((log_target - math.log(c1)) / n, (log_target - math.log(c2)) / (0.5 * n))
     newton = np.flatnonzero(n * z + math.log(c1) >= math.log(_LINEAR_U))
     if newton.size:
@@ -265,6 +264,17 @@ def abar_for_abs_jc1(log_target: ArrayLike, n: float, what: str) -> NDArray[np.f
             partial(_jc1_log_excess, log_target=log_target[newton], n=n), z[newton], 0.5 * n, n,
             z_max=math.log(_MAX_ABAR_POWER) / n, what=what)
     return np.exp(z)
+
+
+@cache
+def _jc1_bound_constants(n: float) -> tuple[float, float]:
+    """c1 = sum_k w_k (sin t_k)^n on the rule and c2 = (2/pi) int cos^(n/2+1): |Jc1| <= c1 Abar^n, c2 Abar^(n/2).
+
+    The bounds of :func:`abar_for_abs_jc1` (small- and large-Abar forms, :func:`j_integrals_small_Abar`,
+    :func:`j_integrals_large_Abar`), once per n: the scan's scalar residuals call it thousands of times.
+    """
+    _, sin_t, weights = folded_rule()
+    return float(sin_t**n @ weights[:, 1]), 2.0 * _cos_power_integral(0.5 * n + 1.0) / math.pi
 
 
 def _jc1_log_excess(

@@ -93,9 +93,9 @@ def solve_increasing_bounded_slope(
     """The roots z of G(z) = 0 for an array of increasing, concave G with G' in [slope_min, slope_max], vectorised.
 
     ``excess_and_slope(z, index)`` returns G and G' of the equations ``index`` (positions in ``z_start``) at
-    the 1-d ``z``. From the
-    start z_s with G(z_s) = g_s the root lies between z_s - g_s/slope_max and z_s - g_s/slope_min (mean
-    value theorem); Newton's steps are kept inside that bracket (widened by 1e-12 for the rounding of g_s).
+    the 1-d ``z``. From the start z_s with G(z_s) = g_s the root lies between z_s - g_s/slope_max and
+    z_s - g_s/slope_min (mean value theorem); Newton's steps are kept inside that bracket (widened by 1e-12
+    for the rounding of g_s).
     G concave: from the left of the root the iterates rise monotonically (the tangent lies above G), each
     step covering at least slope_min/slope_max of the distance (then quadratically); from the right the
     first step lands on the left. Ends when every step is below 1e-14 + 4 eps |z| (the tolerance of
