@@ -28,8 +28,8 @@ def test_equal_amplitude_rigs_agree(pipeline_results: Path) -> None:
     leading = table.loc[["leading"], columns].to_numpy().ravel()
     simulated = table.loc[["simulation"], states].to_numpy().ravel()
     pulloffs = table.loc[["simulation"], "max_rel_diff_pulloff_ratio"].to_numpy()
-    check("(leading order: to {bound:3e-15}; SIMULATED steady states: to {bound:3e-11}; SIMULATED virtual pull-offs: "
-          "to {bound:1e-9},", [leading, simulated[pd.notna(simulated)], pulloffs[pd.notna(pulloffs)]])
+    check("(leading order: to {within:3e-15}; SIMULATED steady states: to {within:3e-11}; SIMULATED virtual pull-offs: "
+          "to {within:1e-9},", [leading, simulated[pd.notna(simulated)], pulloffs[pd.notna(pulloffs)]])
 
 
 def test_drive_of_the_force_rig(pipeline_results: Path) -> None:
