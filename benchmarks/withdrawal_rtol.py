@@ -36,8 +36,9 @@ def runs(results):
     for fixation, frequency in TESTS:
         (case,) = setup_fixations(setup, params["v0"], fixation)
         omega_check = experiment_omega_check(setup, params["v0"])[frequency]
-        ran = pd.read_csv(f"{results}/withdrawal/{fixation}_{frequency:g}Hz.csv")
-        ran = ran[ran["status"] != speed_sweep.SKIPPED]
+        sweep = pd.read_csv(f"{results}/withdrawal/speed_sweep.csv")
+        ran = sweep[(sweep["fixation"] == fixation) & (sweep["frequency_hz"] == frequency)
+                    & (sweep["method"] == "time_domain") & (sweep["status"] != speed_sweep.SKIPPED)]
         for h1, problem in speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius,
                                                     setup.amplitudes_um, case):
             start = speed_sweep.start_problem(problem)

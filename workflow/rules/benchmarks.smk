@@ -10,6 +10,7 @@ rule benchmark_j_integrals:
         txt="results/benchmarks/j_integrals.txt",
     log:
         "results/logs/benchmark_j_integrals.log",
+    priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:
@@ -26,6 +27,7 @@ rule benchmark_simulate:
         "results/benchmarks/simulate.txt",
     log:
         "results/logs/benchmark_simulate.log",
+    priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:
@@ -49,6 +51,7 @@ rule benchmark_speed_vs_error:
         pdf="results/benchmarks/speed_vs_error.pdf",
     log:
         "results/logs/benchmark_speed_vs_error.log",
+    priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:

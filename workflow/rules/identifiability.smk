@@ -70,6 +70,7 @@ rule identifiability:
         fits="results/validation/identifiability/fits.csv",
     log:
         "results/logs/identifiability.log",
+    priority: GATHER_PRIORITY
     params:
         noise=config["identifiability"]["relative_noise"],
     script:
@@ -87,6 +88,7 @@ rule identifiability_design:
         candidates="results/validation/identifiability/candidates.csv",
     log:
         "results/logs/identifiability_design.log",
+    priority: GATHER_PRIORITY
     params:
         noise=config["identifiability"]["relative_noise"],
         added=DESIGN["added_tests"],

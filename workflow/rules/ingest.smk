@@ -28,5 +28,7 @@ rule ingest_pulloff:
         "results/data/pulloff.csv",
     log:
         "results/logs/ingest_pulloff.log",
+    # The measured rows gate the fit and Figs. 4 and 7 (PULLOFF_CHAIN_PRIORITY, common.smk).
+    priority: PULLOFF_CHAIN_PRIORITY
     script:
         "../scripts/ingest_pulloff.py"

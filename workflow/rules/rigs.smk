@@ -39,6 +39,7 @@ rule rigs_gather:
         summary="results/validation/rig_equivalence.csv",
     log:
         "results/logs/rigs_gather.log",
+    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/rigs_gather.py"
@@ -53,6 +54,7 @@ rule rigs_plot:
         png=report("results/validation/rig_comparison.png", caption="../report/rigs.rst", category="Validation"),
     log:
         "results/logs/rigs_plot.log",
+    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/rigs_plot.py"

@@ -115,6 +115,7 @@ rule virtual_pulloff_gather:
         "results/simulation/virtual_pulloff.csv",
     log:
         "results/logs/virtual_pulloff_gather.log",
+    priority: GATHER_PRIORITY
     script:
         "../scripts/virtual_pulloff_gather.py"
 

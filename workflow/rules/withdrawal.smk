@@ -1,12 +1,14 @@
 # Pull-off at a finite withdrawal speed (issue 15): the full model integrated in time with the base withdrawn
-# at V (simulated), one job per fixation and test frequency, at the published parameters; part of `validation`.
+# at V (simulated), one job per fixation and simulation_jobs.frequencies_per_job test frequencies (wildcard
+# "200_300_400", as the virtual pull-off's), at the published parameters; part of `validation`.
 # The V -> 0 value of each test is the published virtual pull-off (read, not re-traced). The averaged slow flow
 # (rigid only: the exact averaging's fixation) does not depend on the frequency: one job, placed at each
 # frequency by the gather.
 
 
 rule withdrawal:
-    """Every amplitude of the rig withdrawn at the speeds of config withdrawal.speed_ratios down to the stopping rule (simulated)."""
+    """Every amplitude of the rig at the job's frequencies withdrawn at the speeds of config withdrawal.speed_ratios
+    down to the stopping rule (simulated)."""
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
@@ -20,7 +22,7 @@ rule withdrawal:
         "results/benchmarks/rules/withdrawal_{fixation}_{frequency}Hz.tsv"
     wildcard_constraints:
         fixation="rigid|compliant",
-        frequency=r"[0-9.]+",
+        frequency=r"[0-9.]+(_[0-9.]+)*",
     priority: LONG_JOB_PRIORITY
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
@@ -51,7 +53,7 @@ rule withdrawal_gather:
     """speed_sweep.csv (both fixations, every test) and the speeds below which the quasi-static value holds."""
     input:
         **PUBLISHED,
-        parts=expand(rules.withdrawal.output[0], fixation=["rigid", "compliant"], frequency=FREQUENCIES),
+        parts=expand(rules.withdrawal.output[0], fixation=["rigid", "compliant"], frequency=FREQUENCY_JOBS),
         slow_flow=rules.withdrawal_slow_flow.output[0],
         code=code("withdrawal_gather"),
     output:
@@ -59,6 +61,7 @@ rule withdrawal_gather:
         limits="results/withdrawal/quasi_static_limits.csv",
     log:
         "results/logs/withdrawal_gather.log",
+    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/withdrawal_gather.py"
@@ -73,6 +76,7 @@ rule withdrawal_plot:
         png=report("results/withdrawal/speed_sweep.png", caption="../report/withdrawal.rst", category="Validation"),
     log:
         "results/logs/withdrawal_plot.log",
+    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/withdrawal_plot.py"

@@ -1,11 +1,12 @@
 """Steps of the withdrawal rules (workflow/rules/withdrawal.smk): the simulated pull-off against withdrawal speed.
 
-One job per (fixation, test frequency) runs every amplitude of data/setup.yaml at the speeds of
-workflow/config.yaml (:mod:`vibroadhesion.experiments.speed_sweep`, time-domain withdrawal of the full model,
-Eqs. 3'-11'), its V -> 0 values read from the published virtual pull-off; one job runs the averaged slow flow
-(rigid, frequency-free: :mod:`vibroadhesion.models.slow_flow`) of every amplitude; the gather step places the
-slow flow at each rigid test frequency, concatenates them and writes the speeds below which the quasi-static
-pull-off is within 1 % and 5 % (the figure: :func:`vibroadhesion.pipeline.steps.plots.withdrawal_plot`).
+One job per fixation and chunk of test frequencies (config simulation_jobs.frequencies_per_job) runs every
+amplitude of data/setup.yaml at the speeds of workflow/config.yaml (:mod:`vibroadhesion.experiments.speed_sweep`,
+time-domain withdrawal of the full model, Eqs. 3'-11'), its V -> 0 values read from the published virtual
+pull-off; one job runs the averaged slow flow (rigid, frequency-free: :mod:`vibroadhesion.models.slow_flow`) of
+every amplitude; the gather step places the slow flow at each rigid test frequency, concatenates them and writes
+the speeds below which the quasi-static pull-off is within 1 % and 5 % (the figure:
+:func:`vibroadhesion.pipeline.steps.plots.withdrawal_plot`).
 Time-domain rows are simulated, slow-flow rows averaged (``method``, ``source``).
 """
 
@@ -27,8 +28,11 @@ Path_ = str | Path
 
 
 def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, fixation: FixationCase,
-                    frequency_hz: float, speed_ratios: Sequence[float], stop: Mapping[str, float | None]) -> None:
-    """results/withdrawal/{fixation}_{frequency}Hz.csv: every amplitude of the rig at each V/v0 (Eq. 11').
+                    frequencies_hz: Sequence[float], speed_ratios: Sequence[float],
+                    stop: Mapping[str, float | None]) -> None:
+    """results/withdrawal/{fixation}_{frequencies}Hz.csv: every amplitude at each frequency and V/v0 (Eq. 11').
+
+    The rows come in the order of ``frequencies_hz``, then of the amplitudes of data/setup.yaml.
 
     ``stop``: config withdrawal.stop of the fixation
     (:meth:`vibroadhesion.experiments.speed_sweep.StopRule.from_config`).
@@ -38,17 +42,19 @@ def withdrawal_part(setup_json: Path_, virtual_pulloff_csv: Path_, out: Path_, f
     """
     setup, params, chi0 = rig(setup_json)
     (case,) = setup_fixations(setup, params["v0"], fixation)
-    omega_check = experiment_omega_check(setup, params["v0"])[frequency_hz]
-    problems = speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius, setup.amplitudes_um, case)
-    quasi_static = speed_sweep.quasi_static_ratios(pd.read_csv(virtual_pulloff_csv), frequency_hz)
-    rule = speed_sweep.StopRule.from_config(stop)
-    progress = ProgressBar(len(problems), "amplitudes")
+    omega_checks = experiment_omega_check(setup, params["v0"])
+    virtual, rule = pd.read_csv(virtual_pulloff_csv), speed_sweep.StopRule.from_config(stop)
+    progress = ProgressBar(len(frequencies_hz) * len(setup.amplitudes_um), "amplitudes")
     parts = []
-    for h1, problem in problems:
-        parts.append(speed_sweep.sweep_table([(h1, problem)], speed_ratios, fixation_name=fixation,
-                                             frequency_hz=frequency_hz, v0_um_s=params["v0"] * 1e6,
-                                             quasi_static=quasi_static, stop=rule))
-        progress.advance(1, f"{fixation}, {frequency_hz:g} Hz, h1 = {h1:g} um")
+    for frequency_hz in frequencies_hz:
+        problems = speed_sweep.rig_problems(chi0, params["n"], omega_checks[frequency_hz], setup.radius,
+                                            setup.amplitudes_um, case)
+        quasi_static = speed_sweep.quasi_static_ratios(virtual, frequency_hz)
+        for h1, problem in problems:
+            parts.append(speed_sweep.sweep_table([(h1, problem)], speed_ratios, fixation_name=fixation,
+                                                 frequency_hz=frequency_hz, v0_um_s=params["v0"] * 1e6,
+                                                 quasi_static=quasi_static, stop=rule))
+            progress.advance(1, f"{fixation}, {frequency_hz:g} Hz, h1 = {h1:g} um")
     write_csv(pd.concat(parts, ignore_index=True), out)
 
 
