@@ -88,11 +88,17 @@ def _legend_outside_applicability(ax: Axes, A_over_am: pd.Series) -> None:
 
 
 def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
-    """Save ``fig`` as PDF and PNG without time stamps, then close it."""
-    with atomic_path(pdf) as tmp:
-        fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight")
+    """Save ``fig`` as PNG and PDF without time stamps, then close it.
+
+    The layout engine (constrained layout) places the axes for the PNG, the page's figure; the PDF keeps that
+    layout (engine off for its draw) instead of solving it again: the two files show the same placement, and the
+    second solve was a third of a figure's save time (Fig. 6: 80 tick labels per log axis measured each time).
+    """
     with atomic_path(png) as tmp:
         fig.savefig(tmp, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
+    fig.set_layout_engine("none")
+    with atomic_path(pdf) as tmp:
+        fig.savefig(tmp, format="pdf", metadata=_PDF_METADATA, bbox_inches="tight")
     plt.close(fig)
 
 
