@@ -91,8 +91,8 @@ PLOT_EXTRAS = {
 }
 # The figures in two plot jobs (one matplotlib process each). Figs. 3, 5, 6 and 8 take the longest (Fig. 6 most): with
 # the tables and the rigid grid they wait for, they are the longest chain of the default target and go first
-# (priority); Figs. 4 and 7, which overlay the simulated pull-off, are computed, drawn and their pages rendered on the
-# other core meanwhile.
+# (priority 20); Figs. 4 and 7, which overlay the simulated pull-off, are computed and drawn on the other core
+# meanwhile (PULLOFF_CHAIN_PRIORITY, common.smk).
 FIGURE_GROUPS = {"pulloff": ["fig4", "fig7"], "steady": ["fig3", "fig5", "fig6", "fig8"]}
 PLOT_RULE = {fig: f"plot_{group}_figures" for group, figs in FIGURE_GROUPS.items() for fig in figs}
 # Figs. 4 and 7 show the measured rows, so they take the fit the figures use; the others reproduce the paper.
