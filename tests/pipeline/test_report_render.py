@@ -1,8 +1,10 @@
 """Report rendering: the pages of one index share a kernel, yet each starts from a fresh namespace.
 
-Checked on small notebooks written here, executed in a real kernel (a few seconds).
+Checked on small notebooks written here, executed in a real kernel (a few seconds), and on the built report: each
+page rendered again is the same file.
 """
 
+import ast
 import re
 from pathlib import Path
 
@@ -10,8 +12,8 @@ import nbformat
 import pytest
 from papermill.exceptions import PapermillExecutionError
 
-from vibroadhesion.pipeline.pages import VALIDATION_PAGES
-from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
+from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES
+from vibroadhesion.pipeline.steps.report import INJECTED, Page, render_page, reset_namespace, shared_kernel
 
 
 def _notebook(path: Path, *sources: str) -> Path:
@@ -86,3 +88,28 @@ def test_a_page_has_its_title_and_a_link_back_to_its_index(tmp_path: Path) -> No
     assert '<a href="validation_index.html">&larr; back to the report index</a>' in html
     assert html.index("back to the report index") < html.index("<pre>42")
     assert re.findall(r"<script[^>]*src=\"http[^\"]*\"", html) == [] and "cdnjs" not in html  # offline: nothing fetched
+
+
+def _recorded_parameters(executed: Path) -> dict[str, str]:
+    """The papermill parameters an executed notebook records in its injected cell (``name = "value"`` lines)."""
+    (cell,) = [c for c in nbformat.read(executed, as_version=4).cells if c.get("id") == INJECTED]
+    return {node.targets[0].id: ast.literal_eval(node.value) for node in ast.parse(cell.source).body
+            if isinstance(node, ast.Assign)}
+
+
+def test_every_built_page_renders_again_to_the_same_bytes(pipeline_results: Path, tmp_path: Path,
+                                                          monkeypatch: pytest.MonkeyPatch) -> None:
+    """Same inputs, same bytes: each page of the built report, rendered again from the artefacts its executed
+    notebook names, is the same HTML file. Catches a random id in a page, such as the uuid a pandas Styler draws
+    for its table unless given one (the identifiability page's design and excluded-candidates tables did)."""
+    monkeypatch.chdir(pipeline_results.parent)  # the artefact paths are relative to the repository copy
+    built = sorted((pipeline_results / "report" / "notebooks").glob("*.ipynb"))
+    assert {p.stem for p in built} == {stem for stem, _ in PAGES + VALIDATION_PAGES}
+    pages = [Page(Path("notebooks") / p.name, tmp_path / p.name, tmp_path / f"{p.stem}.html", _recorded_parameters(p))
+             for p in built]
+    with shared_kernel() as manager:
+        for page in pages:
+            reset_namespace(manager)
+            render_page(page, manager)
+    for page in pages:
+        assert page.html.read_bytes() == (pipeline_results / "report" / page.html.name).read_bytes(), page.html.name

@@ -80,13 +80,16 @@ def render_page(page: Page, manager: KernelManager, exporter: nbconvert.HTMLExpo
 
     ``page.parameters`` (artefact paths) are injected after the notebook's ``parameters`` cell, in a cell
     whose id papermill draws at random: it is given a fixed one, so that the same inputs give the same page. The
+    executed notebook is written once, when it is complete (papermill's save after every cell went to a temporary
+    file that a failure deletes anyway: 0.2-0.3 s a job). The
     page carries its title (:data:`~vibroadhesion.pipeline.pages.PAGES`) and a link back to its index, and loads
     nothing from the network (template ``offline``: no MathJax, no require.js; the pages have no math or widgets).
     ``exporter`` (:func:`html_exporter`) may be shared by the pages of a job: its templates load once.
     """
     with atomic_path(page.executed) as tmp:
         nb = papermill.execute_notebook(str(page.notebook), str(tmp), parameters=dict(page.parameters),
-                                        kernel_name="python3", cwd=".", progress_bar=False, km=manager)
+                                        kernel_name="python3", cwd=".", progress_bar=False, km=manager,
+                                        request_save_on_cell_execute=False)
         for cell in nb.cells:
             if INJECTED in cell.metadata.get("tags", ()):
                 cell.id = INJECTED
