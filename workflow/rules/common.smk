@@ -13,7 +13,13 @@ PYTHON = sys.executable
 # The validation target's long jobs (5-15 s: the withdrawal sweep, the rig comparison, the identifiability fits and
 # sensitivities) wait for the pages that show them, which wait for every check: started ahead of the jobs of default
 # priority (longest first), the short ones fill both cores at the end instead of a long one running alone.
+# Snakemake does not pass a job's priority on to the jobs it waits for: the two that every simulation or every job
+# waits for (ingest_setup, simulation_kernels) go first explicitly, before any job of the targets' priorities.
+GATE_PRIORITY = 30
 LONG_JOB_PRIORITY = 5
+# Of those, the ones of 5-7 s (the withdrawal sweep of a fixation, the rig comparison, the identifiability fits: the
+# exact averaging's force minimum) first: longest first, the run's end is shortest.
+LONGEST_JOB_PRIORITY = 6
 # The chain from the measured rows to Figs. 4 and 7 (ingest, fit, tables, plot: about 3.5 s in all) gates their pages
 # and the fit page: ahead of the long jobs, so that the run ends on report pages in both cores, not on this chain.
 PULLOFF_CHAIN_PRIORITY = 10

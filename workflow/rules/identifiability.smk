@@ -52,7 +52,7 @@ rule identifiability_fit:
         "results/benchmarks/rules/identifiability_fit_{model}.tsv"
     wildcard_constraints:
         model="|".join(FITTED_LEVELS),
-    priority: LONG_JOB_PRIORITY
+    priority: LONGEST_JOB_PRIORITY
     script:
         "../scripts/identifiability_fit.py"
 

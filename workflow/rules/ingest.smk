@@ -13,6 +13,7 @@ rule ingest_setup:
         "results/data/setup.json",
     log:
         "results/logs/ingest_setup.log",
+    priority: GATE_PRIORITY
     script:
         "../scripts/ingest_setup.py"
 

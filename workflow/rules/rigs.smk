@@ -24,7 +24,7 @@ rule rigs_part:
         "results/benchmarks/rules/rigs_part_{case}.tsv"
     wildcard_constraints:
         case=r"(antiresonance|[0-9.]+)(_(antiresonance|[0-9.]+))*",
-    priority: LONG_JOB_PRIORITY
+    priority: LONGEST_JOB_PRIORITY
     script:
         "../scripts/rigs_part.py"
 

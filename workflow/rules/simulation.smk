@@ -6,6 +6,7 @@ rule simulation_kernels:
         "results/simulation/kernels.txt",
     log:
         "results/logs/simulation_kernels.log",
+    priority: GATE_PRIORITY
     script:
         "../scripts/simulation_kernels.py"
 

@@ -23,7 +23,7 @@ rule withdrawal:
     wildcard_constraints:
         fixation="rigid|compliant",
         frequency=r"[0-9.]+(_[0-9.]+)*",
-    priority: LONG_JOB_PRIORITY
+    priority: LONGEST_JOB_PRIORITY
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
         stop=lambda wildcards: config["withdrawal"]["stop"][wildcards.fixation],
