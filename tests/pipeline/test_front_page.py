@@ -12,8 +12,9 @@ import pytest
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import front_page
-from vibroadhesion.pipeline.pages import findings_of, write_index
-from vibroadhesion.pipeline.front_page import index_artefacts, refresh_findings
+from vibroadhesion.pipeline.front_page import refresh_findings
+from vibroadhesion.pipeline.pages import (FILE_TIME_MARGIN_NS, VALIDATION_SUMMARY, build, build_paragraph, findings_of,
+                                          findings_outdated, index_artefacts, write_index)
 
 VIRTUAL = """fixation,kappa,zeta,frequency_hz,h1_um,model,status,pulloff_ratio,pulloff_mN,abar_m,abar_cr,steady_states
 rigid,,,200,20,simulation,pulloff,3.0,171.8,1.0,1.2,14
@@ -90,8 +91,8 @@ def test_front_page_without_validation_says_how_to_build_it_and_with_it_links_it
 
 
 def test_build_names_the_commit_not_the_time(tmp_path: Path) -> None:
-    assert front_page.build(tmp_path) == "an unknown commit (not a git checkout)"
-    here = front_page.build(Path(__file__).parent)
+    assert build(tmp_path) == "an unknown commit (not a git checkout)"
+    here = build(Path(__file__).parent)
     assert here.startswith("commit ") and " of 20" in here
 
 
@@ -122,11 +123,34 @@ def test_refresh_reads_the_findings_again_from_what_the_run_left(tmp_path: Path,
     write_index(index, findings="<p>written by the report job</p>")
     assert refresh_findings({str(index): pages}) == [str(index)]
     assert "run <code>snakemake -c2 validation</code>" in findings_of(index)
-    front_page.VALIDATION_SUMMARY.parent.mkdir(parents=True)
-    front_page.VALIDATION_SUMMARY.write_text(SUMMARY)
+    VALIDATION_SUMMARY.parent.mkdir(parents=True)
+    VALIDATION_SUMMARY.write_text(SUMMARY)
     assert refresh_findings({str(index): pages}) == [str(index)]
     assert "validation_index.html" in findings_of(index)
     assert refresh_findings({str(index): pages}) == []
     (tmp_path / "virtual.csv").unlink()
     before = index.read_text()
     assert refresh_findings({str(index): pages}) == [] and index.read_text() == before
+
+
+def test_findings_are_outdated_when_an_artefact_is_newer_than_their_reading_or_the_build_changed(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The Snakefile's onsuccess reads the findings again only when pages.findings_outdated says so: an index written
+    with the time before its findings read the artefacts (as_of_ns, less the file-time margin) is outdated by an
+    artefact written after that time, even while the findings were being read, not by one written before; and by a
+    findings text that names another build than the checkout's."""
+    monkeypatch.chdir(tmp_path)
+    artefact, index = tmp_path / "virtual.csv", tmp_path / "index.html"
+    artefact.write_text(VIRTUAL)
+    os.utime(artefact, ns=(10**18, 10**18))
+    assert not findings_outdated(index, [artefact])  # no index: nothing to refresh
+    current = build_paragraph() + "<p>rows</p>"
+    read_at = 10**18 + 2 * FILE_TIME_MARGIN_NS  # the artefact was written before the reading started
+    write_index(index, findings=current, as_of_ns=read_at)
+    assert index.stat().st_mtime_ns == read_at - FILE_TIME_MARGIN_NS
+    assert not findings_outdated(index, [artefact, tmp_path / "absent.csv"])
+    os.utime(artefact, ns=(read_at + 1, read_at + 1))  # written while the findings were read
+    assert findings_outdated(index, [artefact])
+    os.utime(artefact, ns=(10**18, 10**18))
+    write_index(index, findings="<p>Built from commit 0123456789ab of 2020-01-01.</p>", as_of_ns=read_at)
+    assert findings_outdated(index, [artefact])

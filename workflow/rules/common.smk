@@ -1,10 +1,11 @@
 # Helpers shared by the rules: the rig's test conditions (read at DAG time) and each rule's code.
 import sys
+import threading
 
 import yaml
 
 from vibroadhesion.pipeline.imports import import_closure
-from vibroadhesion.pipeline.pages import refresh_indexes
+from vibroadhesion.pipeline.pages import VALIDATION_SUMMARY, findings_outdated, index_artefacts, refresh_indexes
 
 # Each step is workflow/scripts/<name>.py, run by `script:` with the interpreter that runs Snakemake
 # (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
@@ -96,20 +97,41 @@ def parameter_inputs(wildcards):
     return FITTED if wildcards.parameters == "fitted" else PUBLISHED
 
 
-def refresh_report():
-    """The Snakefile's onsuccess and onerror: the indexes' findings read again from the artefacts the run left
-    (pipeline.front_page.refresh_findings, imported here: pandas and the refined model only once the jobs are done,
-    not nbconvert or a kernel's client), then the pages missing or older than an artefact they show marked on them
-    (pipeline.pages.refresh_indexes) and printed."""
-    from vibroadhesion.pipeline.front_page import refresh_findings
+def release_scheduler_timers():
+    """End of a run (the Snakefile's onsuccess and onerror, after Snakemake's scheduler has returned): cancel the
+    scheduler's pending re-evaluation timers, which only keep the interpreter from exiting.
 
-    refresh_findings(
-        {
-            f"results/report/{index}.html": {stem: page_parameters(stem) for stem in pages}
-            for index, pages in REPORT_JOBS.values()
-            if index
-        }
-    )
+    Snakemake 9's scheduler arms a threading.Timer of the rate limiter's timespan (max-jobs-per-timespan,
+    profiles/default/config.yaml) after every scheduling round, and each finished job starts a new chain of them;
+    the default 100/1s made ~1000 rounds in a cold `all validation` (4 CPU-s of the 2 cores, where the jobs run)
+    and kept the process alive up to 1 s after the last job. The profile's 10000/10s makes a tenth of the rounds;
+    cancelling here ends the run when its jobs end (a path without the hooks, --no-hooks, waits up to 10 s)."""
+    for thread in threading.enumerate():
+        if isinstance(thread, threading.Timer) and "_schedule_reevalutation" in getattr(
+            thread.function, "__qualname__", ""
+        ):
+            thread.cancel()
+
+
+def refresh_report():
+    """The Snakefile's onsuccess and onerror: the indexes' findings read again from the artefacts the run left, where
+    one of them is newer than its index or the build changed (pipeline.pages.findings_outdated, standard library only;
+    pipeline.front_page.refresh_findings imports pandas and the refined model, about a second, only then), then the
+    pages missing or older than an artefact they show marked on them (pipeline.pages.refresh_indexes) and printed."""
+    indexes = {
+        f"results/report/{index}.html": {stem: page_parameters(stem) for stem in pages}
+        for index, pages in REPORT_JOBS.values()
+        if index
+    }
+    outdated = {
+        index: pages
+        for index, pages in indexes.items()
+        if findings_outdated(index, [*index_artefacts(pages).values(), VALIDATION_SUMMARY])
+    }
+    if outdated:
+        from vibroadhesion.pipeline.front_page import refresh_findings
+
+        refresh_findings(outdated)
     stale = refresh_indexes({page: list(inputs.values()) for page, inputs in PAGE_INPUTS.items()}, "results/report")
     if stale:
         print(f"report: out of date, marked on the index: {', '.join(stale)}", file=sys.stderr)

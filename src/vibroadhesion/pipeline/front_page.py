@@ -9,7 +9,7 @@ is the commit's, not the time of the build, so that the same tree gives the same
 from __future__ import annotations
 
 import html
-import subprocess
+import time
 from collections.abc import Mapping
 from pathlib import Path
 
@@ -17,11 +17,8 @@ import pandas as pd
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import fit_report
-from vibroadhesion.pipeline.pages import findings_of, write_index
+from vibroadhesion.pipeline.pages import VALIDATION_SUMMARY, build_paragraph, findings_of, index_artefacts, write_index
 from vibroadhesion.pipeline.tables import Column, show, significant
-
-#: The validation's error summary: read when present (the default target does not build it and must not wait).
-VALIDATION_SUMMARY = Path("results/validation/rigid_error_summary.csv")
 
 AMPLIFICATION_COLUMNS = {
     "level": Column("model level", format="text"),
@@ -40,23 +37,6 @@ VALIDITY_COLUMNS = {
     "max_error_outside": Column("largest relative error, A > 0.1 a_m", format="rel"),
     "within": Column("grid points within 5 %", format="text"),
 }
-
-
-def _git(repository: str | Path, *args: str) -> str:
-    """The output of ``git -C repository args`` (raises OSError or CalledProcessError)."""
-    return subprocess.run(["git", "-C", str(repository), *args], capture_output=True, text=True,
-                          check=True).stdout.strip()
-
-
-def build(repository: str | Path = ".") -> str:
-    """``commit <hash> of <date>`` of the tree the report is built from (``, with uncommitted changes``)."""
-    try:
-        commit, date = _git(repository, "log", "-1", "--format=%H %cs").split()
-        dirty = _git(repository, "status", "--porcelain", "--untracked-files=no", "--", "src", "workflow",
-                     "notebooks", "data")
-    except (OSError, subprocess.CalledProcessError, ValueError):
-        return "an unknown commit (not a git checkout)"
-    return f"commit {commit[:12]} of {date}" + (", with uncommitted changes" if dirty else "")
 
 
 def amplification(virtual_csv: str | Path) -> pd.DataFrame:
@@ -104,7 +84,7 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
     comes from ``validation_summary`` when it exists (the Snakefile's onsuccess reads it again at the end of a run:
     :func:`refresh_findings`).
     """
-    parts = [f"<p>Built from {html.escape(build())}.</p>"]
+    parts = [build_paragraph()]
     if "fit_json" in artefacts:
         fit = fit_report.read_fit(artefacts["fit_json"])
         used = (f"the figures use the <b>{html.escape(fit['figures_use'])}</b> fit (status: "
@@ -152,20 +132,9 @@ def refresh_findings(indexes: Mapping[str, Mapping[str, Mapping[str, str]]]) -> 
         artefacts = index_artefacts(parameters)
         if not Path(index).exists() or not all(Path(path).exists() for path in artefacts.values()):
             continue
+        as_of = time.time_ns()
         text = findings(artefacts)
         if text != findings_of(index):
-            write_index(index, findings=text)
+            write_index(index, findings=text, as_of_ns=as_of)
             rewritten.append(index)
     return rewritten
-
-
-def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
-    """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
-
-    The validation page comes first among its index's pages, so its ``virtual_csv`` (every fixation) is the one read.
-    """
-    artefacts: dict[str, str] = {}
-    for values in parameters.values():
-        for name, path in values.items():
-            artefacts.setdefault(name, path)
-    return artefacts

@@ -1,6 +1,7 @@
 """The pages of the rendered report (results/report/) and their index.
 
-With the standard library only, so the Snakefile can read the list of pages without importing the numerics stack.
+With the standard library only, so the Snakefile can read the list of pages, and decide whether the findings need
+reading again (:func:`findings_outdated`), without importing the numerics stack.
 
 Each page is a notebook of notebooks/ executed by papermill and exported to HTML by nbconvert
 (:mod:`vibroadhesion.pipeline.steps.report`); its tables come from :mod:`vibroadhesion.pipeline.report`.
@@ -9,10 +10,20 @@ Each page is a notebook of notebooks/ executed by papermill and exported to HTML
 from __future__ import annotations
 
 import html
+import os
+import subprocess
 from collections.abc import Collection, Iterable, Mapping
 from pathlib import Path
 
 from vibroadhesion.pipeline.atomic import atomic_path
+
+#: The validation's error summary: read when present (the default target does not build it and must not wait).
+VALIDATION_SUMMARY = Path("results/validation/rigid_error_summary.csv")
+#: How far before the findings read their artefacts an index's time is set (:func:`write_index`): more than the
+#: granularity of file times (the kernel's coarse clock, a few ms), so that an artefact written while they are read
+#: is newer than the index. Far less than a report job's pages take before its index, so the index stays newer
+#: than the job's inputs.
+FILE_TIME_MARGIN_NS = 50_000_000
 
 #: (file stem, title) of the pages of the default target (``snakemake -c2``), in the order of its index.
 PAGES: list[tuple[str, str]] = [
@@ -88,12 +99,16 @@ _INDEX_TEXT = {
 
 
 
-def write_index(out: str | Path, stale: Collection[str] = (), findings: str | None = None) -> None:
+def write_index(out: str | Path, stale: Collection[str] = (), findings: str | None = None,
+                as_of_ns: int | None = None) -> None:
     """results/report/index.html (figure pages) or validation_index.html (validation pages), by the file name.
 
     Pages named in ``stale`` (:func:`stale_pages`) are marked out of date, with a note above the list. ``findings``
     is an HTML fragment placed before the list of pages (:mod:`vibroadhesion.pipeline.front_page`); None keeps those
     of the index already there (:func:`refresh_indexes` marks stale pages without recomputing the findings).
+    ``as_of_ns`` (``time.time_ns()`` taken before the findings read their artefacts) sets the index's modification
+    time, less :data:`FILE_TIME_MARGIN_NS`: an artefact written after the findings started to read is newer than the
+    index, and :func:`findings_outdated` says so.
     """
     stem = Path(out).stem
     if stem not in _INDEX_TEXT:
@@ -101,6 +116,28 @@ def write_index(out: str | Path, stale: Collection[str] = (), findings: str | No
     text = _index_html(stem, stale, findings_of(out) if findings is None else findings)
     with atomic_path(out) as tmp:
         tmp.write_text(text, encoding="utf-8")
+    if as_of_ns is not None:
+        os.utime(out, ns=(as_of_ns - FILE_TIME_MARGIN_NS, as_of_ns - FILE_TIME_MARGIN_NS))
+
+
+def findings_outdated(index: str | Path, artefacts: Iterable[str | Path], repository: str | Path = ".") -> bool:
+    """Whether the findings of the existing ``index`` must be read again (an artefact newer, another build).
+
+    True when an artefact is newer than the index or the build the findings name is not the checkout's
+    (:func:`build`). The index's time is that of its findings (:func:`write_index`'s ``as_of_ns``; a rewrite that
+    only marks stale pages keeps findings that were current, since it follows their refresh), so the check needs no
+    import of the numerics stack: the Snakefile's onsuccess reads the findings again, at about a second, only when
+    this is true.
+    """
+    index = Path(index)
+    if not index.exists():
+        return False
+    written = index.stat().st_mtime_ns
+    if any(Path(a).exists() and Path(a).stat().st_mtime_ns > written for a in artefacts):
+        return True
+    return not findings_of(index).startswith(build_paragraph(repository))
+
+
 
 
 #: The comments around the findings of an index, so that a rewrite can keep them.
@@ -197,3 +234,37 @@ def refresh_indexes(page_inputs: Mapping[str, Iterable[str | Path]], report_dir:
         if index.read_text(encoding="utf-8") != _index_html(stem, stale, findings_of(index)):
             write_index(index, stale)
     return marked
+
+
+def _git(repository: str | Path, *args: str) -> str:
+    """The output of ``git -C repository args`` (raises OSError or CalledProcessError)."""
+    return subprocess.run(["git", "-C", str(repository), *args], capture_output=True, text=True,
+                          check=True).stdout.strip()
+
+
+def build(repository: str | Path = ".") -> str:
+    """``commit <hash> of <date>`` of the tree the report is built from (``, with uncommitted changes``)."""
+    try:
+        commit, date = _git(repository, "log", "-1", "--format=%H %cs").split()
+        dirty = _git(repository, "status", "--porcelain", "--untracked-files=no", "--", "src", "workflow",
+                     "notebooks", "data")
+    except (OSError, subprocess.CalledProcessError, ValueError):
+        return "an unknown commit (not a git checkout)"
+    return f"commit {commit[:12]} of {date}" + (", with uncommitted changes" if dirty else "")
+
+
+def build_paragraph(repository: str | Path = ".") -> str:
+    """The first paragraph of an index's findings: the build they were read from (:func:`build`)."""
+    return f"<p>Built from {html.escape(build(repository))}.</p>"
+
+
+def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
+    """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
+
+    The validation page comes first among its index's pages, so its ``virtual_csv`` (every fixation) is the one read.
+    """
+    artefacts: dict[str, str] = {}
+    for values in parameters.values():
+        for name, path in values.items():
+            artefacts.setdefault(name, path)
+    return artefacts

@@ -11,6 +11,7 @@ of its own. Modules imported by an earlier page stay imported, as in any Python 
 from __future__ import annotations
 
 import re
+import time
 from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -22,7 +23,7 @@ import papermill
 from jupyter_client.manager import KernelManager
 
 from vibroadhesion.pipeline.atomic import atomic_path
-from vibroadhesion.pipeline.pages import page_title_and_index, write_index
+from vibroadhesion.pipeline.pages import index_artefacts, page_title_and_index, write_index
 
 #: The tag (and, here, the cell id) of the cell in which papermill injects a page's parameters.
 INJECTED = "injected-parameters"
@@ -131,7 +132,8 @@ def render(parameters: Mapping[str, Mapping[str, str]], executed: Sequence[str |
             reset_namespace(manager)
             render_page(page, manager, exporter)
     if indexes:  # the findings' imports (pandas, the refined model) only in the job that writes an index
-        from vibroadhesion.pipeline.front_page import findings, index_artefacts
+        from vibroadhesion.pipeline.front_page import findings
 
         for index in indexes:
-            write_index(index, findings=findings(index_artefacts(parameters)))
+            as_of = time.time_ns()  # before the findings read the artefacts (pages.findings_outdated)
+            write_index(index, findings=findings(index_artefacts(parameters)), as_of_ns=as_of)
