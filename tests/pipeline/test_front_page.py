@@ -6,6 +6,7 @@ expected number is arithmetic on the fixture: prediction / simulation - 1 and th
 
 import json
 import os
+import time
 from pathlib import Path
 
 import pytest
@@ -128,6 +129,10 @@ def test_refresh_reads_the_findings_again_from_what_the_run_left(tmp_path: Path,
     assert refresh_findings({str(index): pages}) == [str(index)]
     assert "validation_index.html" in findings_of(index)
     assert refresh_findings({str(index): pages}) == []
+    for artefact in (*index_artefacts(pages).values(), VALIDATION_SUMMARY):  # written a second before the reading
+        os.utime(artefact, ns=(time.time_ns() - 10**9, time.time_ns() - 10**9))
+    assert refresh_findings({str(index): pages}) == []
+    assert not findings_outdated(index, index_artefacts(pages).values())  # read again, the same: marked current
     (tmp_path / "virtual.csv").unlink()
     before = index.read_text()
     assert refresh_findings({str(index): pages}) == [] and index.read_text() == before

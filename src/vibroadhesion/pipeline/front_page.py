@@ -17,7 +17,14 @@ import pandas as pd
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import fit_report
-from vibroadhesion.pipeline.pages import VALIDATION_SUMMARY, build_paragraph, findings_of, index_artefacts, write_index
+from vibroadhesion.pipeline.pages import (
+    VALIDATION_SUMMARY,
+    build_paragraph,
+    findings_of,
+    findings_read_at,
+    index_artefacts,
+    write_index,
+)
 from vibroadhesion.pipeline.tables import Column, show, significant
 
 AMPLIFICATION_COLUMNS = {
@@ -125,7 +132,9 @@ def refresh_findings(indexes: Mapping[str, Mapping[str, Mapping[str, str]]]) -> 
     writes an index may run before the artefacts of another target it reports on (the validity, built by the
     ``validation`` target in the same run); read again at the end, the findings show what the run left. An index
     whose artefacts are not all there (a run that stopped midway) keeps its findings: its stale marks say why. Each
-    index is rewritten only when its findings change; returns the indexes rewritten.
+    index is rewritten only when its findings change, else only its time is set to the reading's
+    (:func:`~vibroadhesion.pipeline.pages.findings_read_at`, so the next run does not read them again); returns the
+    indexes rewritten.
     """
     rewritten = []
     for index, parameters in indexes.items():
@@ -137,4 +146,6 @@ def refresh_findings(indexes: Mapping[str, Mapping[str, Mapping[str, str]]]) -> 
         if text != findings_of(index):
             write_index(index, findings=text, as_of_ns=as_of)
             rewritten.append(index)
+        else:  # the same findings: the index keeps its bytes, and its time says they are current
+            findings_read_at(index, as_of)
     return rewritten

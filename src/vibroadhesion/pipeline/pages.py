@@ -117,7 +117,16 @@ def write_index(out: str | Path, stale: Collection[str] = (), findings: str | No
     with atomic_path(out) as tmp:
         tmp.write_text(text, encoding="utf-8")
     if as_of_ns is not None:
-        os.utime(out, ns=(as_of_ns - FILE_TIME_MARGIN_NS, as_of_ns - FILE_TIME_MARGIN_NS))
+        findings_read_at(out, as_of_ns)
+
+
+def findings_read_at(index: str | Path, as_of_ns: int) -> None:
+    """Record that the findings of ``index`` are those of the artefacts as of ``as_of_ns``.
+
+    ``as_of_ns`` is ``time.time_ns()`` taken before the findings read the artefacts; it becomes the index's
+    modification time, less :data:`FILE_TIME_MARGIN_NS`. The index's bytes stay as they are.
+    """
+    os.utime(index, ns=(as_of_ns - FILE_TIME_MARGIN_NS, as_of_ns - FILE_TIME_MARGIN_NS))
 
 
 def findings_outdated(index: str | Path, artefacts: Iterable[str | Path], repository: str | Path = ".") -> bool:
@@ -136,8 +145,6 @@ def findings_outdated(index: str | Path, artefacts: Iterable[str | Path], reposi
     if any(Path(a).exists() and Path(a).stat().st_mtime_ns > written for a in artefacts):
         return True
     return not findings_of(index).startswith(build_paragraph(repository))
-
-
 
 
 #: The comments around the findings of an index, so that a rewrite can keep them.
