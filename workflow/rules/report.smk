@@ -100,6 +100,12 @@ def report_inputs(pages):
     return {**inputs, "notebooks": notebooks, "code": code("report", *notebooks) + [template]}
 
 
+# The pages of Figs. 3, 5, 6 and 8 need only the paper's figures, drawn early: rendered as soon as they are (with the
+# gathers), they leave the end of the run to the two index jobs, which wait for the last artefacts; of those, the
+# validation index (five pages, the longest) starts first.
+REPORT_PRIORITY = {"report_pages": GATHER_PRIORITY, "report_validation_index": 1}
+
+
 # One job per entry of REPORT_JOBS renders its pages in one kernel (pipeline.steps.report): starting a kernel per
 # page cost as much as executing it. A page's output is its executed notebook and its HTML page; the job of an
 # index also writes the index.
@@ -123,6 +129,7 @@ for job, (index, pages) in REPORT_JOBS.items():
             ),
         log:
             f"results/logs/{job}.log",
+        priority: REPORT_PRIORITY.get(job, 0)
         localrule: True
         params:
             pages={stem: page_parameters(stem) for stem in pages},
