@@ -33,10 +33,10 @@ SLOW_SPEEDS = (0.001, 0.01, 0.1, 0.3, 1.0)  # workflow/config.yaml withdrawal.sl
 def runs(results):
     """(start problem, start state, V/v0) of every withdrawal of TESTS that the sweep in ``results`` ran."""
     setup, params, chi0 = rig(f"{results}/data/setup.json")
+    sweep = pd.read_csv(f"{results}/withdrawal/speed_sweep.csv")
     for fixation, frequency in TESTS:
         (case,) = setup_fixations(setup, params["v0"], fixation)
         omega_check = experiment_omega_check(setup, params["v0"])[frequency]
-        sweep = pd.read_csv(f"{results}/withdrawal/speed_sweep.csv")
         ran = sweep[(sweep["fixation"] == fixation) & (sweep["frequency_hz"] == frequency)
                     & (sweep["method"] == "time_domain") & (sweep["status"] != speed_sweep.SKIPPED)]
         for h1, problem in speed_sweep.rig_problems(chi0, params["n"], omega_check, setup.radius,

@@ -5,29 +5,26 @@ import threading
 import yaml
 
 from vibroadhesion.pipeline.imports import import_closure
-from vibroadhesion.pipeline.pages import VALIDATION_SUMMARY, findings_outdated, index_artefacts, refresh_indexes
+from vibroadhesion.pipeline.pages import findings_inputs, findings_outdated, refresh_indexes
 
 # Each step is workflow/scripts/<name>.py, run by `script:` with the interpreter that runs Snakemake
 # (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
 PYTHON = sys.executable
 
-# The validation target's long jobs (5-15 s: the withdrawal sweep, the rig comparison, the identifiability fits and
-# sensitivities) wait for the pages that show them, which wait for every check: started ahead of the jobs of default
-# priority (longest first), the short ones fill both cores at the end instead of a long one running alone.
-# Snakemake does not pass a job's priority on to the jobs it waits for: the two that every simulation or every job
-# waits for (ingest_setup, simulation_kernels) go first explicitly, before any job of the targets' priorities.
+# Job priorities (Snakemake starts the ready job of highest priority first, and does not pass a job's priority on to
+# the jobs it waits for), highest first; the aim is a run that ends on the two report index jobs side by side:
+# - the setup and the compiled kernels, which every job or every simulation waits for;
 GATE_PRIORITY = 30
-LONG_JOB_PRIORITY = 5
-# Of those, the ones of 5-7 s (the withdrawal sweep of a fixation, the rig comparison, the identifiability fits: the
-# exact averaging's force minimum) first: longest first, the run's end is shortest.
-LONGEST_JOB_PRIORITY = 6
-# The chain from the measured rows to Figs. 4 and 7 (ingest, fit, tables, plot: about 3.5 s in all) gates their pages
-# and the fit page: ahead of the long jobs, so that the run ends on report pages in both cores, not on this chain.
+# - the chain from the measured rows to Figs. 4 and 7 (ingest, fit, tables, plot: about 3.5 s in all), which gates
+#   their pages and the fit page;
 PULLOFF_CHAIN_PRIORITY = 10
-# The validation target's gathers and plots (under 2 s each) run as soon as their parts are, ahead of the long jobs:
-# left at default priority they waited for every long job and then ran one after another before the last page; so
-# the run ends on the three report jobs side by side.
+# - the validation's gathers and plots and the pages of Figs. 3, 5, 6 and 8 (under 3 s each), as soon as their inputs
+#   are there: at default priority they waited for every long job and then ran one after another before the last page;
 GATHER_PRIORITY = 8
+# - the validation's long jobs, longest first: the 5-7 s ones (the withdrawal sweep of a fixation, the rig comparison,
+#   the identifiability fits), then the 1.5-4 s ones (slow flow, sensitivities, compliant sweep, benchmarks).
+LONGEST_JOB_PRIORITY = 6
+LONG_JOB_PRIORITY = 5
 
 FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
@@ -123,11 +120,7 @@ def refresh_report():
         for index, pages in REPORT_JOBS.values()
         if index
     }
-    outdated = {
-        index: pages
-        for index, pages in indexes.items()
-        if findings_outdated(index, [*index_artefacts(pages).values(), VALIDATION_SUMMARY])
-    }
+    outdated = {index: pages for index, pages in indexes.items() if findings_outdated(index, findings_inputs(pages))}
     if outdated:
         from vibroadhesion.pipeline.front_page import refresh_findings
 

@@ -265,6 +265,14 @@ def build_paragraph(repository: str | Path = ".") -> str:
     return f"<p>Built from {html.escape(build(repository))}.</p>"
 
 
+def findings_inputs(parameters: Mapping[str, Mapping[str, str]]) -> list[str | Path]:
+    """Every file the findings of an index may read (:func:`vibroadhesion.pipeline.front_page.findings`).
+
+    The artefacts of its pages (:func:`index_artefacts`) and the validation summary, read when present.
+    """
+    return [*index_artefacts(parameters).values(), VALIDATION_SUMMARY]
+
+
 def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:
     """The artefacts an index's findings read: each parameter of its pages, named by the first page that has it.
 
