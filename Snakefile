@@ -90,6 +90,7 @@ rule validation:
         rules.identifiability.output.fits,
         rules.identifiability.output.information,
         rules.identifiability_design.output.design,
+        rules.fit_coverage.output.summary,
         rules.benchmark_speed_vs_error.output.csv,
         rules.report_validation_index.output.index,
 

@@ -40,7 +40,7 @@ import pandas as pd
 from vibroadhesion.experiments.benchmarking import machine_description
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
-from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, pulloff_problem
+from vibroadhesion.experiments.envelope import envelope_log_derivatives, pulloff_problem
 from vibroadhesion.experiments.speed_fit import speed_pulloff
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff, traced_pulloff
 

@@ -22,6 +22,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -100,3 +101,17 @@ def pipeline_results(tmp_path_factory: pytest.TempPathFactory) -> Path:
             _built_copy(work)
             built.touch()
     return work / "results"
+
+
+class LinearResiduals:
+    """r(x) = r0 + J (x - x0): a residual model linear in ln theta, the closed-form case of the fit's intervals
+    (vibroadhesion.experiments.fit_statistics: there the profile t statistic is exactly linear)."""
+
+    def __init__(self, r0: np.ndarray, jac: np.ndarray, x0: np.ndarray) -> None:
+        self.r0, self.jac, self.x0 = r0, jac, x0
+
+    def residuals(self, x: np.ndarray) -> np.ndarray:
+        return self.r0 + self.jac @ (x - self.x0)
+
+    def jacobian(self, x: np.ndarray) -> np.ndarray:
+        return self.jac

@@ -13,11 +13,12 @@ import io
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import AMPLITUDES_UM, FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
+from conftest import AMPLITUDES_UM, LinearResiduals, FREQUENCIES_HZ, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 
 from vibroadhesion.core.records import Pulloff
-from vibroadhesion.experiments import fitting
-from vibroadhesion.experiments.fitting import fit_gent_schultz, parameters_from_fit
+from vibroadhesion.experiments import fit_summary, fitting
+from vibroadhesion.experiments.fit_summary import parameters_from_fit
+from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.progress import Heartbeat
 
@@ -169,9 +170,15 @@ def test_four_plausible_rows_end_in_a_status_not_an_exception(model: str) -> Non
     """The rows of issue 13 that ended in 'Singular matrix' (uncaught LinAlgError): every level ends in a status."""
     rows = _table([(200, 20, 130), (200, 60, 700), (300, 40, 420), (400, 100, 1300)])
     summary = fit_gent_schultz(rows, model, PUBLISHED, **GEOMETRY)
-    assert summary["status"] in ("fitted", "at_bound", "not_identifiable", "failed"), summary
-    if summary["status"] in ("not_identifiable", "failed"):
-        assert summary["note"] and all(summary["parameters"][k]["std_error"] is None for k in ("w0", "n", "v0"))
+    assert summary["status"] in ("fitted", "poor_fit", "at_bound", "not_identifiable", "failed"), summary
+    statuses = {k: summary["parameters"][k]["status"] for k in ("w0", "n", "v0")}
+    if summary["status"] != "failed":  # the level's status is the first of its parameters' that holds
+        assert (summary["status"] == "fitted") == all(s in ("fitted", "published") for s in statuses.values())
+    for entry in summary["parameters"].values():  # no interval is shown for a parameter the rows do not determine
+        assert (entry["status"] == "fitted") == (entry["interval"] is not None and None not in entry["interval"]
+                                                 and entry["std_error"] is not None)
+    if summary["status"] != "fitted":
+        assert summary["note"] or summary["goodness_of_fit"]["rejected"]
 
 
 def test_one_condition_replicated_cannot_separate_w0_and_n() -> None:
@@ -236,25 +243,27 @@ def test_a_row_whose_force_is_not_a_positive_number_fails_the_level_and_names_it
     assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}
 
 
-@pytest.mark.parametrize(("n", "scale", "status"), [(3.99, 1e-3, "at_bound"), (3.5, 1e-3, "fitted"),
+@pytest.mark.parametrize(("n", "scale", "status"), [(3.99, 1e-3, "at_bound"), (3.5, 1e-3, "not_identifiable"),
                                                      (1.0, 1.0, "fitted")])
 def test_a_parameter_whose_bound_lies_within_two_standard_errors_is_at_bound(n: float, scale: float,
                                                                              status: str) -> None:
     """A search that stops by its xtol just inside the box (n = 3.99, ln-distance 2.5e-3 from the bound 4) with rows
     that hardly constrain n (its Jacobian column 1e-3 against w0's 1: relative SE of n ~ 7 at s = 1.7e-2) reports n
     ``at_bound`` without a standard error, and w0's standard error with n held: s/|J_w0| w0 in closed form. The same
-    rows with the search ending 13 % from the bound (n = 3.5: more than 1 %, the estimate is the data's, however
-    uncertain), and rows that constrain n (column ~1: relative SE ~ 1e-2) at n = 1 leave it ``fitted``."""
+    rows with the search ending 13 % from the bound (n = 3.5: more than 1 %) leave n ``not_identifiable`` (its
+    relative SE ~ 7 > 0.5: not determined by these rows), and rows that constrain n (column ~1: relative SE ~ 1e-2)
+    at n = 1 leave it ``fitted``. The residual model is linear in ln theta (fit_statistics' closed-form case)."""
     jac = np.array([[1.0, scale], [1.0, -scale], [1.0, 2.0 * scale]])
     residuals = np.array([1e-2, -1e-2, 1e-2])
     params = GentSchultzParameters(w0=0.3, n=n, v0=V0)
-    lo, hi = np.log([fitting.BOUNDS[k] for k in ("w0", "n")]).T
+    lo, hi = np.log([fit_summary.BOUNDS[k] for k in ("w0", "n")]).T
     x = np.log([params.w0, params.n])
-    fit = fitting.fit_record(params, _Result(x, jac), residuals, ("w0", "n"), (lo, hi))
-    rows = pd.DataFrame({"line": [2, 3, 4], "pulloff_mN": [100.0, 110.0, 120.0]})
-    summary = fitting.fitted_summary(rows, fit, ("w0", "n"), "")
+    fit = fit_summary.fit_record(params, _Result(x, jac), residuals, ("w0", "n"), (lo, hi), LinearResiduals(residuals, jac, x))
+    rows = pd.DataFrame({"line": [2, 3, 4], "pulloff_mN": [100.0, 110.0, 120.0], "frequency_hz": [200.0, 300.0, 400.0],
+                         "h1_um": [20.0, 40.0, 60.0]})
+    summary = fit_summary.fitted_summary(rows, fit, ("w0", "n"), "")
     s = np.sqrt(residuals @ residuals / (3 - 2))
-    assert summary["status"] == status
+    assert summary["parameters"]["n"]["status"] == status
     if status == "at_bound":
         assert summary["at_bound"] == ["n"] and summary["parameters"]["n"]["std_error"] is None
         assert summary["parameters"]["w0"]["std_error"] == pytest.approx(s / np.sqrt(3.0) * 0.3, rel=1e-12)

@@ -38,9 +38,10 @@ def test_eq72_root_satisfies_equation_with_mpmath_j_to_1e12(eta1: float, n: floa
     lhs = mp.mpf(CHI0) ** 2 / 3 * mp.cbrt(j0) * abs(jc1)
     residual = float(abs(lhs / mp.mpf(eta1) - 1))
     assert residual < 1e-12, f"Abar_cr = {Abar!r}: relative residual {residual:.3e}"
-    # Eq. (71): the reported amplification is J0(Abar_cr)^2, and pulloff_leading agrees with the scalar solver
+    # Eq. (71): the reported amplification is J0(Abar_cr)^2, and pulloff_leading (the vectorised solver) agrees with
+    # the scalar one: each locates ln Abar to 1e-14 + 4 eps |ln Abar| (numerics.roots), so the two differ by < 1e-13
     est = pulloff_leading(np.array([eta1]), CHI0, law)
-    assert est.Abar_cr[0] == Abar
+    assert abs(est.Abar_cr[0] / Abar - 1) < 1e-13
     assert abs(est.pulloff_ratio[0] / float(j0**2) - 1) < 1e-12
 
 

@@ -20,7 +20,7 @@ from conftest import N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 from vibroadhesion.experiments import fitting, simulation_fit
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN, predict_pulloff
-from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, pulloff_problem
+from vibroadhesion.experiments.envelope import envelope_log_derivatives, pulloff_problem
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff, traced_pulloff
 from vibroadhesion.numerics.progress import Heartbeat
 

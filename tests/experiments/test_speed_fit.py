@@ -19,7 +19,7 @@ from conftest import N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
 from vibroadhesion.experiments import speed_fit
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
-from vibroadhesion.experiments.simulation_fit import log_difference, pulloff_problem, shifted
+from vibroadhesion.experiments.envelope import log_difference, pulloff_problem, shifted
 from vibroadhesion.experiments.speed_fit import speed_log_derivative, speed_pulloff
 from vibroadhesion.experiments.virtual_pulloff import simulated_pulloff
 

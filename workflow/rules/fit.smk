@@ -13,6 +13,7 @@ rule fit_gent_schultz:
     priority: PULLOFF_CHAIN_PRIORITY
     params:
         figures_use=config["fit"]["figures_use"],
+        judgement={key: config["fit"][key] for key in ("relative_scatter", "alpha", "confidence")},
     script:
         "../scripts/fit_gent_schultz.py"
 

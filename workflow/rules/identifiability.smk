@@ -8,6 +8,7 @@ from vibroadhesion.core.levels import names
 # The fitted model levels, one job each, in the registry's order (the row order of fits.csv).
 FITTED_LEVELS = names("fit")
 DESIGN = config["identifiability"]["design"]
+COVERAGE = config["identifiability"]["coverage"]
 # The sensitivity jobs: the rig's test frequencies (the rows of sensitivity.csv), then the design's other candidate
 # frequencies, frequencies_per_job in each (wildcard "200_300_400": the frequencies in Hz joined by "_").
 _EXTRA = sorted({f"{float(f):g}" for f in DESIGN["frequencies_hz"]} - set(FREQUENCIES), key=float)
@@ -94,3 +95,26 @@ rule identifiability_design:
         added=DESIGN["added_tests"],
     script:
         "../scripts/identifiability_design.py"
+
+
+rule fit_coverage:
+    """How often the fit's nominal interval holds the true parameters: simulated rows at the rig's tests with relative
+    scatter, fitted by the pipeline's fit (one level: see vibroadhesion.experiments.fit_coverage)."""
+    input:
+        **PUBLISHED,
+        code=code("fit_coverage"),
+    output:
+        fits="results/validation/identifiability/fit_coverage_fits.csv",
+        summary="results/validation/identifiability/fit_coverage.csv",
+    log:
+        "results/logs/fit_coverage.log",
+    benchmark:
+        "results/benchmarks/rules/fit_coverage.tsv"
+    priority: LONG_JOB_PRIORITY
+    params:
+        level=COVERAGE["level"],
+        relative_scatter=COVERAGE["relative_scatter"],
+        seeds=COVERAGE["seeds"],
+        confidence=config["fit"]["confidence"],
+    script:
+        "../scripts/fit_coverage.py"

@@ -62,6 +62,7 @@ PAGE_INPUTS = {
         "sensitivity_csv": rules.identifiability.output.sensitivity,
         "design_csv": rules.identifiability_design.output.design,
         "candidates_csv": rules.identifiability_design.output.candidates,
+        "coverage_csv": rules.fit_coverage.output.summary,
         "virtual_csv": VIRTUAL_RIGID,
         "setup_json": SETUP_JSON,
     },

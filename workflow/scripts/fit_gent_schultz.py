@@ -4,4 +4,5 @@ from vibroadhesion.pipeline.steps import logged
 from vibroadhesion.pipeline.steps.fit import fit
 
 with logged(snakemake.log[0], snakemake.rule):
-    fit(snakemake.input.setup, snakemake.input.pulloff, snakemake.output[0], snakemake.params.figures_use)
+    fit(snakemake.input.setup, snakemake.input.pulloff, snakemake.output[0], snakemake.params.figures_use,
+        snakemake.params.judgement)

@@ -13,21 +13,16 @@ estimate of one level (:func:`vibroadhesion.experiments.pulloff.predict_pulloff`
   Otherwise the fit says why and keeps the published v0.
 
 The parameters are fitted in logarithms (positivity; ln-standard errors are relative errors)
-by a trust-region reflective least-squares search (scipy ``trf``) inside :data:`BOUNDS`, on
-relative residuals model/observed - 1 (pull-off forces span an order of magnitude; measurement
-error is roughly proportional). A parameter that ends on its bound is reported as such
-(``status`` ``at_bound``, no standard error): the data push it out of the physical range, which
-means the model cannot represent them, not that the bound is the answer; so is a parameter that ends within 1 %
-of a bound lying within two of its standard errors (the rows do not exclude the bound). The covariance of the
-parameters inside the box is s^2 (J^T J)^-1 with s^2 = RSS/(m - p), mapped back to natural units
-by the delta method. For the identifiability test the relative residual scale is floored at
-``noise_floor``, so that noise-free (synthetic) rows do not make any parameter look identifiable.
-Every fit ends in a status, never in an exception that takes the other levels down: ``published``
-(no rows: the published values pass through); ``fitted``;
-``at_bound``; ``not_identifiable`` (fewer rows than parameters, or a Jacobian of lower rank than the
-free parameters: no standard errors, the published values kept where nothing was fitted); ``failed``
-(the model has no solution at a trial point, or the search does not converge, or a row's pull-off force
-is not a positive number, e.g. NaN for a simulated row without a pull-off), with the reason.
+by a trust-region reflective least-squares search (scipy ``trf``) inside
+:data:`~vibroadhesion.experiments.fit_summary.BOUNDS`, on relative residuals model/observed - 1 (pull-off forces
+span an order of magnitude; measurement error is roughly proportional), with central-difference derivatives
+(:class:`LevelResiduals`). What the fit determines -- one status per parameter and per level, the
+profile-likelihood intervals, the goodness-of-fit test -- is :mod:`vibroadhesion.experiments.fit_summary`'s, by the
+rules of :mod:`vibroadhesion.experiments.fit_statistics`. Every fit ends in a status, never in an exception that
+takes the other levels down: ``published`` (no rows: the published values pass through); ``fitted``;
+``poor_fit``; ``at_bound``; ``not_identifiable`` (fewer rows than parameters, or a parameter the rows do not
+determine); ``failed`` (the model has no solution at a trial point, or the search does not converge, or a row's
+pull-off force is not a positive number, e.g. NaN for a simulated row without a pull-off), with the reason.
 
 Rows. The model is evaluated once per distinct (frequency, amplitude) pair, so replicate rows cost
 nothing. A static JKR test (``h1_um`` = 0, no vibration) has the pull-off |P_cr^JKR| = (3 pi/2) R w0
@@ -39,42 +34,28 @@ withdrawal speed (``withdrawal_speed_um_s`` > 0) is predicted by the simulation 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Sequence
 from dataclasses import replace
 from typing import Any
 
 import numpy as np
 import pandas as pd
-from scipy.optimize import OptimizeResult, least_squares
+from scipy.optimize import least_squares
 
 from vibroadhesion.core import levels
+from vibroadhesion.experiments.fit_statistics import Settings, relative_standard_errors
+from vibroadhesion.experiments.fit_summary import BOUNDS, fit_record, fitted_summary, published_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.progress import Heartbeat
 from vibroadhesion.numerics.roots import NoRootError
 
-UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
-
-#: Box searched by the fit (natural units). n: the exponents for which the J-integrals, the roots
-#: of Eqs. (72), (106) and the simulation are tested (tests/test_integrals.py, test_simulate.py);
-#: w0: 1 mJ/m^2 to 10 J/m^2 spans van der Waals surfaces to tacky elastomers (the paper's 0.236);
-#: v0: 1 nm/s to 1 m/s, the reference speeds of Gent–Schultz fits (the paper's 44.5 um/s).
-BOUNDS = {"w0": (1e-3, 10.0), "n": (0.05, 4.0), "v0": (1e-9, 1.0)}
-
-#: A log-parameter closer than this to ln of a bound is on it.
-_ON_BOUND = 1e-6
-#: A parameter within _NEAR_BOUND of a bound in ln (1 %) whose bound lies within _BOUND_SE of its standard errors is
-#: reported on it: where the rows hardly constrain it the search stops short of the bound they push it to (by its
-#: ftol/gtol, with standard errors up to 1e10), and the rows do not exclude the bound.
-_NEAR_BOUND = 1e-2
-_BOUND_SE = 2.0
+#: Step in ln theta of the central differences of :class:`LevelResiduals` (truncation O(h^2) ~ 1e-10 against the
+#: levels' ~1e-12 relative rounding over h ~ 1e-7: the derivatives to ~1e-7 relative).
+DIFFERENCE_STEP = 1e-5
 
 
 class FitError(RuntimeError):
     """The least-squares iteration failed; no estimate is reported."""
-
-
-ResidualFunction = Callable[[np.ndarray], np.ndarray]
-ParameterMap = Callable[[np.ndarray], GentSchultzParameters]
 
 
 def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: np.ndarray,
@@ -93,93 +74,71 @@ def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: n
     return out
 
 
-def _residual_function(
-    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float],
-    progress: Heartbeat | None = None,
-) -> tuple[ResidualFunction, ParameterMap]:
-    """Relative residuals P_model/P_observed - 1 of the rows as a function of ln(free), and the parameter map.
+class LevelResiduals:
+    """Relative residuals P_model/P_observed - 1 of the rows for an asymptotic level, in ln(free), and their Jacobian.
 
-    Each evaluation beats ``progress`` with its rms relative residual and parameters.
+    Each evaluation beats ``progress`` with its rms relative residual and parameters. The Jacobian is the central
+    difference of step :data:`DIFFERENCE_STEP` in each ln theta.
     """
-    freq, h1, observed = (rows[c].to_numpy(float) for c in ("frequency_hz", "h1_um", "pulloff_mN"))
 
-    def params_of(log_values: np.ndarray) -> GentSchultzParameters:
-        return replace(base, **{name: math.exp(v) for name, v in zip(free, log_values, strict=True)})
+    def __init__(self, rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...],
+                 geometry: dict[str, float], progress: Heartbeat | None = None) -> None:
+        """The rows, the level, the parameters held (``base``), the free names, R and E*."""
+        self.model, self.base, self.free, self.geometry, self.progress = model, base, free, geometry, progress
+        self.freq, self.h1, self.observed = (rows[c].to_numpy(float) for c in ("frequency_hz", "h1_um", "pulloff_mN"))
 
-    def residuals(log_values: np.ndarray) -> np.ndarray:
-        params = params_of(log_values)
-        relative = _model_mN(model, params, freq, h1, geometry) / observed - 1.0
-        if progress is not None:
-            progress.beat(f"rms relative residual {math.sqrt(np.mean(relative**2)):.4g} at {params}")
+    def params_of(self, log_values: np.ndarray) -> GentSchultzParameters:
+        """The parameter set at ln(free) = ``log_values``."""
+        return replace(self.base, **{name: math.exp(v) for name, v in zip(self.free, log_values, strict=True)})
+
+    def residuals(self, log_values: np.ndarray) -> np.ndarray:
+        """P_model/P_observed - 1 per row."""
+        params = self.params_of(log_values)
+        relative = _model_mN(self.model, params, self.freq, self.h1, self.geometry) / self.observed - 1.0
+        if self.progress is not None:
+            self.progress.beat(f"rms relative residual {math.sqrt(np.mean(relative**2)):.4g} at {params}")
         return relative
 
-    return residuals, params_of
+    def jacobian(self, log_values: np.ndarray) -> np.ndarray:
+        """d residual / d ln(free) by central differences."""
+        steps = DIFFERENCE_STEP * np.eye(len(log_values))
+        return np.column_stack([(self.residuals(log_values + e) - self.residuals(log_values - e))
+                                / (2.0 * DIFFERENCE_STEP) for e in steps])
 
 
-def _least_squares(
-    rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...], geometry: dict[str, float],
-    progress: Heartbeat | None = None,
-) -> dict[str, Any]:
-    """Least squares in ln(free) with bounds (trust-region reflective); the fit record of ``fit_gent_schultz``."""
-    residuals, params_of = _residual_function(rows, model, base, free, geometry, progress)
+def _least_squares(rows: pd.DataFrame, model: str, base: GentSchultzParameters, free: tuple[str, ...],
+                   geometry: dict[str, float], progress: Heartbeat | None = None) -> dict[str, Any]:
+    """Least squares in ln(free) with bounds (trust-region reflective); the fit record (``fit_summary``)."""
+    residual_model = LevelResiduals(rows, model, base, free, geometry, progress)
     lo, hi = np.log([BOUNDS[name] for name in free]).T
     x0 = np.clip(np.log([getattr(base, name) for name in free]), lo, hi)
     try:
-        result = least_squares(residuals, x0, method="trf", bounds=(lo, hi), jac="3-point",
-                               xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=300)
+        result = least_squares(residual_model.residuals, x0, method="trf", bounds=(lo, hi),
+                               jac=residual_model.jacobian, xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=300)
     except NoRootError as exc:
         raise FitError(f"{model} fit of {free}: the model has no solution at a trial point ({exc})") from exc
     except FitError as exc:
         raise FitError(f"{model} fit of {free}: {exc}") from exc
     if result.status <= 0:
         raise FitError(f"{model} fit of {free} did not converge: {result.message}")
-    return fit_record(params_of(result.x), result, result.fun, free, (lo, hi))
+    residual_model.progress = None
+    return fit_record(residual_model.params_of(result.x), result, result.fun, free, (lo, hi), residual_model)
 
 
-def fit_record(params: GentSchultzParameters, result: OptimizeResult, residuals: np.ndarray, free: tuple[str, ...],
-               log_bounds: tuple[np.ndarray, np.ndarray]) -> dict[str, Any]:
-    """The fit record of a finished search in ln(free) (every level's, the simulation's too).
+def v0_gate(jac: np.ndarray, s2: float, settings: Settings) -> tuple[bool, str]:
+    """Would v0 be determined if freed? Its relative standard error from the Jacobian in (ln w0, ln n, ln v0).
 
-    ``params`` and ``residuals`` at ``result.x``; the free parameters within 1e-6 of ln of a bound are
-    ``at_bound``, and ``bound_distance`` keeps each one's distance to the nearer bound in ln (for
-    :func:`fitted_summary`); s^2 = RSS/(m - p) over the m rows and p free parameters.
+    The same threshold as every parameter's status (:func:`~vibroadhesion.experiments.fit_statistics.parameter_status`),
+    at the residual scale floored at the noise floor.
     """
-    lo, hi = log_bounds
-    distance = np.minimum(result.x - lo, hi - result.x)
-    return {
-        "params": params,
-        "jac": result.jac,
-        "at_bound": [name for name, d in zip(free, distance, strict=True) if d < _ON_BOUND],
-        "bound_distance": dict(zip(free, distance.tolist(), strict=True)),
-        "s2": float(residuals @ residuals) / (len(residuals) - len(free)),
-        "residuals": residuals,
-        "nfev": int(result.nfev),
-        "message": str(result.message),
-    }
-
-
-def _v0_identifiability(
-    rows: pd.DataFrame, model: str, fit: dict[str, Any], geometry: dict[str, float], max_relative_se: float,
-    noise_floor: float,
-) -> tuple[bool, str]:
-    """Would v0 be determined if freed at the (w0, n) fit?
-
-    Relative standard error of v0 from the central-difference Jacobian in (ln w0, ln n, ln v0)
-    there, at a residual scale floored at ``noise_floor``.
-    """
-    residuals, _ = _residual_function(rows, model, fit["params"], ("w0", "n", "v0"), geometry)
-    x = np.log([fit["params"].w0, fit["params"].n, fit["params"].v0])
-    step = 1e-4
-    jac = np.column_stack([(residuals(x + step * e) - residuals(x - step * e)) / (2 * step) for e in np.eye(3)])
-    s2 = max(fit["s2"], noise_floor**2)
-    try:
-        rel_se = math.sqrt(max(s2 * np.linalg.inv(jac.T @ jac)[-1, -1], 0.0))
-    except np.linalg.LinAlgError:
+    s2 = max(s2, settings.noise_floor**2)
+    rel_se = relative_standard_errors(jac, s2)
+    if rel_se is None:
         return False, "v0 not identifiable: the Jacobian is singular in v0"
-    if not np.isfinite(rel_se) or rel_se > max_relative_se:
-        return False, (f"v0 not identifiable: its relative standard error would be {rel_se:.3g} "
-                       f"(> {max_relative_se:g}) at a relative residual scale of {math.sqrt(s2):.3g}")
-    return True, f"v0 identifiable: relative standard error {rel_se:.3g}"
+    if not np.isfinite(rel_se[-1]) or rel_se[-1] > settings.max_relative_se:
+        return False, (f"v0 not identifiable: its relative standard error would be {rel_se[-1]:.3g} "
+                       f"(> {settings.max_relative_se:g}) at a relative residual scale of {math.sqrt(s2):.3g}")
+    return True, f"v0 identifiable: relative standard error {rel_se[-1]:.3g}"
 
 
 def fit_gent_schultz(
@@ -189,16 +148,19 @@ def fit_gent_schultz(
     *,
     radius: float,
     reduced_modulus: float,
-    max_relative_se_v0: float = 0.5,
-    noise_floor: float = 1e-3,
+    settings: Settings | None = None,
+    starts: Sequence[GentSchultzParameters] = (),
     progress: Heartbeat | None = None,
 ) -> dict[str, Any]:
     """Fit one model level to the rows; return a JSON-ready summary (see module docstring).
 
-    A long search says where it is through ``progress`` (the pipeline's fit writes it to the rule's log).
+    ``starts``: further start points of the simulation's search (the fits of cheaper levels,
+    :func:`vibroadhesion.experiments.simulation_fit.fit_simulation`); the asymptotic levels start from
+    ``published``. A long search says where it is through ``progress`` (the pipeline's fit writes it to the log).
     """
     if model not in levels.names("fit"):
         raise ValueError(f"unknown model {model!r}; expected one of {levels.names('fit')}")
+    settings = settings or Settings()
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     frequencies = sorted(set(rows.loc[rows["h1_um"] > 0, "frequency_hz"].tolist()))
     summary: dict[str, Any] = {"model": model, "rows": len(rows)}
@@ -217,35 +179,35 @@ def fit_gent_schultz(
         if model == "simulation":  # the full model: its own search (envelope Jacobian, warm-started families)
             from vibroadhesion.experiments.simulation_fit import fit_simulation  # imports this module: no cycle
 
-            return summary | fit_simulation(rows, published, **geometry, max_relative_se_v0=max_relative_se_v0,
-                                            noise_floor=noise_floor, progress=progress)
-        return summary | _fit_and_summarise(rows, model, published, geometry, v0_note, max_relative_se_v0,
-                                            noise_floor, progress)
+            return summary | fit_simulation(rows, published, **geometry, settings=settings, starts=starts,
+                                            progress=progress)
+        return summary | _fit_and_summarise(rows, model, published, geometry, v0_note, settings, progress)
     except FitError as exc:
         return summary | _unfitted(published, "failed", f"{exc}: published values kept", v0_note)
 
 
 def _unfitted(published: GentSchultzParameters, status: str, note: str, v0_note: str) -> dict[str, Any]:
     """The summary of a level that fitted nothing: its status, why, and the published values (not estimates)."""
-    return {"status": status, "note": note, "parameters": _parameter_table(published, (), (), None),
+    return {"status": status, "determined": [], "note": note, "parameters": published_table(published),
             "v0_identifiable": False, "v0_note": v0_note or "no fit"}
 
 
 def _fit_and_summarise(rows: pd.DataFrame, model: str, published: GentSchultzParameters, geometry: dict[str, float],
-                       v0_note: str, max_relative_se_v0: float, noise_floor: float,
-                       progress: Heartbeat | None) -> dict[str, Any]:
+                       v0_note: str, settings: Settings, progress: Heartbeat | None) -> dict[str, Any]:
     """Fit (w0, n), then v0 as well where it is identifiable; the summary (:func:`fitted_summary`)."""
     free: tuple[str, ...] = ("w0", "n")
     fit = _least_squares(rows, model, published, free, geometry, progress)
     if not v0_note:
-        identifiable, v0_note = _v0_identifiability(rows, model, fit, geometry, max_relative_se_v0, noise_floor)
+        three = LevelResiduals(rows, model, fit["params"], ("w0", "n", "v0"), geometry)
+        jac = three.jacobian(np.log([fit["params"].w0, fit["params"].n, fit["params"].v0]))
+        identifiable, v0_note = v0_gate(jac, fit["s2"], settings)
         if identifiable:
             with_v0 = _least_squares(rows, model, fit["params"], ("w0", "n", "v0"), geometry, progress)
             if "v0" in with_v0["at_bound"]:
                 v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
             else:
                 free, fit = ("w0", "n", "v0"), with_v0
-    return fitted_summary(rows, fit, free, v0_note)
+    return fitted_summary(rows, fit, free, v0_note, settings)
 
 
 def v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
@@ -263,92 +225,3 @@ def v0_note_before_fit(model: str, frequencies: int, rows: int) -> str:
     if rows <= 3:
         return f"v0 not identifiable: {rows} rows leave no degree of freedom for a third parameter"
     return ""
-
-
-def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...], v0_note: str) -> dict[str, Any]:
-    """Status, estimates, covariance (Gauss-Newton, J^T J at the optimum, in logarithms), residuals."""
-    inside, cov = _inside_and_covariance(fit, free, fit["at_bound"])
-    se = {name: _ln_se(cov, inside, name, fit) for name in inside} if cov is not None else {}
-    near = [name for name in se if fit["bound_distance"][name] < min(_NEAR_BOUND, _BOUND_SE * se[name])]
-    notes = [f"{name} ends on its bound {getattr(fit['params'], name):.3g} {UNITS[name]}: "
-             f"the model cannot represent the rows inside {BOUNDS[name]}" for name in fit["at_bound"]]
-    notes += [f"{name} = {getattr(fit['params'], name):.4g} {UNITS[name]} ends within 1 % and {_BOUND_SE:g} standard "
-              f"errors (relative {se[name]:.3g}) of its bound in {BOUNDS[name]}: the rows do not determine it inside "
-              "the box (no standard error)" for name in near]
-    at_bound = [*fit["at_bound"], *near]
-    if near:
-        inside, cov = _inside_and_covariance(fit, free, at_bound)
-    status = "at_bound" if at_bound else "fitted"
-    if cov is None:
-        status = "not_identifiable"
-        notes.append(f"the Jacobian has lower rank than the {len(inside)} free parameters inside the box: the rows "
-                     f"do not determine {', '.join(inside)} separately (no standard errors)")
-        inside = ()
-    return {
-        "status": status,
-        "note": "; ".join(notes),
-        "free_parameters": list(free),
-        "at_bound": at_bound,
-        "parameters": _parameter_table(fit["params"], free, inside, cov),
-        "covariance": {"parameters": list(inside), "matrix": [] if cov is None else cov.tolist()},
-        "residuals_mN": [{"line": int(line), "residual": float(r * obs)}
-                         for line, r, obs in zip(rows["line"], fit["residuals"], rows["pulloff_mN"], strict=True)],
-        "rms_relative_residual": float(np.sqrt(np.mean(fit["residuals"] ** 2))),
-        "v0_identifiable": "v0" in free,
-        "v0_note": v0_note,
-        "function_evaluations": fit["nfev"],
-        "optimizer_message": fit["message"],
-    }
-
-
-def _inside_and_covariance(fit: dict[str, Any], free: tuple[str, ...],
-                           at_bound: list[str]) -> tuple[tuple[str, ...], np.ndarray | None]:
-    """The free parameters not on a bound and their covariance (:func:`_covariance`) with the others held."""
-    inside = tuple(name for name in free if name not in at_bound)
-    theta = np.array([getattr(fit["params"], name) for name in inside])
-    return inside, _covariance(fit["jac"][:, [free.index(name) for name in inside]], fit["s2"], theta)
-
-
-def _ln_se(cov: np.ndarray, inside: tuple[str, ...], name: str, fit: dict[str, Any]) -> float:
-    """Standard error of ln ``name`` (its relative standard error) from the natural-unit covariance."""
-    k = inside.index(name)
-    return math.sqrt(max(float(cov[k, k]), 0.0)) / float(getattr(fit["params"], name))
-
-
-def _covariance(jac: np.ndarray, s2: float, theta: np.ndarray) -> np.ndarray | None:
-    """Gauss-Newton covariance s^2 (J^T J)^-1 in ln theta mapped to theta (delta method).
-
-    None where J (in the logarithms of the parameters inside the box) has a lower numerical rank than its
-    columns (numpy's tolerance: largest singular value times max(J.shape) times the machine epsilon).
-    """
-    if jac.shape[1] == 0:
-        return np.zeros((0, 0))
-    if np.linalg.matrix_rank(jac) < jac.shape[1]:
-        return None
-    try:
-        cov = s2 * np.linalg.inv(jac.T @ jac) * np.outer(theta, theta)
-    except np.linalg.LinAlgError:
-        return None
-    return cov if np.all(np.isfinite(cov)) else None
-
-
-def _parameter_table(params: GentSchultzParameters, free: tuple[str, ...], inside: tuple[str, ...],
-                     cov: np.ndarray | None) -> dict[str, Any]:
-    table = {}
-    for name in ("w0", "n", "v0"):
-        entry: dict[str, Any] = {"estimate": getattr(params, name), "unit": UNITS[name]}
-        if name in inside and cov is not None:
-            k = inside.index(name)
-            entry.update(std_error=math.sqrt(max(cov[k, k], 0.0)), source="fitted")
-        elif name in free:
-            entry.update(std_error=None, source=f"fitted, on its bound {BOUNDS[name]}")
-        else:
-            entry.update(std_error=None, source="published (Fig. 4 caption)")
-        table[name] = entry
-    return table
-
-
-def parameters_from_fit(summary: dict[str, Any]) -> GentSchultzParameters:
-    """The parameter set a fit summary reports (fitted where free, published otherwise)."""
-    p = summary["parameters"]
-    return GentSchultzParameters(p["w0"]["estimate"], p["n"]["estimate"], p["v0"]["estimate"])

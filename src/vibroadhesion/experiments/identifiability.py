@@ -12,7 +12,7 @@ No measured pull-off numbers behind Fig. 4 are published, so the question is ask
 2. **What the data hold at all.** The local sensitivity of the simulated pull-off itself,
    S_ij = d ln P_i / d ln theta_j (theta = w0, n, v0), at the detachment point of each row's family by
    the envelope theorem (:func:`envelope_sensitivity`: two warm-started orbits per parameter at the
-   fixed base offset of the pull-off, :func:`vibroadhesion.experiments.simulation_fit.envelope_log_derivatives`).
+   fixed base offset of the pull-off, :func:`vibroadhesion.experiments.envelope.envelope_log_derivatives`).
    A row whose family ends without a pull-off keeps its status and has no derivative. For relative
    measurement scatter sigma the Fisher information is S^T S / sigma^2 and the smallest attainable
    standard errors of ln theta are the square roots of the diagonal of its inverse (Cramer-Rao). A
@@ -34,9 +34,9 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from vibroadhesion.experiments.envelope import envelope_log_derivatives, pulloff_problem
 from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
-from vibroadhesion.experiments.simulation_fit import envelope_log_derivatives, pulloff_problem
 from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
 from vibroadhesion.numerics.progress import ProgressBar
 

@@ -61,15 +61,24 @@ A row with a withdrawal speed V > 0 (:data:`SPEED_COLUMN`) is predicted instead 
 once per distinct (f, h1, V), with its own Jacobian (central differences):
 :mod:`vibroadhesion.experiments.speed_fit`; a withdrawal without a pull-off is a row without one, as above.
 
+Starts. The misfit surface of the full model has more than one basin (the families' branches above), and from
+the published parameters alone the search can run to a bound while a cheaper level fits the same rows inside the
+box. The search therefore starts from several points (:func:`start_points`): the published set and the fits of
+the cheaper levels, each with w0 scaled by the ratio of the simulated to the observed forces there (one
+evaluation: the least-squares factor c = sum q_i / sum q_i^2 of q_i = P*_i/P_observed,i, since |P_cr| scales
+with w0 through |P_JKR|, Eq. 70, and the amplification moves less); the :data:`SEARCHES` starts of least misfit
+are searched (the next only while the best so far ends on a bound), each with its own families, and the fit of
+least stated misfit is kept.
+
 The least-squares search, the identifiability rule for v0 (at least two frequencies and a relative
-standard error below ``max_relative_se_v0``) and the summary are those of
-:mod:`vibroadhesion.experiments.fitting`.
+standard error below the threshold of every parameter's status) and the summary are those of
+:mod:`vibroadhesion.experiments.fitting` and :mod:`vibroadhesion.experiments.fit_summary`.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -77,24 +86,27 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import OptimizeResult, least_squares
 
-from vibroadhesion import simulation
-from vibroadhesion.core import groups
 from vibroadhesion.core.groups import PHAT_JKR
-from vibroadhesion.core.problem import Problem
-from vibroadhesion.core.ratelaw import GentSchultz
-from vibroadhesion.core.records import OrbitDiagnostics, SteadyState
-from vibroadhesion.experiments.fitting import BOUNDS, FitError, fit_record, fitted_summary, v0_note_before_fit
+from vibroadhesion.experiments.envelope import (
+    WARM_ITERATIONS,
+    Extremum,
+    diagnostics,
+    envelope_log_derivatives,
+    pulloff_problem,
+    start_state,
+)
+from vibroadhesion.experiments.fit_statistics import Settings
+from vibroadhesion.experiments.fit_summary import BOUNDS, fit_record, fitted_summary
+from vibroadhesion.experiments.fitting import FitError, v0_gate, v0_note_before_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
 from vibroadhesion.experiments.virtual_pulloff import traced_family
 from vibroadhesion.numerics.progress import Heartbeat
 
-#: Step h in ln theta of the envelope derivative (module docstring: O(h^2) + 1e-10/h, ~1e-6 relative).
-ENVELOPE_STEP = 1e-3
-#: Shooting periods allowed to an orbit warm-started next to a known one (3-6 suffice, as in a family).
-WARM_ITERATIONS = 15
 #: The warm family starts this many family steps (0.2 in deltabar_m) on the compressive side of the last pull-off.
 WARM_MARGIN = 2
 _FAMILY_STEP = 0.2
+#: How many of the start points (:func:`start_points`) are searched in full.
+SEARCHES = 2
 
 #: The key of the static JKR rows (h1 = 0, no frequency): their pull-off is |P_cr^JKR| (Eq. 70).
 STATIC = (0.0, 0.0)
@@ -104,73 +116,8 @@ SPEED_COLUMN = "withdrawal_speed_um_s"
 #: A pair's key: (f, h1) of a quasi-static test (or :data:`STATIC`), (f, h1, V) of a test at a withdrawal speed.
 Key = tuple[float, ...]
 
-#: The most tensile orbit of a pair's family: (base offset d*, orbit there).
-Extremum = tuple[float, SteadyState]
-
 #: Statuses of a pair whose force is a pull-off (the virtual pull-off's, or Eq. 70 for a static test).
 WITH_PULLOFF = ("pulloff", "static_jkr")
-
-
-def pulloff_problem(params: GentSchultzParameters, frequency_hz: float, h1_um: float, *, radius: float,
-                    reduced_modulus: float, base_offset: float = 0.0) -> Problem:
-    """The rigidly fixed problem of one test (Eqs. 4-11): chi0 (Eq. 64), eta1 (Eq. 65), omega_check (Eq. 105)."""
-    return Problem(GentSchultz(params.n), groups.chi0(params.w0, reduced_modulus, radius), h1_um * 1e-6 / radius,
-                   float(groups.omega_check(frequency_hz, params.v0, radius)), base_offset=base_offset)
-
-
-def envelope_log_derivatives(params: GentSchultzParameters, frequency_hz: float, h1_um: float, at: Extremum,
-                             names: tuple[str, ...], *, radius: float, reduced_modulus: float,
-                             step: float = ENVELOPE_STEP) -> np.ndarray:
-    """d ln|P_cr| / d ln theta for theta in ``names`` at the pull-off orbit ``at`` (module docstring).
-
-    Central differences in ln theta of the mean force Phat_m of two orbits at the fixed base offset d* of
-    ``at``, warm-started from its state (envelope theorem), plus 1 for w0 (|P_cr^JKR| is proportional to w0,
-    Eq. 70). Where one shifted orbit does not converge, the one-sided difference with the orbit of ``at``
-    (error O(step), ~1e-3 of the derivative); NaN where neither does.
-    """
-    d_star, orbit = at
-    if orbit.orbit is None:
-        raise TypeError("the pull-off orbit has no orbit diagnostics")
-    derivatives = np.empty(len(names))
-    for k, name in enumerate(names):
-        plus, minus = (_shifted_phat(params, name, sign * step, frequency_hz, h1_um, at, radius=radius,
-                                     reduced_modulus=reduced_modulus) for sign in (1.0, -1.0))
-        derivatives[k] = log_difference(plus, minus, orbit.orbit.phat_m, step) + (1.0 if name == "w0" else 0.0)
-    return derivatives
-
-
-def log_difference(plus: float, minus: float, center: float, step: float) -> float:
-    """d ln|F|/d ln theta from F at ln theta +- ``step``: central, ln(plus/minus)/(2 step), error O(step^2).
-
-    Where one of them is NaN, the one-sided difference with ``center`` (F at ln theta; error O(step)); NaN where
-    both are, or where the two values compared differ in sign (no logarithm).
-    """
-    pair = ((plus, minus, 2.0 * step) if not (math.isnan(plus) or math.isnan(minus))
-            else (plus, center, step) if math.isnan(minus) else (center, minus, step))
-    ratio = pair[0] / pair[1]
-    return math.log(ratio) / pair[2] if ratio > 0 else math.nan
-
-
-def shifted(params: GentSchultzParameters, name: str, log_shift: float) -> GentSchultzParameters:
-    """``params`` with ``name`` scaled by exp(``log_shift``) (a step in ln theta of Eq. 73's parameters)."""
-    return replace(params, **{name: getattr(params, name) * math.exp(log_shift)})
-
-
-def _shifted_phat(params: GentSchultzParameters, name: str, log_shift: float, frequency_hz: float, h1_um: float,
-                  at: Extremum, *, radius: float, reduced_modulus: float) -> float:
-    """Phat_m (Eq. 4') of the orbit at the fixed base offset of ``at`` with ``name`` scaled by exp(``log_shift``).
-
-    Warm-started from the orbit of ``at`` with WARM_ITERATIONS periods, then with the shooting's default cap
-    (a shooting that stalls next to the pull-off converges then); NaN if neither converges.
-    """
-    d_star, orbit = at
-    problem = pulloff_problem(shifted(params, name, log_shift), frequency_hz, h1_um, radius=radius,
-                              reduced_modulus=reduced_modulus, base_offset=d_star)
-    state = _start_state(orbit)
-    found = simulation.steady_state(problem, initial_state=state, max_iterations=WARM_ITERATIONS)
-    if not found.ok:
-        found = simulation.steady_state(problem, initial_state=state)
-    return found.orbit.phat_m if found.ok and found.orbit is not None else math.nan
 
 
 @dataclass
@@ -217,7 +164,7 @@ class _Families:
                 continue
             problem = pulloff_problem(params, *pair, **self.geometry)
             warm = self.warm.get(pair)
-            start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, _start_state(warm[1]))
+            start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, start_state(warm[1]))
             record, at = traced_family(problem, warm=start, iterations=WARM_ITERATIONS)
             self.families += 1
             if self.progress is not None:
@@ -228,7 +175,7 @@ class _Families:
             if at is not None:
                 if record.status == "pulloff":
                     self.warm[pair] = at
-                forces[i] = _diagnostics(at[1]).phat_m / PHAT_JKR * jkr_mN(params.w0, self.geometry["radius"])
+                forces[i] = diagnostics(at[1]).phat_m / PHAT_JKR * jkr_mN(params.w0, self.geometry["radius"])
         self.key, self.last, self.derivatives = key, (statuses, forces, extrema), {}
         return self.last
 
@@ -290,18 +237,6 @@ def _pair_keys(rows: pd.DataFrame) -> list[Key]:
             for f, h, v in zip(rows["frequency_hz"], rows["h1_um"], speeds, strict=True)]
 
 
-def _start_state(orbit: SteadyState) -> np.ndarray:
-    """The state at tau = 0 of a simulated orbit (its diagnostics' ``start_state``)."""
-    return _diagnostics(orbit).start_state
-
-
-def _diagnostics(orbit: SteadyState) -> OrbitDiagnostics:
-    """The orbit diagnostics of a simulated steady state (every simulated record has them)."""
-    if orbit.orbit is None:
-        raise TypeError("a simulated orbit has diagnostics")
-    return orbit.orbit
-
-
 class _Objective:
     """Relative residuals P_model/P_observed - 1 of the rows in ln(free), and their envelope Jacobian."""
 
@@ -347,6 +282,22 @@ class _Objective:
         return (np.nan_to_num(forces)[:, None] * per_pair)[self.row_pair] / self.observed[:, None]
 
 
+class _StatedMisfit:
+    """The stated model's residuals and Jacobian of an objective (the misfit the fit reports; for the intervals)."""
+
+    def __init__(self, objective: _Objective) -> None:
+        """The objective whose :meth:`_Objective.stated_residuals` the fit minimised last."""
+        self.objective = objective
+
+    def residuals(self, log_values: np.ndarray) -> np.ndarray:
+        """P_cr/P_observed - 1 per row; -1 where the pair has no pull-off."""
+        return self.objective.stated_residuals(log_values)
+
+    def jacobian(self, log_values: np.ndarray) -> np.ndarray:
+        """Their envelope Jacobian."""
+        return self.objective.stated_jacobian(log_values)
+
+
 def _search(residuals: Callable[[np.ndarray], np.ndarray], jacobian: Callable[[np.ndarray], np.ndarray],
             x0: np.ndarray, log_bounds: tuple[np.ndarray, np.ndarray]) -> OptimizeResult:
     """scipy's trust-region reflective least squares in ln(free) from ``x0`` (tolerances of :func:`_least_squares`)."""
@@ -379,55 +330,98 @@ def _least_squares(rows: pd.DataFrame, base: GentSchultzParameters, free: tuple[
     if found <= len(free):
         raise FitError(f"simulation fit of {free}: {found} of {len(families.pairs)} (f, h1) pairs have a simulated "
                        f"pull-off at the end of the search ({params}): too few to determine {len(free)} parameters")
-    return fit_record(params, result, residuals, free, (lo, hi))
+    return fit_record(params, result, residuals, free, (lo, hi), _StatedMisfit(objective))
 
 
-def _v0_relative_se(rows: pd.DataFrame, fit: dict[str, Any], families: _Families, noise_floor: float) -> float:
-    """Relative standard error v0 would have if freed at the (w0, n) fit (``fitting``'s rule, envelope Jacobian).
+def start_points(rows: pd.DataFrame, candidates: Sequence[GentSchultzParameters], geometry: dict[str, float],
+                 progress: Heartbeat | None = None) -> list[GentSchultzParameters]:
+    """The candidates with w0 scaled to the rows (module docstring), least predicted misfit first, without repeats.
 
-    s^2 (J^T J)^-1 in (ln w0, ln n, ln v0) at a residual scale floored at ``noise_floor``; inf if singular.
+    One evaluation per candidate (candidates within 1 % of one already evaluated in every parameter are passed over):
+    q_i = P*_i/P_observed,i there, the scale c = sum q_i / sum q_i^2 and the predicted misfit sum (c q_i - 1)^2 of
+    the scaled start. A candidate whose families give no force is kept unscaled, after the others.
     """
-    params = fit["params"]
-    objective = _Objective(rows, params, ("w0", "n", "v0"), families)
-    log_values = np.log([params.w0, params.n, params.v0])
-    jac = objective.stated_jacobian(log_values)
-    try:
-        variance = max(fit["s2"], noise_floor**2) * np.linalg.inv(jac.T @ jac)[-1, -1]
-    except np.linalg.LinAlgError:
-        return math.inf
-    return math.sqrt(max(variance, 0.0)) if np.isfinite(variance) else math.inf
+    scored: list[tuple[float, int, GentSchultzParameters]] = []
+    for index, candidate in enumerate(candidates):
+        if any(_close(candidate, other) for other in candidates[:index]):
+            continue
+        families = _Families(sorted(set(_pair_keys(rows))), geometry, progress=progress)
+        q = _Objective(rows, candidate, ("w0",), families).residuals(np.log([candidate.w0])) + 1.0
+        q = q[np.isfinite(q) & (q > 0)]
+        if q.size == 0:
+            scored.append((math.inf, index, candidate))
+            continue
+        scale = float(q.sum() / (q @ q))
+        w0 = float(np.clip(candidate.w0 * scale, *BOUNDS["w0"]))
+        predicted = float(np.sum((scale * q - 1.0) ** 2))
+        scored.append((predicted if math.isfinite(predicted) else math.inf, index, replace(candidate, w0=w0)))
+    return [params for _, _, params in sorted(scored)]  # (misfit, order given): the indices are distinct
+
+
+def _close(a: GentSchultzParameters, b: GentSchultzParameters, tolerance: float = 1e-2) -> bool:
+    """Do ``a`` and ``b`` differ by less than ``tolerance`` (relative) in every parameter?"""
+    return all(abs(getattr(a, name) / getattr(b, name) - 1.0) < tolerance for name in ("w0", "n", "v0"))
+
+
+def _best_search(rows: pd.DataFrame, starts: list[GentSchultzParameters], geometry: dict[str, float],
+                 progress: Heartbeat | None) -> tuple[dict[str, Any], _Families]:
+    """The (w0, n) fit of least stated misfit over searches from the first :data:`SEARCHES` starts, and its families.
+
+    The next start is searched only while the best fit so far ends on a bound (a search that ends inside the box is
+    a minimum the rows admit; another start costs as much again). A search that fails is passed over while another
+    succeeds; :class:`FitError` (the first reason) if none does.
+    """
+    best: tuple[float, dict[str, Any], _Families] | None = None
+    failures: list[str] = []
+    for start in starts[:SEARCHES]:
+        families = _Families(sorted(set(_pair_keys(rows))), geometry, progress=progress)
+        try:
+            fit = _least_squares(rows, start, ("w0", "n"), families)
+        except FitError as exc:
+            failures.append(str(exc))
+            continue
+        cost = float(fit["residuals"] @ fit["residuals"])
+        if best is None or cost < best[0]:
+            best = (cost, fit, families)
+        if not best[1]["at_bound"]:
+            break
+    if best is None:
+        raise FitError(failures[0] if failures else "simulation fit: no start point")
+    return best[1], best[2]
 
 
 def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radius: float, reduced_modulus: float,
-                   max_relative_se_v0: float, noise_floor: float, progress: Heartbeat | None = None) -> dict[str, Any]:
+                   settings: Settings, starts: Sequence[GentSchultzParameters] = (),
+                   progress: Heartbeat | None = None) -> dict[str, Any]:
     """The fitted part of ``fitting.fit_gent_schultz``'s summary for the level ``simulation`` (module docstring).
 
-    w0 and n are fitted from ``published``; v0 too when the rows span two frequencies and its relative
-    standard error at the (w0, n) fit is below ``max_relative_se_v0`` (residual scale floored at
-    ``noise_floor``). Adds ``row_status`` (status and model force per row at the fit, with its withdrawal speed
-    where the rows have speeds) and ``families_traced`` (and ``withdrawals_run``). Each traced family and
-    withdrawal beats ``progress``.
+    w0 and n are fitted from the best of ``published`` and ``starts`` (:func:`start_points`, :func:`_best_search`);
+    v0 too when the rows span two frequencies and its relative standard error at the (w0, n) fit passes the
+    threshold of ``settings`` (residual scale floored at its noise floor). Adds ``row_status`` (status and model force
+    per row at the fit, with its withdrawal speed where the rows have speeds), ``families_traced`` (and
+    ``withdrawals_run``) and ``starts`` (the start points searched). Each traced family and withdrawal beats
+    ``progress``.
     """
     pairs = sorted(set(_pair_keys(rows)))
-    families = _Families(pairs, {"radius": radius, "reduced_modulus": reduced_modulus}, progress=progress)
+    geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
+    ranked = start_points(rows, [published, *starts], geometry, progress)
+    fit, families = _best_search(rows, ranked, geometry, progress)
     free: tuple[str, ...] = ("w0", "n")
-    fit = _least_squares(rows, published, free, families)
     v0_note = v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))
     if not v0_note:
-        rel_se = _v0_relative_se(rows, fit, families, noise_floor)
-        if rel_se > max_relative_se_v0:
-            scale = max(fit["s2"] ** 0.5, noise_floor)
-            v0_note = (f"v0 not identifiable: its relative standard error would be {rel_se:.3g} "
-                       f"(> {max_relative_se_v0:g}) at a relative residual scale of {scale:.3g}")
-        else:
-            with_v0 = _least_squares(rows, fit["params"], ("w0", "n", "v0"), families)
+        params = fit["params"]
+        objective = _Objective(rows, params, ("w0", "n", "v0"), families)
+        jac = objective.stated_jacobian(np.log([params.w0, params.n, params.v0]))
+        identifiable, v0_note = v0_gate(jac, fit["s2"], settings)
+        if identifiable:
+            with_v0 = _least_squares(rows, params, ("w0", "n", "v0"), families)
             if "v0" in with_v0["at_bound"]:
                 v0_note = f"v0 not identifiable: the fit drives it to its bound {with_v0['params'].v0:.3g} m/s"
             else:
                 free, fit = ("w0", "n", "v0"), with_v0
-                v0_note = f"v0 identifiable: relative standard error {rel_se:.3g}"
-    summary = fitted_summary(rows, fit, free, v0_note)
-    return summary | _row_statuses(rows, fit["params"], families, summary["note"])
+    summary = fitted_summary(rows, fit, free, v0_note, settings)
+    searched = [{name: getattr(start, name) for name in ("w0", "n", "v0")} for start in ranked[:SEARCHES]]
+    return summary | _row_statuses(rows, fit["params"], families, summary["note"]) | {"starts": searched}
 
 
 def _row_statuses(rows: pd.DataFrame, params: GentSchultzParameters, families: _Families,

@@ -46,8 +46,8 @@ from typing import NamedTuple
 
 from vibroadhesion import simulation
 from vibroadhesion.core.groups import PHAT_JKR
+from vibroadhesion.experiments.envelope import log_difference, pulloff_problem, shifted
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
-from vibroadhesion.experiments.simulation_fit import log_difference, pulloff_problem, shifted
 from vibroadhesion.experiments.speed_sweep import start_problem
 from vibroadhesion.simulation.withdrawal import withdraw
 

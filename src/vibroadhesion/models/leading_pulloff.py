@@ -74,7 +74,7 @@ from vibroadhesion.core.integrals import j_integrals_for_law
 from vibroadhesion.core.ratelaw import RateLaw
 from vibroadhesion.core.records import Pulloff
 from vibroadhesion.models.leading_order import indentation_amplitude
-from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing
+from vibroadhesion.numerics.roots import NoRootError, solve_log_increasing, solve_log_increasing_many
 
 
 def pulloff_from_internal_variable(level: str, Abar_cr: NDArray[np.float64], law: RateLaw) -> Pulloff:
@@ -131,9 +131,32 @@ def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixati
     (Eq. 13, module docstring). An amplitude without a root has the status ``no_solution``.
     """
     eta1 = np.asarray(eta1, dtype=float)
-    Abar = np.vectorize(lambda e: critical_internal_variable_or_nan(e, chi0, law, fixation, omega_check, force),
-                        otypes=[float])(eta1)
+    if fixation.is_rigid and force == 0 and np.all(np.isfinite(eta1) & (eta1 > 0)):
+        Abar = critical_internal_variables_rigid(eta1, chi0, law)
+    else:
+        Abar = np.vectorize(lambda e: critical_internal_variable_or_nan(e, chi0, law, fixation, omega_check, force),
+                            otypes=[float])(eta1)
     return pulloff_from_internal_variable("leading", Abar, law)
+
+
+def _log_pulloff_lhs(log_Abar: NDArray[np.float64], law: RateLaw) -> NDArray[np.float64]:
+    """ln of the left-hand side of Eq. (72) at Abar = e^z."""
+    return np.log(pulloff_lhs_leading(np.exp(log_Abar), law))
+
+
+def critical_internal_variables_rigid(eta1: NDArray[np.float64], chi0: float, law: RateLaw) -> NDArray[np.float64]:
+    """Abar_cr of Eq. (72) for every amplitude ratio eta1 > 0 at once (rigid fixation).
+
+    The roots of the increasing J0^(1/3)|Jc1| = 3 eta1/chi0^2
+    (:func:`~vibroadhesion.numerics.roots.solve_log_increasing_many`), the same roots as
+    :func:`critical_internal_variable_leading` point by point; NaN where one has no root.
+    """
+    try:
+        return solve_log_increasing_many(partial(_log_pulloff_lhs, law=law), np.log(3.0 * eta1 / chi0**2),
+                                         what="Eq. (72)")
+    except NoRootError:
+        return np.array([critical_internal_variable_or_nan(e, chi0, law, Fixation.rigid(), math.inf)
+                         for e in eta1.ravel()]).reshape(eta1.shape)
 
 
 def critical_internal_variable_or_nan(eta1: float, chi0: float, law: RateLaw, fixation: Fixation,

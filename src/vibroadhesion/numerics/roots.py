@@ -119,3 +119,77 @@ def solve_increasing_bounded_slope(
         if active.size:
             g, slope = excess_and_slope(z[active], active)
     raise NoRootError(f"{what}: Newton's method did not converge in {_MAX_NEWTON} steps")
+
+
+#: The grid in z = ln Abar on which :func:`solve_log_increasing_many` brackets its roots (spacing _Z_STEP).
+_BRACKET_GRID = np.arange(-80.0, 80.0 + _Z_STEP / 2, _Z_STEP)
+#: At most this many Illinois steps (each at least halves the bracket every second step; 8 in ln spans 2^-60
+#: within 120).
+_MAX_ILLINOIS = 200
+
+
+def solve_log_increasing_many(log_lhs: Callable[[NDArray[np.float64]], NDArray[np.float64]],
+                              log_targets: NDArray[np.float64], *, what: str) -> NDArray[np.float64]:
+    """Abar with ln lhs(Abar) = each of ``log_targets`` for one increasing lhs, vectorised over the targets.
+
+    ``log_lhs(z)`` is ln lhs(e^z), vectorised over a 1-d z. The roots are bracketed on :data:`_BRACKET_GRID`
+    (one evaluation of the grid for all targets) and polished together by the Illinois variant of regula falsi
+    (superlinear, the bracket kept) to the tolerance of :func:`solve_log_increasing`; a target outside the grid's
+    range is solved by :func:`solve_log_increasing` (which widens its bracket to ``Z_MIN``, ``Z_MAX``).
+    """
+    shape = np.shape(log_targets)
+    targets = np.asarray(log_targets, dtype=float).ravel()
+    grid_values = log_lhs(_BRACKET_GRID)
+    k = np.searchsorted(grid_values, targets, side="left")
+    inside = (k > 0) & (k < _BRACKET_GRID.size)
+    z = np.empty(targets.size)
+    for i in np.flatnonzero(~inside):
+        z[i] = math.log(solve_log_increasing(_Shifted(log_lhs, float(targets[i])), what=what))
+    idx = np.flatnonzero(inside)
+    lo, hi = _BRACKET_GRID[k[idx] - 1], _BRACKET_GRID[k[idx]]
+    f_lo, f_hi = grid_values[k[idx] - 1] - targets[idx], grid_values[k[idx]] - targets[idx]
+    z[idx] = _illinois_many(log_lhs, targets[idx], (lo, f_lo), (hi, f_hi), what)
+    return np.exp(z).reshape(shape)
+
+
+class _Shifted:
+    """ln lhs(e^z) - target as a scalar function of z (for :func:`solve_log_increasing`)."""
+
+    def __init__(self, log_lhs: Callable[[NDArray[np.float64]], NDArray[np.float64]], target: float) -> None:
+        """The vectorised ``log_lhs`` and one ``target``."""
+        self.log_lhs, self.target = log_lhs, target
+
+    def __call__(self, z: float) -> float:
+        """ln lhs(e^z) - target."""
+        return float(self.log_lhs(np.array([z]))[0]) - self.target
+
+
+def _illinois_many(log_lhs: Callable[[NDArray[np.float64]], NDArray[np.float64]], targets: NDArray[np.float64],
+                   low: tuple[NDArray[np.float64], NDArray[np.float64]],
+                   high: tuple[NDArray[np.float64], NDArray[np.float64]], what: str) -> NDArray[np.float64]:
+    """The roots of ln lhs(e^z) - target in the brackets [lo, hi] (values f_lo < 0 <= f_hi), together.
+
+    Illinois steps (Dowell & Jarratt, BIT 11, 1971) until the bracket is narrower than the tolerance of
+    :func:`solve_log_increasing` or the residual vanishes; :class:`NoRootError` naming ``what`` after
+    :data:`_MAX_ILLINOIS` steps.
+    """
+    (lo, f_lo), (hi, f_hi) = (np.array(a, dtype=float) for a in low), (np.array(a, dtype=float) for a in high)
+    z = np.where(f_hi == 0, hi, lo)
+    side = np.zeros(lo.size)
+    active = np.flatnonzero(f_hi != 0)
+    for _ in range(_MAX_ILLINOIS):
+        if active.size == 0:
+            return z
+        a, b, fa, fb = lo[active], hi[active], f_lo[active], f_hi[active]
+        c = np.clip(b - fb * (b - a) / (fb - fa), a, b)
+        fc = log_lhs(c) - targets[active]
+        z[active] = c
+        left = fc < 0
+        lo[active] = np.where(left, c, a)
+        f_lo[active] = np.where(left, fc, np.where(side[active] == 1, fa / 2, fa))
+        hi[active] = np.where(left, b, c)
+        f_hi[active] = np.where(left, np.where(side[active] == -1, fb / 2, fb), fc)
+        side[active] = np.where(left, -1, 1)
+        done = (fc == 0) | (hi[active] - lo[active] <= _Z_TOL + 4 * np.finfo(float).eps * np.abs(c))
+        active = active[~done]
+    raise NoRootError(f"{what}: the Illinois iteration did not converge in {_MAX_ILLINOIS} steps")

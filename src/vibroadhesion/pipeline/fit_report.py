@@ -3,7 +3,9 @@
 Reads the fit summary of rule ``fit_gent_schultz`` (results/fit/gent_schultz.json, written by
 :func:`vibroadhesion.experiments.fitting.fit_gent_schultz` per level) and the ingested rows. The levels come in the
 registry's order (:mod:`vibroadhesion.core.levels`), which puts the simulation of the full model first: it is the
-headline when its fit converged (``fitted`` or ``at_bound``), the cheaper levels say what they would have given.
+headline when its search reached an estimate (any status but ``failed`` and ``published``), the cheaper levels say
+what they would have given. Each parameter is shown with its profile-likelihood interval where the rows determine
+it, and as "not determined by these rows" where they do not (:mod:`vibroadhesion.experiments.fit_statistics`).
 
 Each measured row is flagged where it lies outside the asymptotic levels' range (:func:`applicability`): the
 refined model's A/a_m at detachment above APPLICABILITY_LIMIT (the paper's A <= 0.1 a_m, Sec. 3.5.3), or
@@ -25,18 +27,23 @@ from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pul
 from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
 from vibroadhesion.numerics.roots import NoRootError
 from vibroadhesion.pipeline import data
-from vibroadhesion.pipeline.tables import Column, exact, plus_minus, significant
+from vibroadhesion.pipeline.tables import Column, exact, significant
 
-#: Statuses of a fit that converged to an estimate (:mod:`vibroadhesion.experiments.fitting`).
-CONVERGED = ("fitted", "at_bound")
+#: Statuses of a fit whose search reached an estimate (:mod:`vibroadhesion.experiments.fit_summary`).
+CONVERGED = ("fitted", "poor_fit", "at_bound", "not_identifiable")
+
+#: A level's status as a reader says it.
+STATUS_WORDS = {"fitted": "fitted", "poor_fit": "poor fit: the rows reject the model", "at_bound": "at a bound",
+                "not_identifiable": "not every parameter determined", "failed": "failed",
+                "published": "no rows: published values"}
 
 #: Columns of :func:`estimates` as the page shows them (units of docs/notation.md §1).
 ESTIMATE_COLUMNS = {
     "level": Column("model level", format="text"),
     "status": Column("status", format="text"),
-    "w0": Column("w0", "J/m²", "text"),
-    "n": Column("n", format="text"),
-    "v0": Column("v0", "m/s", "text"),
+    "w0": Column("w0 [interval]", "J/m²", "text"),
+    "n": Column("n [interval]", format="text"),
+    "v0": Column("v0 [interval]", "m/s", "text"),
     "rms_relative_residual": Column("misfit: rms relative residual", format="rel"),
     "reason": Column("status reason and notes", format="text"),
 }
@@ -60,21 +67,22 @@ def ordered_levels(fit: dict[str, Any]) -> list[str]:
 
 
 def estimate_text(name: str, summary: dict[str, Any]) -> str:
-    """One parameter of one level's fit (Eqs. 71-72, 106): ``value ± SE``, or the value and why it has no SE.
+    """One parameter of one level's fit (Eqs. 71-72, 106): ``value [lower, upper]``, or why it has no interval.
 
-    ``at bound`` (the search ended on the box), ``not identifiable`` (fitted, but the rows do not determine it),
-    ``published`` (no rows), ``fixed: published`` (not fitted by this level, e.g. v0 of a frequency-independent one).
-    Published values are shown as typed (:func:`~vibroadhesion.pipeline.tables.exact`), a bound to 3 figures (the
-    page does not import the fit's box: :mod:`vibroadhesion.experiments.fitting` costs half a second to import).
+    ``fitted``: the estimate and its profile-likelihood interval; ``at_bound`` and ``not_identifiable``: "not
+    determined by these rows" (with the bound it ran to); ``published``: the published value as typed
+    (:func:`~vibroadhesion.pipeline.tables.exact`), "(published)" where nothing was fitted, "(fixed: published)"
+    where this level did not fit it (e.g. v0 of a frequency-independent level).
     """
     entry = summary["parameters"][name]
-    value = entry["estimate"]
-    if entry["std_error"] is not None:
-        return plus_minus(value, entry["std_error"])
-    if name in summary.get("at_bound", ()):
-        return f"{significant(value, 3)} (at bound)"
-    if name in summary.get("free_parameters", ()):
-        return f"{significant(value)} (not identifiable)"
+    value, status = entry["estimate"], entry.get("status", "published")
+    if status == "fitted":
+        lower, upper = entry["interval"]
+        return f"{significant(value, 3)} [{significant(lower, 3)}, {significant(upper, 3)}]"
+    if status == "at_bound":
+        return f"not determined by these rows (on its bound {significant(value, 3)})"
+    if status == "not_identifiable":
+        return "not determined by these rows"
     return f"{exact(value)} ({'published' if summary['status'] == 'published' else 'fixed: published'})"
 
 
@@ -83,8 +91,10 @@ def estimates(fit: dict[str, Any]) -> pd.DataFrame:
     rows = []
     for name in ordered_levels(fit):
         summary = fit["fits"][name]
-        reasons = [text for text in (summary.get("note", ""), summary.get("v0_note", "")) if text]
-        rows.append({"level": levels.level(name).label, "status": summary["status"],
+        gof = summary.get("goodness_of_fit", {}).get("text", "")
+        reasons = [text for text in (summary.get("note", ""), gof, summary.get("v0_note", "")) if text]
+        rows.append({"level": levels.level(name).label, "status": STATUS_WORDS.get(summary["status"],
+                                                                                    summary["status"]),
                      **{p: estimate_text(p, summary) for p in ("w0", "n", "v0")},
                      "rms_relative_residual": summary.get("rms_relative_residual", np.nan),
                      "reason": "; ".join(reasons)})
@@ -93,7 +103,7 @@ def estimates(fit: dict[str, Any]) -> pd.DataFrame:
 
 def figures_fit(fit: dict[str, Any]) -> pd.DataFrame:
     """:func:`estimates` of the fit the figures use, and of the headline fit when that is another level."""
-    shown = {headline(fit), fit["figures_use"]} - {None}
+    shown = {headline(fit), fit["figures_use"]} - {None, "published"}
     labels = [levels.level(name).label for name in ordered_levels(fit) if name in shown]
     table = estimates(fit)
     return table[table["level"].isin(labels)].reset_index(drop=True)
@@ -116,8 +126,17 @@ def predicted_mN(summary: dict[str, Any], rows: pd.DataFrame) -> pd.Series | Non
 
 
 def reference_level(fit: dict[str, Any]) -> str:
-    """The level the page's residuals and ranges refer to: the headline, else the fit the figures use."""
-    return headline(fit) or str(fit["figures_use"])
+    """The level the page's residuals and ranges refer to.
+
+    The headline, else the fit the figures use, else the first level whose search reached an estimate, else the
+    first level.
+    """
+    if headline(fit):
+        return "simulation"
+    if fit["figures_use"] in fit["fits"]:
+        return str(fit["figures_use"])
+    reached = [name for name in ordered_levels(fit) if fit["fits"][name]["status"] in CONVERGED]
+    return (reached or ordered_levels(fit))[0]
 
 
 def outside_text(omega_check: float, a_over_am: float) -> str:
@@ -262,13 +281,16 @@ def summary_sentence(fit: dict[str, Any]) -> str:
     lead = headline(fit)
     simulation = fit["fits"].get("simulation")
     if lead:
-        head = f"The headline is the fit of the full model (the simulation): **{simulation['status']}**"
+        head = f"The headline is the fit of the full model (the simulation): **{STATUS_WORDS[simulation['status']]}**"
     elif simulation:
-        head = (f"The fit of the full model (the simulation) did not converge (**{simulation['status']}**: "
+        head = (f"The fit of the full model (the simulation) reached no estimate (**{simulation['status']}**: "
                 f"{simulation.get('note', '')}); the cheaper levels are shown as they are")
     else:
         head = "The simulation is not among the fitted levels"
-    return (f"{fit['data_rows']} measured rows. {head}. The figures use the **{fit['figures_use']}** fit.")
+    used = ("the **published parameters**" if fit["figures_use"] == "published"
+            else f"the **{fit['figures_use']}** fit")
+    return (f"{fit['data_rows']} measured rows. {head}. The figures use {used}: {fit['figures_reason']}. Intervals "
+            f"are {fit['settings']['confidence']:.0%} profile-likelihood intervals.")
 
 
 def _validated_range() -> str:

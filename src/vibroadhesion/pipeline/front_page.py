@@ -12,6 +12,7 @@ import html
 import time
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 import pandas as pd
 
@@ -84,6 +85,21 @@ def _table(frame: pd.DataFrame, columns: Mapping[str, Column]) -> str:
     return show(frame, columns)._repr_html_()
 
 
+def fit_lead(fit: dict[str, Any]) -> str:
+    """The index's first finding where the preferred level's fit of the measured rows is not used.
+
+    Poor, at a bound or not determined: what the figures use instead and why; empty otherwise.
+    """
+    if not fit["data_rows"] or fit["figures_use"] == fit["figures_preferred"]:
+        return ""
+    preferred = fit["fits"][fit["figures_preferred"]]
+    gof = preferred.get("goodness_of_fit", {}).get("text", "")
+    used = "the published parameters" if fit["figures_use"] == "published" else f"the {fit['figures_use']} fit"
+    return (f"<p class=\"lead\"><b>Your {fit['data_rows']} rows: {html.escape(fit['figures_reason'])}.</b> The "
+            f"figures use {html.escape(used)}. {html.escape(gof)}{'.' if gof else ''} See the "
+            "<a href=\"fit.html\">fit page</a>.</p>")
+
+
 def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY) -> str:
     """The HTML of the findings: build, measured rows, the fit, the amplification per level, the validity per level.
 
@@ -94,8 +110,8 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
     parts = [build_paragraph()]
     if "fit_json" in artefacts:
         fit = fit_report.read_fit(artefacts["fit_json"])
-        used = (f"the figures use the <b>{html.escape(fit['figures_use'])}</b> fit (status: "
-                f"{html.escape(fit['fits'][fit['figures_use']]['status'])})" if fit["data_rows"] else
+        parts.append(fit_lead(fit))
+        used = (html.escape(fit["status"]) if fit["data_rows"] else
                 "nothing is fitted: the figures use the published parameters")
         parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>)</h2><p>{fit['data_rows']} measured rows in "
                   f"<code>data/pulloff.csv</code>; {used}.</p>",

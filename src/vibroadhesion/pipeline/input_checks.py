@@ -39,7 +39,7 @@ class DataError(ValueError):
 
 @cache
 def schema(name: str) -> dict[str, Any]:
-    """The packaged JSON schema ``name`` (``"setup"`` or ``"pulloff"``)."""
+    """The packaged JSON schema ``name`` (``"setup"``, ``"pulloff"``, or ``"fit"``: the fit summary)."""
     schema_file = resources.files("vibroadhesion.pipeline").joinpath("schemas", f"{name}.schema.json")
     text = schema_file.read_text(encoding="utf-8")
     return json.loads(text)

@@ -52,8 +52,10 @@ def derived_table(setup_json: str | Path, fit_json: str | Path | None = None) ->
         which, w0, v0 = "published", setup.w0, setup.v0
     else:
         fit = json.loads(Path(fit_json).read_text())
-        p = fit["fits"][fit["figures_use"]]["parameters"]
-        which, w0, v0 = f"{fit['figures_use']} fit", p["w0"]["estimate"], p["v0"]["estimate"]
+        used = fit["figures_use"]
+        p = fit["published"] if used == "published" else {
+            name: entry["estimate"] for name, entry in fit["fits"][used]["parameters"].items()}
+        which, w0, v0 = "published" if used == "published" else f"{used} fit", p["w0"], p["v0"]
     e_star, r = setup.reduced_modulus, setup.radius
     rows = [
         ("E*", e_star, "Pa", "f_storage E / (1 - nu^2) (Sec. 3.4, App. A)"),

@@ -13,7 +13,9 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from vibroadhesion.experiments import fit_coverage as fit_coverage_study
 from vibroadhesion.experiments import identifiability
+from vibroadhesion.experiments.fit_statistics import Settings
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import ProgressBar
 from vibroadhesion.pipeline.artefacts import write_csv
@@ -84,3 +86,20 @@ def summary(virtual_csv: str | Path, sensitivity_parts: Sequence[str | Path], fi
     write_csv(information, information_out)
     write_csv(pd.concat([pd.read_csv(p) for p in fit_parts], ignore_index=True), fits_out)
     print(information.to_string(index=False))
+
+
+def fit_coverage(setup_json: str | Path, fits_out: str | Path, summary_out: str | Path, level: str,
+                 relative_scatter: Sequence[float], seeds: int, confidence: float) -> None:
+    """The coverage study of the fit's intervals (:mod:`vibroadhesion.experiments.fit_coverage`).
+
+    At the rig's test conditions and published parameters: every data set's fit, and the coverage per scatter and
+    parameter.
+    """
+    setup, params, _ = rig(setup_json)
+    progress = ProgressBar(len(relative_scatter) * seeds, "simulated data sets fitted")
+    fits = fit_coverage_study.coverage_fits(
+        level, GentSchultzParameters(**params), setup.frequencies_hz, setup.amplitudes_um, relative_scatter, seeds,
+        radius=setup.radius, reduced_modulus=setup.reduced_modulus, settings=Settings(confidence=confidence),
+        progress=progress)
+    write_csv(fits, fits_out)
+    write_csv(fit_coverage_study.coverage_summary(fits, confidence), summary_out)

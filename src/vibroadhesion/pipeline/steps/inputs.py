@@ -17,9 +17,15 @@ FixationCase = Literal["rigid", "compliant", "fig5"]
 
 
 def fitted(fit_json: str | Path, model: str | None = None) -> dict[str, float]:
-    """w0, n, v0 of ``model``'s fit (default: the fit the figures use, ``figures_use``) in SI units."""
+    """w0, n, v0 of ``model``'s fit in SI units.
+
+    Default: the set the figures use (``figures_use``: a level's fit, or ``published``).
+    """
     fit = json.loads(Path(fit_json).read_text())
-    parameters = fit["fits"][model or fit["figures_use"]]["parameters"]
+    used = model or fit["figures_use"]
+    if used == "published":
+        return {name: fit["published"][name] for name in ("w0", "n", "v0")}
+    parameters = fit["fits"][used]["parameters"]
     return {name: parameters[name]["estimate"] for name in ("w0", "n", "v0")}
 
 
@@ -29,14 +35,38 @@ def published(setup: Setup) -> dict[str, float]:
 
 
 def parameter_label(setup_json: str | Path, fit_json: str | Path | None = None) -> str:
-    """The parameter set a figure uses, named on it: the fit the figures use, or the published set (:func:`rig`)."""
+    """The parameter set a figure uses, named on it.
+
+    The fit the figures use with each fitted parameter's interval, or the published set (:func:`rig`); where rows
+    were fitted but the preferred level's fit is not used, why (e.g. the fit is poor).
+    """
     if fit_json is None:
-        which, p = "published parameters", published(read_canonical_setup(setup_json))
-    else:
-        fit = json.loads(Path(fit_json).read_text())
-        which = "published parameters" if fit["data_rows"] == 0 else f"{fit['figures_use']} fit"
-        p = fitted(fit_json)
-    return f"{which}: $w_0$ = {p['w0']:.3g} J/m², $n$ = {p['n']:.3g}, $v_0$ = {p['v0'] * 1e6:.3g} µm/s"
+        p = published(read_canonical_setup(setup_json))
+        return f"published parameters: {_values(p, {})}"
+    fit = json.loads(Path(fit_json).read_text())
+    p, used = fitted(fit_json), fit["figures_use"]
+    if used == "published":
+        why = f" ({fit['figures_reason']}):\n" if fit["data_rows"] else ": "
+        return f"published parameters{why}{_values(p, {})}"
+    entries = fit["fits"][used]["parameters"]
+    intervals = {name: entries[name]["interval"] for name in p if entries[name]["status"] == "fitted"}
+    why = f" ({fit['figures_reason']})" if used != fit["figures_preferred"] else ""
+    return f"{used} fit of {fit['data_rows']} measured rows{why}, {fit['settings']['confidence']:.0%} intervals:\n" \
+           f"{_values(p, intervals)}"
+
+
+#: How a parameter is named and scaled on a figure: mathtext symbol, unit, factor from SI.
+_SHOWN = {"w0": ("$w_0$", "J/m²", 1.0), "n": ("$n$", "", 1.0), "v0": ("$v_0$", "µm/s", 1e6)}
+
+
+def _values(p: dict[str, float], intervals: dict[str, list[float]]) -> str:
+    """"w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s", with [lower, upper] after each parameter in ``intervals``."""
+    parts = []
+    for name, (symbol, unit, factor) in _SHOWN.items():
+        bounds = intervals.get(name)
+        interval = f" [{bounds[0] * factor:.3g}, {bounds[1] * factor:.3g}]" if bounds else ""
+        parts.append(f"{symbol} = {p[name] * factor:.3g}{interval}{' ' + unit if unit else ''}")
+    return ", ".join(parts)
 
 
 def rig(setup_json: str | Path, fit_json: str | Path | None = None) -> tuple[Setup, dict[str, float], float]:
