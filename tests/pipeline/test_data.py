@@ -136,7 +136,7 @@ def test_main_on_shipped_files_writes_canonical_copies(tmp_path: Path) -> None:
     assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
     canonical = json.loads(out_json.read_text())
     assert canonical["indenter"]["radius"] == {"value": RADIUS, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
-    assert out_csv.read_text() == HEADER + "\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n"
     assert data.read_canonical_setup(out_json) == load_setup(SETUP_YAML)
     assert data.read_canonical_pulloff(out_csv).empty
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pulloff.csv", "setup.json"]
@@ -169,7 +169,7 @@ def test_main_writes_canonical_csv_with_repr_floats(tmp_path: Path) -> None:
     pulloff = _csv(tmp_path, "# c\n" + HEADER + "\n200,40,20.1,\"a, b\"\n400,60.5,1e3,lab\n")
     out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
     assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n200.0,40.0,20.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n3,200.0,40.0,20.1,\"a, b\"\n4,400.0,60.5,1000.0,lab\n"
     back = data.read_canonical_pulloff(out_csv)
     assert back["pulloff_mN"].tolist() == [20.1, 1000.0]
 
@@ -182,13 +182,38 @@ def test_withdrawal_speed_column_is_optional_empty_and_zero_are_quasi_static(tmp
     assert rows["withdrawal_speed_um_s"].tolist() == [0.0, 0.0, 44.5]
     out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
     assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == (SPEED_HEADER + "\n200.0,40.0,250.0,a,0.0\n300.0,40.0,260.0,b,0.0\n"
-                                   "400.0,40.0,270.0,c,44.5\n")
+    assert out_csv.read_text() == ("line," + SPEED_HEADER + "\n2,200.0,40.0,250.0,a,0.0\n3,300.0,40.0,260.0,b,0.0\n"
+                                   "4,400.0,40.0,270.0,c,44.5\n")
     assert data.read_canonical_pulloff(out_csv)["withdrawal_speed_um_s"].tolist() == [0.0, 0.0, 44.5]
     quasi_static = _csv(tmp_path, SPEED_HEADER + "\n200,40,20.1,\"a, b\",\n400,60.5,1e3,lab,0\n")
     assert main([str(SETUP_YAML), str(quasi_static), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n200.0,40.0,20.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n2,200.0,40.0,20.1,\"a, b\"\n3,400.0,60.5,1000.0,lab\n"
     assert load_pulloff(_csv(tmp_path, HEADER + "\n200,40,250,a\n"))["withdrawal_speed_um_s"].tolist() == [0.0]
+
+
+def test_canonical_copy_names_each_row_by_its_line_in_the_users_file(tmp_path: Path) -> None:
+    """Comments and blank lines before, between and after the rows: the canonical ``line`` of each row, read back
+    and as written, is the row's line in data/pulloff.csv, counted here by the text of the rows."""
+    text = ("# my rig\n\n# units: Hz, um, mN\n" + HEADER + "\n\n200,40,250,run A\n   # a remark\n\n\n"
+            "300,60,420,run B\n# replicate of run B:\n300,60,425,run C\n\n# end\n")
+    pulloff = _csv(tmp_path, text)
+    expected = [number for number, line in enumerate(text.split("\n"), start=1) if ",run " in line]
+    assert expected == [6, 10, 12]
+    out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
+    assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
+    assert pd.read_csv(out_csv)["line"].tolist() == expected
+    back = data.read_canonical_pulloff(out_csv)
+    assert back["line"].tolist() == expected
+    assert back["source"].tolist() == ["run A", "run B", "run C"]
+    assert back.equals(load_pulloff(pulloff))
+
+
+def test_user_file_may_not_carry_a_line_column(tmp_path: Path) -> None:
+    """``line`` belongs to the canonical copy: in data/pulloff.csv it is an unknown column."""
+    path = _csv(tmp_path, "line," + HEADER + "\n7,200,40,250,a\n")
+    with pytest.raises(DataError) as info:
+        load_pulloff(path)
+    _assert_located(info.value, path, 1, "line", 'unknown column "line"')
 
 
 # ----------------------------------------------------------------------------- pulloff.csv: bad input
@@ -286,7 +311,7 @@ def test_static_jkr_rows_need_no_frequency(tmp_path: Path) -> None:
     assert rows["h1_um"].tolist() == [0.0, 0.0, 40.0]
     out_json, out_csv = tmp_path / "setup.json", tmp_path / "canonical.csv"
     assert main([str(SETUP_YAML), str(path), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text().splitlines()[1] == "0.0,0.0,60.0,static test"
+    assert out_csv.read_text().splitlines()[1] == "2,0.0,0.0,60.0,static test"
     assert data.read_canonical_pulloff(out_csv)["h1_um"].tolist() == [0.0, 0.0, 40.0]
 
 
@@ -485,6 +510,6 @@ def test_main_replaces_existing_outputs_only_on_success(tmp_path: Path, capsys: 
     assert main([str(SETUP_YAML), str(bad), str(out_json), str(out_csv)]) == 1
     assert out_json.read_text() == "old" and out_csv.read_text() == "old"
     assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["p.csv", "pulloff.csv", "s.json"]
     capsys.readouterr()
