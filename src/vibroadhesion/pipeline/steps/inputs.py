@@ -28,15 +28,19 @@ def published(setup: Setup) -> dict[str, float]:
     return {"w0": setup.w0, "n": setup.n, "v0": setup.v0}
 
 
-def parameter_label(setup_json: str | Path, fit_json: str | Path | None = None) -> str:
-    """The parameter set a figure uses, named on it: the fit the figures use, or the published set (:func:`rig`)."""
+def parameter_label(setup_json: str | Path, fit_json: str | Path | None = None, math: bool = True) -> str:
+    """The parameter set a figure uses, named on it: the fit the figures use, or the published set (:func:`rig`).
+
+    In matplotlib's mathtext (``math``) for a figure, else plain text (w0, n, v0) for a heading of the report.
+    """
+    w0, n, v0 = ("$w_0$", "$n$", "$v_0$") if math else ("w0", "n", "v0")
     if fit_json is None:
         which, p = "published parameters", published(read_canonical_setup(setup_json))
     else:
         fit = json.loads(Path(fit_json).read_text())
         which = "published parameters" if fit["data_rows"] == 0 else f"{fit['figures_use']} fit"
         p = fitted(fit_json)
-    return f"{which}: $w_0$ = {p['w0']:.3g} J/m², $n$ = {p['n']:.3g}, $v_0$ = {p['v0'] * 1e6:.3g} µm/s"
+    return f"{which}: {w0} = {p['w0']:.3g} J/m², {n} = {p['n']:.3g}, {v0} = {p['v0'] * 1e6:.3g} µm/s"
 
 
 def rig(setup_json: str | Path, fit_json: str | Path | None = None) -> tuple[Setup, dict[str, float], float]:
