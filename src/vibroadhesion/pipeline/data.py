@@ -76,6 +76,9 @@ _SETUP_LISTS: dict[str, tuple[str, str]] = {
 }
 
 
+#: The group of the canonical setup JSON with the values derived from the given ones (:mod:`.derived`): not an input.
+DERIVED_GROUP = "derived"
+
 #: The value of an entry of data/setup.yaml: a number or a list of numbers.
 SetupValue = float | tuple[float, ...]
 
@@ -233,13 +236,18 @@ def _canonical_setup(doc: dict[str, Any]) -> dict[str, Any]:
 
 
 def read_canonical_setup(path: str | Path) -> Setup:
-    """Read the canonical JSON written by :func:`main` (re-validated against the same schema)."""
+    """Read the canonical JSON written by :func:`main` (the given values re-validated against the same schema).
+
+    Its :data:`DERIVED_GROUP` is not read: the steps compute a derived value from the given ones where they use it.
+    """
     path = Path(path)
     text = read_text(path)
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:
         raise DataError(path, exc.lineno, "(document)", f"invalid JSON: {exc.msg}") from None
+    if isinstance(doc, dict):
+        doc.pop(DERIVED_GROUP, None)
     return _setup_from_document(path, doc, lambda node_path, key_line: 1)
 
 
@@ -407,28 +415,35 @@ def check_inputs(setup_yaml: str | Path, pulloff_csv: str | Path) -> tuple[Setup
     return setup, doc, records
 
 
-def _setup_json_text(doc: dict[str, Any]) -> str:
-    """The canonical setup JSON: values (floats), units and sources of the validated document."""
-    return json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+def _setup_json_text(setup: Setup, doc: dict[str, Any]) -> str:
+    """The canonical setup JSON: the validated document (floats), then the values derived from it.
+
+    Each derived value with its formula (:data:`DERIVED_GROUP`, :func:`vibroadhesion.pipeline.derived.derived_values`).
+    """
+    from vibroadhesion.pipeline.derived import derived_values  # numerics: not for the Snakefile's checks
+
+    canonical = _canonical_setup(doc) | {DERIVED_GROUP: derived_values(setup)}
+    return json.dumps(canonical, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path, out_csv: str | Path) -> str:
     """Validate both inputs (:func:`check_inputs`) and write their canonical copies atomically (:func:`main`).
 
-    The canonical setup JSON keeps values, units and sources; the canonical pull-off CSV has no
+    The canonical setup JSON keeps values, units and sources, and adds the values derived from them with their
+    formulas (:data:`DERIVED_GROUP`); the canonical pull-off CSV has no
     comments, the columns line (the row's line in data/pulloff.csv), frequency_hz, h1_um, pulloff_mN, source
     (withdrawal_speed_um_s where a row has a speed) and floats written with repr.
     Raises :class:`DataError` (nothing written) on a bad input; returns a one-line summary.
     """
     setup, doc, records = check_inputs(setup_yaml, pulloff_csv)
-    _write_atomically([(Path(out_json), _setup_json_text(doc)), (Path(out_csv), _pulloff_csv_text(records))])
+    _write_atomically([(Path(out_json), _setup_json_text(setup, doc)), (Path(out_csv), _pulloff_csv_text(records))])
     return f"validated {setup_yaml} ({len(setup.sources)} entries) and {pulloff_csv} ({len(records)} rows)"
 
 
 def ingest_setup(setup_yaml: str | Path, out_json: str | Path) -> str:
     """Rule ``ingest_setup``: validate data/setup.yaml and write its canonical JSON (as :func:`ingest`)."""
     setup, doc = _parse_setup(setup_yaml)
-    _write_atomically([(Path(out_json), _setup_json_text(doc))])
+    _write_atomically([(Path(out_json), _setup_json_text(setup, doc))])
     return f"validated {setup_yaml} ({len(setup.sources)} entries)"
 
 
