@@ -113,7 +113,7 @@ def test_shipped_setup_loads() -> None:
     assert fixation == {"natural_frequency": 70.42, "stiffness_ratio_kappa": (0.001, 0.01),
                         "weight_ratio_mu": 0.0, "damping_ratio_zeta": (0.0, 0.01, 0.05),
                         "simulated_stiffness_ratio_kappa": 0.001, "simulated_damping_ratio_zeta": 0.01}
-    assert all(setup.sources[f"fixation.{k}"].startswith(("assumed", "derived")) for k in fixation)
+    assert all(setup.sources[f"fixation.{k}"].startswith(("assumed", "given")) for k in fixation)
     assert setup.units["gent_schultz_published.v0"] == "m/s"
     assert setup.values["test_conditions.frequencies"] == FREQUENCIES_HZ
 
@@ -136,10 +136,60 @@ def test_main_on_shipped_files_writes_canonical_copies(tmp_path: Path) -> None:
     assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
     canonical = json.loads(out_json.read_text())
     assert canonical["indenter"]["radius"] == {"value": RADIUS, "unit": "m", "source": load_setup(SETUP_YAML).sources["indenter.radius"]}
-    assert out_csv.read_text() == HEADER + "\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n"
     assert data.read_canonical_setup(out_json) == load_setup(SETUP_YAML)
     assert data.read_canonical_pulloff(out_csv).empty
     assert sorted(p.name for p in tmp_path.iterdir()) == ["pulloff.csv", "setup.json"]
+
+
+# ----------------------------------------------------------------------------- derived values
+
+
+def _derived(tmp_path: Path, setup_yaml: Path) -> dict[str, dict[str, object]]:
+    """The group ``derived`` of the canonical copy that rule ingest_setup writes of ``setup_yaml``."""
+    out = tmp_path / "setup.json"
+    data.ingest_setup(setup_yaml, out)
+    canonical = json.loads(out.read_text(encoding="utf-8"))
+    assert data.read_canonical_setup(out) == load_setup(setup_yaml)  # the derived group is shown, not read back
+    return canonical["derived"]
+
+
+def test_no_shipped_value_is_labelled_derived() -> None:
+    """Every entry of data/setup.yaml is given: its source never starts with "derived" (the schema refuses it)."""
+    assert not [key for key, source in load_setup(SETUP_YAML).sources.items() if source.lower().startswith("derived")]
+
+
+def test_derived_values_of_the_shipped_rig_are_those_the_paper_prints(tmp_path: Path) -> None:
+    """E*, chi0 (Eq. 64), nu0 (Eq. 97) and omega_bar (Eq. 65) of the shipped rig against Sec. 3.4 and Sec. 3.5.3, to
+    the printed digits; omega_bar to 6e-4: the paper's nu0 and omega_bar = 17.85 imply omega0 = 70.42 and 70.40 rad/s
+    (3e-4 apart), and 26.78 is 1.5 x 17.85 rounded up. Each value carries its formula and equation."""
+    derived = _derived(tmp_path, SETUP_YAML)
+    assert derived["reduced_modulus"]["value"] == pytest.approx(7.467e6, abs=0.5e3)
+    assert derived["chi0"]["value"] == pytest.approx(2.589e-2, abs=0.5e-5)
+    assert derived["nu0"]["value"] == pytest.approx(1.227e-5, abs=0.5e-8)
+    assert derived["omega_bar"]["value"] == pytest.approx([17.85, 26.78, 35.7], rel=6e-4)
+    assert all(entry["formula"] and "Eq." in str(entry["source"]) for entry in derived.values())
+
+
+def test_an_edited_input_changes_the_derived_values_by_their_formulas(tmp_path: Path) -> None:
+    """R, v0, omega0 and E edited in data/setup.yaml: the canonical copy's derived values are the formulas evaluated
+    here, E* = 2E/(1 - nu^2), chi0 = (9 pi w0/(E* R))^(1/3), nu0 = v0/(omega0 R), omega_bar = 2 pi f/omega0; the
+    given natural frequency is the edited one, whatever R and v0."""
+    text = SETUP_YAML.read_text(encoding="utf-8")
+    edits = {"value: 51.5e-3": "value: 40.0e-3", "value: 44.5e-6": "value: 30.0e-6", "value: 70.42": "value: 50.0",
+             "value: 2.8e6": "value: 3.1e6"}
+    for old, new in edits.items():
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    radius, v0, omega0, modulus = 40.0e-3, 30.0e-6, 50.0, 3.1e6
+    derived = _derived(tmp_path, _write(tmp_path, "setup.yaml", text))
+    e_star = 2.0 * modulus / (1.0 - 0.5**2)
+    assert derived["reduced_modulus"]["value"] == pytest.approx(e_star, rel=1e-15)
+    assert derived["chi0"]["value"] == pytest.approx((9.0 * math.pi * W0 / (e_star * radius)) ** (1 / 3), rel=1e-14)
+    assert derived["nu0"]["value"] == pytest.approx(v0 / (omega0 * radius), rel=1e-15)
+    assert derived["omega_bar"]["value"] == pytest.approx([2 * math.pi * f / omega0 for f in FREQUENCIES_HZ], rel=1e-15)
+    assert load_setup(tmp_path / "setup.yaml").values["fixation.natural_frequency"] == omega0
+    assert derived != _derived(tmp_path, SETUP_YAML)
 
 
 # ----------------------------------------------------------------------------- pulloff.csv: valid rows
@@ -169,7 +219,7 @@ def test_main_writes_canonical_csv_with_repr_floats(tmp_path: Path) -> None:
     pulloff = _csv(tmp_path, "# c\n" + HEADER + "\n200,40,20.1,\"a, b\"\n400,60.5,1e3,lab\n")
     out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
     assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n200.0,40.0,20.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n3,200.0,40.0,20.1,\"a, b\"\n4,400.0,60.5,1000.0,lab\n"
     back = data.read_canonical_pulloff(out_csv)
     assert back["pulloff_mN"].tolist() == [20.1, 1000.0]
 
@@ -182,13 +232,38 @@ def test_withdrawal_speed_column_is_optional_empty_and_zero_are_quasi_static(tmp
     assert rows["withdrawal_speed_um_s"].tolist() == [0.0, 0.0, 44.5]
     out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
     assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == (SPEED_HEADER + "\n200.0,40.0,250.0,a,0.0\n300.0,40.0,260.0,b,0.0\n"
-                                   "400.0,40.0,270.0,c,44.5\n")
+    assert out_csv.read_text() == ("line," + SPEED_HEADER + "\n2,200.0,40.0,250.0,a,0.0\n3,300.0,40.0,260.0,b,0.0\n"
+                                   "4,400.0,40.0,270.0,c,44.5\n")
     assert data.read_canonical_pulloff(out_csv)["withdrawal_speed_um_s"].tolist() == [0.0, 0.0, 44.5]
     quasi_static = _csv(tmp_path, SPEED_HEADER + "\n200,40,20.1,\"a, b\",\n400,60.5,1e3,lab,0\n")
     assert main([str(SETUP_YAML), str(quasi_static), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n200.0,40.0,20.1,\"a, b\"\n400.0,60.5,1000.0,lab\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n2,200.0,40.0,20.1,\"a, b\"\n3,400.0,60.5,1000.0,lab\n"
     assert load_pulloff(_csv(tmp_path, HEADER + "\n200,40,250,a\n"))["withdrawal_speed_um_s"].tolist() == [0.0]
+
+
+def test_canonical_copy_names_each_row_by_its_line_in_the_users_file(tmp_path: Path) -> None:
+    """Comments and blank lines before, between and after the rows: the canonical ``line`` of each row, read back
+    and as written, is the row's line in data/pulloff.csv, counted here by the text of the rows."""
+    text = ("# my rig\n\n# units: Hz, um, mN\n" + HEADER + "\n\n200,40,250,run A\n   # a remark\n\n\n"
+            "300,60,420,run B\n# replicate of run B:\n300,60,425,run C\n\n# end\n")
+    pulloff = _csv(tmp_path, text)
+    expected = [number for number, line in enumerate(text.split("\n"), start=1) if ",run " in line]
+    assert expected == [6, 10, 12]
+    out_json, out_csv = tmp_path / "o.json", tmp_path / "o.csv"
+    assert main([str(SETUP_YAML), str(pulloff), str(out_json), str(out_csv)]) == 0
+    assert pd.read_csv(out_csv)["line"].tolist() == expected
+    back = data.read_canonical_pulloff(out_csv)
+    assert back["line"].tolist() == expected
+    assert back["source"].tolist() == ["run A", "run B", "run C"]
+    assert back.equals(load_pulloff(pulloff))
+
+
+def test_user_file_may_not_carry_a_line_column(tmp_path: Path) -> None:
+    """``line`` belongs to the canonical copy: in data/pulloff.csv it is an unknown column."""
+    path = _csv(tmp_path, "line," + HEADER + "\n7,200,40,250,a\n")
+    with pytest.raises(DataError) as info:
+        load_pulloff(path)
+    _assert_located(info.value, path, 1, "line", 'unknown column "line"')
 
 
 # ----------------------------------------------------------------------------- pulloff.csv: bad input
@@ -286,7 +361,7 @@ def test_static_jkr_rows_need_no_frequency(tmp_path: Path) -> None:
     assert rows["h1_um"].tolist() == [0.0, 0.0, 40.0]
     out_json, out_csv = tmp_path / "setup.json", tmp_path / "canonical.csv"
     assert main([str(SETUP_YAML), str(path), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text().splitlines()[1] == "0.0,0.0,60.0,static test"
+    assert out_csv.read_text().splitlines()[1] == "2,0.0,0.0,60.0,static test"
     assert data.read_canonical_pulloff(out_csv)["h1_um"].tolist() == [0.0, 0.0, 40.0]
 
 
@@ -324,6 +399,8 @@ BAD_SETUP = [
      'missing required key "source"'),
     ("empty-source", 'source: "Sec. 4: H = 2 cm"', 'source: ""', ('source: ""', 0), "sample.thickness.source", "empty source"),
     ("blank-source", 'source: "Sec. 4: H = 2 cm"', 'source: "   "', ('source: "   "', 0), "sample.thickness.source", "empty source"),
+    ("derived-source", 'source: "Sec. 4: H = 2 cm"', 'source: "derived: H = 2R/5"', ("derived: H", 0),
+     "sample.thickness.source", "given, not derived"),
     ("unknown-entry", "  thickness:\n", "  colour: {value: 1.0, unit: '1', source: x}\n  thickness:\n", ("colour", 0),
      "sample.colour", 'unknown key "colour"'),
     ("unknown-group", "indenter:\n", "rig:\n  mass: {value: 1.0, unit: kg, source: x}\nindenter:\n", ("rig:", 0), "rig",
@@ -485,6 +562,6 @@ def test_main_replaces_existing_outputs_only_on_success(tmp_path: Path, capsys: 
     assert main([str(SETUP_YAML), str(bad), str(out_json), str(out_csv)]) == 1
     assert out_json.read_text() == "old" and out_csv.read_text() == "old"
     assert main([str(SETUP_YAML), str(PULLOFF_CSV), str(out_json), str(out_csv)]) == 0
-    assert out_csv.read_text() == HEADER + "\n"
+    assert out_csv.read_text() == "line," + HEADER + "\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["p.csv", "pulloff.csv", "s.json"]
     capsys.readouterr()

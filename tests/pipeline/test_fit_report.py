@@ -66,8 +66,8 @@ def _fit(rows: int) -> dict:
 
 def _rows(tmp_path: Path) -> pd.DataFrame:
     csv = tmp_path / "pulloff.csv"
-    csv.write_text("frequency_hz,h1_um,pulloff_mN,source\n200.0,20.0,170.0,lab A\n300.0,60.0,700.0,lab A\n"
-                   "400.0,100.0,1400.0,lab B\n")
+    csv.write_text("line,frequency_hz,h1_um,pulloff_mN,source\n2,200.0,20.0,170.0,lab A\n3,300.0,60.0,700.0,lab A\n"
+                   "4,400.0,100.0,1400.0,lab B\n")
     return data.read_canonical_pulloff(csv)
 
 
@@ -125,8 +125,8 @@ def test_speed_column_shown_where_a_row_has_one_and_the_static_frequency_is_miss
     """The withdrawal speed (um/s) appears as a column only where a row has one (quasi-static rows "—", NaN), with a
     sentence on how the levels treat it; a static JKR test's frequency is "—" (NaN), not 0."""
     csv = tmp_path / "pulloff.csv"
-    csv.write_text("frequency_hz,h1_um,pulloff_mN,source,withdrawal_speed_um_s\n200.0,20.0,170.0,lab A,44.5\n"
-                   "300.0,60.0,700.0,lab A,\n400.0,100.0,1400.0,lab B,0\n,0.0,57.0,lab C,\n")
+    csv.write_text("line,frequency_hz,h1_um,pulloff_mN,source,withdrawal_speed_um_s\n2,200.0,20.0,170.0,lab A,44.5\n"
+                   "3,300.0,60.0,700.0,lab A,\n4,400.0,100.0,1400.0,lab B,0\n5,,0.0,57.0,lab C,\n")
     rows = data.read_canonical_pulloff(csv)
     setup_json = _setup_json(tmp_path)
     table = fit_report.measured_vs_predicted(_fit(3), rows, setup_json)
@@ -147,8 +147,8 @@ def test_figure_pages_show_the_measured_rows_as_the_fit_page_does(tmp_path: Path
     stores 0), a quasi-static row's speed "—" (stored 0), the speed column read "V, withdrawal speed (µm/s)" and the
     force "measured |P_cr| (mN)" -- the first columns of the fit page's table, the same cells."""
     csv = tmp_path / "pulloff.csv"
-    csv.write_text("frequency_hz,h1_um,pulloff_mN,source,withdrawal_speed_um_s\n200.0,20.0,170.0,lab A,44.5\n"
-                   ",0.0,57.0,lab C,\n")
+    csv.write_text("line,frequency_hz,h1_um,pulloff_mN,source,withdrawal_speed_um_s\n2,200.0,20.0,170.0,lab A,44.5\n"
+                   "3,,0.0,57.0,lab C,\n")
     rows = fit_report.measured_rows(csv)
     shown = tables.formatted(fit_report.measured_table(rows), fit_report.MEASURED_COLUMNS)
     assert shown["f (Hz)"].tolist() == ["200", tables.MISSING]
@@ -187,8 +187,8 @@ def test_rows_outside_the_asymptotic_levels_range_are_flagged_in_table_plot_and_
     hand; A/a_m is the refined model's (Eq. 106, tested in tests/models) at that fit, R and E* of the setup.
     """
     csv = tmp_path / "pulloff.csv"
-    csv.write_text("frequency_hz,h1_um,pulloff_mN,source\n200.0,20.0,170.0,lab A\n300.0,60.0,700.0,lab A\n"
-                   "400.0,100.0,1400.0,lab B\n1.0,20.0,150.0,lab C\n0.1,2.0,60.0,lab C\n,0.0,57.0,lab C\n")
+    csv.write_text("line,frequency_hz,h1_um,pulloff_mN,source\n2,200.0,20.0,170.0,lab A\n3,300.0,60.0,700.0,lab A\n"
+                   "4,400.0,100.0,1400.0,lab B\n5,1.0,20.0,150.0,lab C\n6,0.1,2.0,60.0,lab C\n7,,0.0,57.0,lab C\n")
     rows = data.read_canonical_pulloff(csv)
     setup_json = _setup_json(tmp_path)
     fit = _fit(3)

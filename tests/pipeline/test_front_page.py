@@ -13,6 +13,7 @@ import pytest
 
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import front_page
+from vibroadhesion.pipeline.data import ingest_setup
 from vibroadhesion.pipeline.front_page import refresh_findings
 from vibroadhesion.pipeline.pages import (FILE_TIME_MARGIN_NS, VALIDATION_SUMMARY, build, build_paragraph, findings_of,
                                           findings_outdated, index_artefacts, write_index)
@@ -32,6 +33,15 @@ refined,0.36319642951418363,0.12711986555662846,0.33834041556742633,,33,0
 leading,0.36319594834484814,0.1536646465138114,0.33813384611164277,,33,0
 exact_averaging,0.2296544227080406,0.28412306859331204,0.15149715242435424,,33,25
 """
+
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _setup_json(tmp_path: Path) -> Path:
+    """The canonical copy of the shipped data/setup.yaml (published w0 = 0.236 J/m^2, n = 0.531, v0 = 44.5 um/s)."""
+    ingest_setup(ROOT / "data" / "setup.yaml", tmp_path / "setup.json")
+    return tmp_path / "setup.json"
 
 
 def _fit_json(tmp_path: Path) -> Path:
@@ -66,7 +76,7 @@ def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
     fit_json = _fit_json(tmp_path)
     os.utime(summary, (os.stat(fit_json).st_mtime + 10,) * 2)  # validation newer than the fit: no warning
     out = tmp_path / "index.html"
-    artefacts = {"fit_json": fit_json, "virtual_csv": tmp_path / "virtual.csv"}
+    artefacts = {"fit_json": fit_json, "virtual_csv": tmp_path / "virtual.csv", "setup_json": _setup_json(tmp_path)}
     write_index(out, findings=front_page.findings(artefacts, summary))
     text = out.read_text()
     assert "7 measured rows" in text and "0.2361\u00a0±\u00a00.0012" in text and "0.53\u00a0±\u00a00.25" in text
@@ -82,13 +92,35 @@ def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
 def test_front_page_without_validation_says_how_to_build_it_and_with_it_links_it(tmp_path: Path) -> None:
     """The validation runs at the published parameters, so a summary older than the fit is not stale: no warning."""
     fit_json = _fit_json(tmp_path)
-    missing = front_page.findings({"fit_json": fit_json}, tmp_path / "absent.csv")
+    setup_json = _setup_json(tmp_path)
+    missing = front_page.findings({"fit_json": fit_json, "setup_json": setup_json}, tmp_path / "absent.csv")
     assert "run <code>snakemake -c2 validation</code>" in missing and "validation_index.html" not in missing
     summary = tmp_path / "summary.csv"
     summary.write_text(SUMMARY)
     os.utime(summary, (os.stat(fit_json).st_mtime - 10,) * 2)
-    built = front_page.findings({"fit_json": fit_json}, summary)
+    built = front_page.findings({"fit_json": fit_json, "setup_json": setup_json}, summary)
     assert "validation_index.html" in built and "older than the fit" not in built
+
+
+def test_every_table_heading_names_its_parameter_set(tmp_path: Path) -> None:
+    """The figure index: the fit and the SIMULATED pull-off at the fit the figures use (here the simulation fit,
+    w0 = 0.2361234 shown to 3 digits), the validity at the published set; the validation index (no fit): all at the
+    published set of data/setup.yaml, its amplification linked to the validation page, not to Fig. 4."""
+    (tmp_path / "virtual.csv").write_text(VIRTUAL)
+    summary = tmp_path / "summary.csv"
+    summary.write_text(SUMMARY)
+    setup_json, virtual = _setup_json(tmp_path), tmp_path / "virtual.csv"
+    fitted = "simulation fit: w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s"
+    published = "published parameters: w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s"
+    index = front_page.findings({"fit_json": _fit_json(tmp_path), "setup_json": setup_json, "virtual_csv": virtual},
+                                summary)
+    headings = [part.split("</h2>")[0] for part in index.split("<h2>")[1:]]
+    assert [h.endswith(f"the {fitted}") for h in headings] == [True, True, False]
+    assert headings[2].endswith(f"at the {published}") and 'href="fig4.html"' in headings[1]
+    validation = front_page.findings({"setup_json": setup_json, "virtual_csv": virtual}, summary)
+    headings = [part.split("</h2>")[0] for part in validation.split("<h2>")[1:]]
+    assert len(headings) == 2 and all(h.endswith(f"at the {published}") for h in headings)
+    assert 'href="validation.html"' in headings[0] and "fig4.html" not in validation
 
 
 def test_build_names_the_commit_not_the_time(tmp_path: Path) -> None:
@@ -120,7 +152,8 @@ def test_refresh_reads_the_findings_again_from_what_the_run_left(tmp_path: Path,
     monkeypatch.chdir(tmp_path)
     (tmp_path / "virtual.csv").write_text(VIRTUAL)
     index = tmp_path / "index.html"
-    pages = {"fit": {"fit_json": str(_fit_json(tmp_path))}, "fig4": {"virtual_csv": str(tmp_path / "virtual.csv")}}
+    pages = {"fit": {"fit_json": str(_fit_json(tmp_path)), "setup_json": str(_setup_json(tmp_path))},
+             "fig4": {"virtual_csv": str(tmp_path / "virtual.csv")}}
     write_index(index, findings="<p>written by the report job</p>")
     assert refresh_findings({str(index): pages}) == [str(index)]
     assert "run <code>snakemake -c2 validation</code>" in findings_of(index)

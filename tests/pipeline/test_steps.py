@@ -30,6 +30,10 @@ from vibroadhesion.experiments.rigs import simulated_row
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.core.groups import eta1
 
+from conftest import RADIUS, V0, W0
+
+from vibroadhesion.pipeline import figures
+
 ROOT = Path(__file__).resolve().parents[2]
 AMPLITUDES = [25.5, 50.0, 150.0]
 VIRTUAL_COLUMNS = ["fixation", "model", "status", "frequency_hz", "h1_um", "pulloff_ratio"]
@@ -63,8 +67,36 @@ def test_fig4_grid_holds_the_rig_amplitudes_and_fig7_draws_them(tmp_path: Path) 
     fig7_data(setup_json, fit_json, fig7_csv, 2.0, 9.0, 8)
     virtual = tmp_path / "virtual.csv"
     pd.DataFrame(columns=VIRTUAL_COLUMNS).to_csv(virtual, index=False)
-    fig7_plot(setup_json, fit_json, fig7_csv, fig4_csv, virtual, tmp_path / "fig7.pdf", tmp_path / "fig7.png")
+    fig7_plot(setup_json, fit_json, tmp_path / "pulloff.csv", fig7_csv, fig4_csv, virtual, tmp_path / "fig7.pdf",
+              tmp_path / "fig7.png")
     assert (tmp_path / "fig7.png").stat().st_size > 0
+
+
+def test_fig7_draws_the_measured_rows_at_their_omega_check_labelled_by_source(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Fig. 7 (b) shows the measured rows as Fig. 4 does: at omega_check = 2 pi f R/v0 (Eq. 105) and P/|P_JKR| with
+    |P_JKR| = (3 pi/2) R w0 (Eq. 70) of the figure's set (no rows fitted here: the published one), one legend entry
+    per source and amplitude; a static test (no frequency) is not on the axis; without rows nothing is drawn."""
+    setup_json, fit_json = _other_rig(tmp_path)
+    fig4_csv, fig7_csv, virtual = tmp_path / "fig4.csv", tmp_path / "fig7.csv", tmp_path / "virtual.csv"
+    fig4_data(setup_json, fit_json, fig4_csv, 120.0, 121)
+    fig7_data(setup_json, fit_json, fig7_csv, 2.0, 9.0, 8)
+    pd.DataFrame(columns=VIRTUAL_COLUMNS).to_csv(virtual, index=False)
+    measured = tmp_path / "measured.csv"
+    measured.write_text("line,frequency_hz,h1_um,pulloff_mN,source\n9,150.0,50.0,120.0,lab A\n"
+                        "12,250.0,50.0,130.0,lab B\n14,0.0,0.0,58.0,lab B\n", encoding="utf-8")
+    drawn = []
+    monkeypatch.setattr(figures, "save_figure", lambda fig, pdf, png: drawn.append(fig))
+    for rows in (measured, tmp_path / "pulloff.csv"):
+        fig7_plot(setup_json, fit_json, rows, fig7_csv, fig4_csv, virtual, tmp_path / "fig7.pdf", tmp_path / "fig7.png")
+    points = {line.get_label(): line.get_xydata() for line in drawn[0].axes[1].lines}
+    without = {line.get_label() for line in drawn[1].axes[1].lines}
+    jkr_mN = 1.5 * np.pi * RADIUS * W0 * 1e3
+    assert {label for label in set(points) - without if not label.startswith("_")} == {
+        "lab A, $h_1$ = 50 µm", "lab B, $h_1$ = 50 µm"}
+    assert len(drawn[0].axes[1].lines) == len(without) + 2
+    for label, f, force in (("lab A, $h_1$ = 50 µm", 150.0, 120.0), ("lab B, $h_1$ = 50 µm", 250.0, 130.0)):
+        np.testing.assert_allclose(points[label], [[2 * np.pi * f * RADIUS / V0, force / jkr_mN]], rtol=1e-12)
 
 
 def test_kernel_step_records_the_same_bytes_every_run(tmp_path: Path) -> None:

@@ -86,7 +86,11 @@ PLOT_EXTRAS = {
     "fig4": {"pulloff": rules.ingest_pulloff.output[0], "virtual": FIGURE_VIRTUAL},
     "fig5": {"fig5_markers": rules.fig5_data.output.markers},
     "fig6": {"grid": rules.simulation_rigid_grid.output[0]},
-    "fig7": {"fig4": rules.fig4_fig7_data.output.fig4, "virtual": FIGURE_VIRTUAL},
+    "fig7": {
+        "fig4": rules.fig4_fig7_data.output.fig4,
+        "pulloff": rules.ingest_pulloff.output[0],
+        "virtual": FIGURE_VIRTUAL,
+    },
     "fig8": {},
 }
 # The figures in two plot jobs (one matplotlib process each). Figs. 3, 5, 6 and 8 take the longest (Fig. 6 most): with

@@ -85,6 +85,11 @@ def nu0(v0: float, omega0: float, radius: float) -> float:
     return v0 / (omega0 * radius)
 
 
+def omega_bar(frequency_hz: float, omega0: float) -> float:
+    """omega_bar = omega / omega0 with omega = 2 pi f, Eq. (65)."""
+    return 2.0 * math.pi * frequency_hz / omega0
+
+
 def omega_check(frequency_hz: ArrayLike, v0: float, radius: float) -> NDArray[np.float64]:
     """omega_check = omega R / v0 with omega = 2 pi f, Eq. (105)."""
     return 2.0 * math.pi * np.asarray(frequency_hz, dtype=float) * radius / v0

@@ -36,8 +36,10 @@ from vibroadhesion.pipeline.atomic import atomic_path
 from vibroadhesion.pipeline.input_checks import (
     KEYWORD_ORDER,
     DataError,
+    check_csv_header,
     check_force_scale,
     dotted,
+    field_count_error,
     kind_of,
     read_text,
     schema_message,
@@ -52,6 +54,8 @@ PULLOFF_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN", "sour
 NUMERIC_COLUMNS: tuple[str, ...] = ("frequency_hz", "h1_um", "pulloff_mN")
 #: The optional column: the withdrawal speed V of the test in um/s (empty or 0: quasi-static, read as 0).
 SPEED_COLUMN = "withdrawal_speed_um_s"
+#: The first column of the canonical copy: each row's 1-based line in data/pulloff.csv (the rows' one reference).
+LINE_COLUMN = "line"
 _UNITS = {"frequency_hz": "Hz", "h1_um": "um", "pulloff_mN": "mN", SPEED_COLUMN: "um/s"}
 
 # (group, entry) behind each scalar field of Setup.
@@ -71,6 +75,9 @@ _SETUP_LISTS: dict[str, tuple[str, str]] = {
     "amplitudes_um": ("test_conditions", "amplitudes"),
 }
 
+
+#: The group of the canonical setup JSON with the values derived from the given ones (:mod:`.derived`): not an input.
+DERIVED_GROUP = "derived"
 
 #: The value of an entry of data/setup.yaml: a number or a list of numbers.
 SetupValue = float | tuple[float, ...]
@@ -229,13 +236,18 @@ def _canonical_setup(doc: dict[str, Any]) -> dict[str, Any]:
 
 
 def read_canonical_setup(path: str | Path) -> Setup:
-    """Read the canonical JSON written by :func:`main` (re-validated against the same schema)."""
+    """Read the canonical JSON written by :func:`main` (the given values re-validated against the same schema).
+
+    Its :data:`DERIVED_GROUP` is not read: the steps compute a derived value from the given ones where they use it.
+    """
     path = Path(path)
     text = read_text(path)
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:
         raise DataError(path, exc.lineno, "(document)", f"invalid JSON: {exc.msg}") from None
+    if isinstance(doc, dict):
+        doc.pop(DERIVED_GROUP, None)
     return _setup_from_document(path, doc, lambda node_path, key_line: 1)
 
 
@@ -311,12 +323,13 @@ def load_pulloff(path: str | Path) -> pd.DataFrame:
     return _pulloff_frame(pulloff_records(path))
 
 
-def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
+def pulloff_records(path: str | Path, canonical: bool = False) -> list[dict[str, Any]]:
     """Read and validate ``data/pulloff.csv``: one dict per row, the columns and its ``line``.
 
     Lines whose first non-blank character is ``#`` and blank lines are skipped; the first other
     line is the header (the four columns and the optional :data:`SPEED_COLUMN`, in any order). Rows that
-    repeat another are replicates (a test run twice): they are kept.
+    repeat another are replicates (a test run twice): they are kept. ``line`` is the row's line in the file; in
+    the ``canonical`` copy (:func:`ingest`) it is its :data:`LINE_COLUMN`, the line in data/pulloff.csv.
     """
     path = Path(path)
     text = read_text(path)
@@ -332,11 +345,12 @@ def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
             continue
         if header is None:
             header = [h.strip() for h in _split(path, line_no, line, "header")]
-            _check_header(path, line_no, header)
+            check_csv_header(path, line_no, header, ((LINE_COLUMN,) if canonical else ()) + PULLOFF_COLUMNS,
+                             (SPEED_COLUMN,))
             continue
         cells = _split(path, line_no, line, "(row)")
         if len(cells) != len(header):
-            _field_count_error(path, line_no, header, cells)
+            field_count_error(path, line_no, header, cells)
         row = dict(zip(header, cells, strict=True))
         record = _row_numbers(path, line_no, row)
         record["source"] = row["source"].strip()
@@ -349,7 +363,7 @@ def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
         if errors:
             _, _, column, message = min(errors)
             raise DataError(path, line_no, column, message)
-        record["line"] = line_no
+        record["line"] = int(row[LINE_COLUMN]) if canonical else line_no
         records.append(record)
     if header is None:
         raise DataError(path, len(lines), "header",
@@ -357,57 +371,27 @@ def pulloff_records(path: str | Path) -> list[dict[str, Any]]:
     return records
 
 
-def _check_header(path: Path, line_no: int, header: list[str]) -> None:
-    expected = ",".join(PULLOFF_COLUMNS)
-    if len(header) == 1 and (";" in header[0] or "\t" in header[0]):
-        sep = "';'" if ";" in header[0] else "a tab"
-        raise DataError(path, line_no, "header",
-                        f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
-    seen: set[str] = set()
-    for name in header:
-        if not name:
-            raise DataError(path, line_no, "header", f"empty column name; expected {expected}")
-        if name in seen:
-            raise DataError(path, line_no, name, "duplicate column name")
-        seen.add(name)
-        if name not in (*PULLOFF_COLUMNS, SPEED_COLUMN):
-            raise DataError(path, line_no, name, f'unknown column "{name}"; expected exactly {expected} '
-                            f"(and optionally {SPEED_COLUMN})")
-    for name in PULLOFF_COLUMNS:
-        if name not in seen:
-            raise DataError(path, line_no, name, f'missing column "{name}"; expected {expected}')
-
-
-def _field_count_error(path: Path, line_no: int, header: list[str], cells: list[str]) -> None:
-    n, m = len(cells), len(header)
-    if n < m:
-        hint = "; wrong delimiter? use commas" if n == 1 and (";" in cells[0] or "\t" in cells[0]) else ""
-        raise DataError(path, line_no, header[n], f"too few fields: {n} instead of {m}, no value for this column{hint}")
-    raise DataError(path, line_no, f"field {m + 1}",
-                    f"too many fields: {n} instead of {m} (a decimal comma, or an unquoted comma in source?)")
-
-
 def read_canonical_pulloff(path: str | Path) -> pd.DataFrame:
-    """Read the canonical CSV written by :func:`main` (same validation as :func:`load_pulloff`).
+    """Read the canonical CSV written by :func:`ingest` (the frame and validation of :func:`load_pulloff`).
 
-    The canonical file has no ``line`` column, so ``line`` here is the line in the canonical
-    file (header = line 1), not in ``data/pulloff.csv``.
+    ``line`` is each row's line in ``data/pulloff.csv`` (the canonical :data:`LINE_COLUMN`), the line that the
+    input errors, the fit's residuals and its row statuses name.
     """
-    return load_pulloff(path)
+    return _pulloff_frame(pulloff_records(path, canonical=True))
 
 
 # ----------------------------------------------------------------------------- CLI
 
 
 def _pulloff_csv_text(records: list[dict[str, Any]]) -> str:
-    """The canonical CSV; the speed column only where a row has a speed (quasi-static files stay as they were)."""
-    speeds = any(rec[SPEED_COLUMN] > 0 for rec in records)
+    """The canonical CSV: each row's line in data/pulloff.csv first; the speed column only where a row has a speed."""
+    columns = 6 if any(rec[SPEED_COLUMN] > 0 for rec in records) else 5
     buf = io.StringIO()
     writer = csv.writer(buf, lineterminator="\n")
-    writer.writerow([*PULLOFF_COLUMNS, SPEED_COLUMN][: 5 if speeds else 4])
+    writer.writerow([LINE_COLUMN, *PULLOFF_COLUMNS, SPEED_COLUMN][:columns])
     for rec in records:
-        writer.writerow([repr(float(rec["frequency_hz"])), repr(float(rec["h1_um"])), repr(float(rec["pulloff_mN"])),
-                         str(rec["source"]), repr(float(rec[SPEED_COLUMN]))][: 5 if speeds else 4])
+        writer.writerow([str(rec["line"]), repr(float(rec["frequency_hz"])), repr(float(rec["h1_um"])),
+                         repr(float(rec["pulloff_mN"])), str(rec["source"]), repr(float(rec[SPEED_COLUMN]))][:columns])
     return buf.getvalue()
 
 
@@ -431,28 +415,35 @@ def check_inputs(setup_yaml: str | Path, pulloff_csv: str | Path) -> tuple[Setup
     return setup, doc, records
 
 
-def _setup_json_text(doc: dict[str, Any]) -> str:
-    """The canonical setup JSON: values (floats), units and sources of the validated document."""
-    return json.dumps(_canonical_setup(doc), indent=2, ensure_ascii=False, allow_nan=False) + "\n"
+def _setup_json_text(setup: Setup, doc: dict[str, Any]) -> str:
+    """The canonical setup JSON: the validated document (floats), then the values derived from it.
+
+    Each derived value with its formula (:data:`DERIVED_GROUP`, :func:`vibroadhesion.pipeline.derived.derived_values`).
+    """
+    from vibroadhesion.pipeline.derived import derived_values  # numerics: not for the Snakefile's checks
+
+    canonical = _canonical_setup(doc) | {DERIVED_GROUP: derived_values(setup)}
+    return json.dumps(canonical, indent=2, ensure_ascii=False, allow_nan=False) + "\n"
 
 
 def ingest(setup_yaml: str | Path, pulloff_csv: str | Path, out_json: str | Path, out_csv: str | Path) -> str:
     """Validate both inputs (:func:`check_inputs`) and write their canonical copies atomically (:func:`main`).
 
-    The canonical setup JSON keeps values, units and sources; the canonical pull-off CSV has no
-    comments, the columns frequency_hz, h1_um, pulloff_mN, source (withdrawal_speed_um_s where a row has a
-    speed) and floats written with repr.
+    The canonical setup JSON keeps values, units and sources, and adds the values derived from them with their
+    formulas (:data:`DERIVED_GROUP`); the canonical pull-off CSV has no
+    comments, the columns line (the row's line in data/pulloff.csv), frequency_hz, h1_um, pulloff_mN, source
+    (withdrawal_speed_um_s where a row has a speed) and floats written with repr.
     Raises :class:`DataError` (nothing written) on a bad input; returns a one-line summary.
     """
     setup, doc, records = check_inputs(setup_yaml, pulloff_csv)
-    _write_atomically([(Path(out_json), _setup_json_text(doc)), (Path(out_csv), _pulloff_csv_text(records))])
+    _write_atomically([(Path(out_json), _setup_json_text(setup, doc)), (Path(out_csv), _pulloff_csv_text(records))])
     return f"validated {setup_yaml} ({len(setup.sources)} entries) and {pulloff_csv} ({len(records)} rows)"
 
 
 def ingest_setup(setup_yaml: str | Path, out_json: str | Path) -> str:
     """Rule ``ingest_setup``: validate data/setup.yaml and write its canonical JSON (as :func:`ingest`)."""
     setup, doc = _parse_setup(setup_yaml)
-    _write_atomically([(Path(out_json), _setup_json_text(doc))])
+    _write_atomically([(Path(out_json), _setup_json_text(setup, doc))])
     return f"validated {setup_yaml} ({len(setup.sources)} entries)"
 
 

@@ -170,7 +170,7 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
                     label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
-    _plot_measured(ax, measurements, jkr_pulloff_mN, sorted(refined["frequency_hz"].unique()))
+    _plot_measured(ax, measurements, jkr_pulloff_mN, "h1_um", "frequency_hz", sorted(refined["frequency_hz"].unique()))
     if measurements.empty:
         ax.text(0.03, 0.97, "no measured rows in data/pulloff.csv\n(published fit shown)", transform=ax.transAxes,
                 va="top", fontsize=7.5, color="0.35")
@@ -180,21 +180,31 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     return fig
 
 
-def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, frequencies: Sequence[float]) -> None:
-    """Measured rows over P_JKR: one marker per source, the colour of the refined curve of their frequency.
+def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, x: str, by: str,
+                   curves: Sequence[float]) -> None:
+    """Measured rows over P_JKR against column ``x``: one marker per source, labelled by it.
 
-    Grey for a frequency without a curve or for a static test (h1 = 0). Rows measured at a withdrawal speed
-    (``withdrawal_speed_um_s`` > 0) are filled and labelled so: the quasi-static curves are not their model.
+    Coloured as the curve of their ``by`` value among ``curves`` (Fig. 4: against h1, by frequency; Fig. 7: against
+    omega_check, by h1); grey for a value without a curve or for a static test (h1 = 0). Rows measured at a
+    withdrawal speed (``withdrawal_speed_um_s`` > 0) are filled and labelled so: the quasi-static curves are not their
+    model.
     """
     markers = "osD^v<>p"
     moving = measurements[SPEED_COLUMN] > 0 if SPEED_COLUMN in measurements else False
     for k, (source, by_source) in enumerate(measurements.assign(moving=moving).groupby("source", sort=True)):
-        for (f, at_speed), rows in by_source.groupby(["frequency_hz", "moving"], sort=True):
-            known = [j for j, test in enumerate(frequencies) if np.isclose(test, f)]
-            where = ("static, $h_1$ = 0" if f == 0 else f"{f:g} Hz") + (", withdrawn at V > 0" if at_speed else "")
+        for (value, at_speed), rows in by_source.groupby([by, "moving"], sort=True):
+            known = [j for j, curve in enumerate(curves) if np.isclose(curve, value)]
+            where = _measured_where(by, value) + (", withdrawn at V > 0" if at_speed else "")
             color = f"C{known[0]}" if known else "0.4"
-            ax.plot(rows["h1_um"], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)],
+            ax.plot(rows[x], rows["pulloff_mN"] / jkr_pulloff_mN, markers[k % len(markers)],
                     mfc=color if at_speed else "none", color=color, label=f"{source}, {where}")
+
+
+def _measured_where(by: str, value: float) -> str:
+    """The legend's name of a group of measured rows: its amplitude (``by`` = ``h1_um``) or its frequency."""
+    if by == "h1_um":
+        return rf"$h_1$ = {value:g} µm"
+    return "static, $h_1$ = 0" if value == 0 else f"{value:g} Hz"
 
 
 # --- Figs. 6–8: rigidly fixed indenter, refined model ----------------------------------------
@@ -261,11 +271,14 @@ def plot_fig6(table: pd.DataFrame, experiment_omega_check: Mapping[float, float]
 
 
 def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check: Mapping[float, float],
-              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None) -> Figure:
+              exact: pd.DataFrame | None = None, virtual: pd.DataFrame | None = None,
+              measurements: pd.DataFrame | None = None, jkr_pulloff_mN: float = 1.0) -> Figure:
     """(a) Abar_cr and (b) P_cr/P_JKR against omega_check.
 
     Dashed: the leading-order values (Eq. 72); dotted: the exact high-frequency averaging with the same criterion
-    a_m = a_cr (Fig. 4's rows).
+    a_m = a_cr (Fig. 4's rows). In (b) the measured rows (with their ``omega_check``, Eq. 105) over
+    ``jkr_pulloff_mN``, as in Fig. 4 (:func:`_plot_measured`), coloured by amplitude; a static test (no frequency)
+    has no place on this axis: it is in Fig. 4 only.
     """
     fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
     for k, (h1, rows) in enumerate(_by_amplitude(table)):
@@ -284,6 +297,9 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
             sim_omega_check = [experiment_omega_check[f] for f in sim["frequency_hz"]]
             ax_b.plot(sim_omega_check, sim["pulloff_ratio"], "o", color=f"C{k}",
                       ms=4, label="simulated pull-off (virtual experiment)" if k == 0 else None)
+    if measurements is not None:
+        _plot_measured(ax_b, measurements[measurements["frequency_hz"] > 0], jkr_pulloff_mN, "omega_check", "h1_um",
+                       sorted(table["h1_um"].unique()))
     for ax, label, letter in ((ax_a, r"$\bar A_{cr}$", "a"), (ax_b, r"$P_{cr}/P^{JKR}_{cr}$", "b")):
         _mark_frequencies(ax, experiment_omega_check)
         ax.set(xscale="log", xlabel=OMEGA_CHECK_AXIS, ylabel=label, title=f"({letter})")

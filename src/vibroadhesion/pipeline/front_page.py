@@ -26,6 +26,7 @@ from vibroadhesion.pipeline.pages import (
     index_artefacts,
     write_index,
 )
+from vibroadhesion.pipeline.steps.inputs import parameter_label
 from vibroadhesion.pipeline.tables import Column, show, significant
 
 AMPLIFICATION_COLUMNS = {
@@ -103,38 +104,48 @@ def fit_lead(fit: dict[str, Any]) -> str:
 def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY) -> str:
     """The HTML of the findings: build, measured rows, the fit, the amplification per level, the validity per level.
 
-    ``artefacts`` are the papermill parameters of the index's pages (``fit_json``, ``virtual_csv``); the validity
-    comes from ``validation_summary`` when it exists (the Snakefile's onsuccess reads it again at the end of a run:
-    :func:`refresh_findings`).
+    ``artefacts`` are the papermill parameters of the index's pages (``setup_json``, ``fit_json``, ``virtual_csv``);
+    the validity comes from ``validation_summary`` when it exists (the Snakefile's onsuccess reads it again at the end
+    of a run: :func:`refresh_findings`). Each table's heading names its parameter set (:func:`parameter_label`): the
+    fit and the SIMULATED pull-off of the figure index are at the set the figures use (with ``fit_json``; the
+    validation index: the published set), the validity always at the published set.
     """
     parts = [build_paragraph()]
-    if "fit_json" in artefacts:
-        fit = fit_report.read_fit(artefacts["fit_json"])
+    setup_json, fit_json = artefacts["setup_json"], artefacts.get("fit_json")
+    used_set = html.escape(parameter_label(setup_json, fit_json, math=False))
+    if fit_json is not None:
+        fit = fit_report.read_fit(fit_json)
         parts.append(fit_lead(fit))
         used = (html.escape(fit["status"]) if fit["data_rows"] else
                 "nothing is fitted: the figures use the published parameters")
-        parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>)</h2><p>{fit['data_rows']} measured rows in "
-                  f"<code>data/pulloff.csv</code>; {used}.</p>",
+        parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>): the figures use the {used_set}</h2><p>"
+                  f"{fit['data_rows']} measured rows in <code>data/pulloff.csv</code>; {used}.</p>",
                   _table(fit_report.figures_fit(fit).drop(columns="reason"), fit_report.ESTIMATE_COLUMNS)]
     if "virtual_csv" in artefacts:
-        parts += ["<h2>Pull-off amplification per model level against the SIMULATED pull-off "
-                  "(<a href=\"fig4.html\">Fig. 4</a>)</h2><p>P_cr/P_JKR over the test conditions (frequencies × "
-                  "amplitudes) of the virtual pull-off experiment, a simulation of the full model, not a measurement, "
-                  "and each level's relative error against it.</p>",
+        page = '<a href="fig4.html">Fig. 4</a>' if fit_json else '<a href="validation.html">validation page</a>'
+        parts += [f"<h2>Pull-off amplification per model level against the SIMULATED pull-off ({page}) at the "
+                  f"{used_set}</h2><p>P_cr/P_JKR over the test conditions (frequencies × amplitudes) of the virtual "
+                  "pull-off experiment, a simulation of the full model, not a measurement, and each level's relative "
+                  "error against it.</p>",
                   _table(amplification(artefacts["virtual_csv"]), AMPLIFICATION_COLUMNS)]
-    parts.append(_validity_part(Path(artefacts.get("summary_csv", validation_summary))))
+    published_set = html.escape(parameter_label(setup_json, math=False))
+    parts.append(_validity_part(Path(artefacts.get("summary_csv", validation_summary)), published_set))
     return "\n".join(parts)
 
 
-def _validity_part(summary_csv: Path) -> str:
-    """The validity of each level at the published parameters, or how to build it (the validation ignores the fit)."""
+def _validity_part(summary_csv: Path, published_set: str) -> str:
+    """The validity of each level at the published parameters (named by ``published_set``), or how to build it.
+
+    The validation ignores the fit: its heading names the published set whatever the figures use.
+    """
     head = "<h2>Validity of each level against the simulation"
     if not summary_csv.exists():
         return (f"{head}</h2><p>Not built yet: run <code>snakemake -c2 validation</code> for the validation pages "
                 "(every level against the direct simulation).</p>")
     table = validity(summary_csv)
     best = table.loc[table["max_error_experiments_applicable"].idxmin()]
-    return (f"{head} (<a href=\"validation_index.html\">validation pages</a>)</h2><p>At the published parameters, "
+    return (f"{head} (<a href=\"validation_index.html\">validation pages</a>) at the {published_set}</h2><p>"
+            "At the published parameters, "
             "the largest relative errors of Ā, ā_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the periodic steady states "
             f"of the full model. The most accurate level at the test frequencies, {html.escape(best['level'])}, errs "
             f"by up to {significant(100 * best['max_error_experiments_applicable'], 2)} %.</p>"

@@ -4,8 +4,9 @@
 holds what both readers share: :class:`DataError` (``"<file>, row <r>, column <c>: <what is wrong>"``),
 the packaged JSON schemas (draft 2020-12, ``vibroadhesion/pipeline/schemas/``) with their validators,
 the translation of a schema violation into that one-line message, the UTF-8 file reader, the line of
-each YAML node (with the refusal of numbers that YAML 1.1 reads in another base), and the check of
-the two files against each other (a pull-off force on the scale of the setup's JKR force).
+each YAML node (with the refusal of numbers that YAML 1.1 reads in another base), the checks of a CSV header
+and row length, and the check of the two files against each other (a pull-off force on the scale of the setup's
+JKR force).
 """
 
 from __future__ import annotations
@@ -18,7 +19,7 @@ from collections.abc import Sequence
 from functools import cache
 from importlib import resources
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NoReturn
 
 import yaml
 
@@ -222,3 +223,39 @@ def check_force_scale(radius: float, w0: float, records: Sequence[dict[str, Any]
                             f"pull-off force {rec['pulloff_mN']!r} mN is below {MIN_PULLOFF_OVER_JKR} |P_JKR| = "
                             f"{floor:.3g} mN of the setup's w0 and R (vibration only raises it): looks like N, "
                             "expected mN (for a weaker adhesive, set gent_schultz_published.w0 in the setup)")
+
+
+def check_csv_header(path: str | Path, line_no: int, header: Sequence[str], required: Sequence[str],
+                     optional: Sequence[str]) -> None:
+    """Refuse a CSV header that is not the ``required`` columns (in any order) and any of the ``optional`` ones.
+
+    A wrong delimiter, an empty, duplicate, unknown or missing column name: the first, as a :class:`DataError`.
+    """
+    expected = ",".join(required)
+    if len(header) == 1 and (";" in header[0] or "\t" in header[0]):
+        sep = "';'" if ";" in header[0] else "a tab"
+        raise DataError(path, line_no, "header",
+                        f"wrong delimiter: fields are separated by {sep}; use commas ({expected})")
+    seen: set[str] = set()
+    for name in header:
+        if not name:
+            raise DataError(path, line_no, "header", f"empty column name; expected {expected}")
+        if name in seen:
+            raise DataError(path, line_no, name, "duplicate column name")
+        seen.add(name)
+        if name not in (*required, *optional):
+            raise DataError(path, line_no, name, f'unknown column "{name}"; expected exactly {expected} '
+                            f"(and optionally {', '.join(optional)})")
+    for name in required:
+        if name not in seen:
+            raise DataError(path, line_no, name, f'missing column "{name}"; expected {expected}')
+
+
+def field_count_error(path: str | Path, line_no: int, header: Sequence[str], cells: Sequence[str]) -> NoReturn:
+    """Raise the :class:`DataError` of a CSV row whose number of ``cells`` is not that of the ``header``."""
+    n, m = len(cells), len(header)
+    if n < m:
+        hint = "; wrong delimiter? use commas" if n == 1 and (";" in cells[0] or "\t" in cells[0]) else ""
+        raise DataError(path, line_no, header[n], f"too few fields: {n} instead of {m}, no value for this column{hint}")
+    raise DataError(path, line_no, f"field {m + 1}",
+                    f"too many fields: {n} instead of {m} (a decimal comma, or an unquoted comma in source?)")

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import numpy as np
-
 from vibroadhesion.core import groups
 from vibroadhesion.experiments.figure_tables.fig5 import fig5_tables
 from vibroadhesion.pipeline.artefacts import write_csv
@@ -17,7 +15,8 @@ def compliant_case(setup: Setup) -> tuple[float, dict[float, float]]:
     """Fig. 5's amplitude eta1 = h1/R (Eq. 65), and omega_bar = omega/omega0 at each test frequency (Eq. 65)."""
     omega0 = setup_number(setup, "fixation.natural_frequency")
     h1_um = setup_number(setup, "test_conditions.fig5_amplitude")
-    return float(groups.eta1(h1_um * 1e-6, setup.radius)), {f: 2.0 * np.pi * f / omega0 for f in setup.frequencies_hz}
+    omega_bar = {f: groups.omega_bar(f, omega0) for f in setup.frequencies_hz}
+    return float(groups.eta1(h1_um * 1e-6, setup.radius)), omega_bar
 
 
 def fig5_data(setup_json: str | Path, fit_json: str | Path | None, out: str | Path, markers_out: str | Path,

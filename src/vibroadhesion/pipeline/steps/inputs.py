@@ -34,38 +34,39 @@ def published(setup: Setup) -> dict[str, float]:
     return {"w0": setup.w0, "n": setup.n, "v0": setup.v0}
 
 
-def parameter_label(setup_json: str | Path, fit_json: str | Path | None = None) -> str:
+def parameter_label(setup_json: str | Path, fit_json: str | Path | None = None, math: bool = True) -> str:
     """The parameter set a figure uses, named on it.
 
     The fit the figures use with each fitted parameter's interval, or the published set (:func:`rig`); where rows
-    were fitted but the preferred level's fit is not used, why (e.g. the fit is poor).
+    were fitted but the preferred level's fit is not used, why (e.g. the fit is poor). In matplotlib's mathtext
+    (``math``) for a figure, on two lines; else plain text (w0, n, v0) on one line, for a heading of the report.
     """
     if fit_json is None:
         p = published(read_canonical_setup(setup_json))
-        return f"published parameters: {_values(p, {})}"
+        return f"published parameters: {_values(p, {}, math)}"
     fit = json.loads(Path(fit_json).read_text())
-    p, used = fitted(fit_json), fit["figures_use"]
+    p, used, newline = fitted(fit_json), fit["figures_use"], "\n" if math else " "
     if used == "published":
-        why = f" ({fit['figures_reason']}):\n" if fit["data_rows"] else ": "
-        return f"published parameters{why}{_values(p, {})}"
+        why = f" ({fit['figures_reason']}):{newline}" if fit["data_rows"] else ": "
+        return f"published parameters{why}{_values(p, {}, math)}"
     entries = fit["fits"][used]["parameters"]
     intervals = {name: entries[name]["interval"] for name in p if entries[name]["status"] == "fitted"}
     why = f" ({fit['figures_reason']})" if used != fit["figures_preferred"] else ""
-    return f"{used} fit of {fit['data_rows']} measured rows{why}, {fit['settings']['confidence']:.0%} intervals:\n" \
-           f"{_values(p, intervals)}"
+    return (f"{used} fit of {fit['data_rows']} measured rows{why}, {fit['settings']['confidence']:.0%} intervals:"
+            f"{newline}{_values(p, intervals, math)}")
 
 
-#: How a parameter is named and scaled on a figure: mathtext symbol, unit, factor from SI.
-_SHOWN = {"w0": ("$w_0$", "J/m²", 1.0), "n": ("$n$", "", 1.0), "v0": ("$v_0$", "µm/s", 1e6)}
+#: How a parameter is named and scaled on a figure: mathtext symbol, plain name, unit, factor from SI.
+_SHOWN = {"w0": ("$w_0$", "w0", "J/m²", 1.0), "n": ("$n$", "n", "", 1.0), "v0": ("$v_0$", "v0", "µm/s", 1e6)}
 
 
-def _values(p: dict[str, float], intervals: dict[str, list[float]]) -> str:
+def _values(p: dict[str, float], intervals: dict[str, list[float]], math: bool = True) -> str:
     """"w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s", with [lower, upper] after each parameter in ``intervals``."""
     parts = []
-    for name, (symbol, unit, factor) in _SHOWN.items():
+    for name, (symbol, plain, unit, factor) in _SHOWN.items():
         bounds = intervals.get(name)
         interval = f" [{bounds[0] * factor:.3g}, {bounds[1] * factor:.3g}]" if bounds else ""
-        parts.append(f"{symbol} = {p[name] * factor:.3g}{interval}{' ' + unit if unit else ''}")
+        parts.append(f"{symbol if math else plain} = {p[name] * factor:.3g}{interval}{' ' + unit if unit else ''}")
     return ", ".join(parts)
 
 

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
+from vibroadhesion.core.groups import omega_check
 from vibroadhesion.experiments.pulloff import jkr_mN
 from vibroadhesion.pipeline import dynamics_figures, error_maps, figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
@@ -68,12 +69,20 @@ def fig6_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, grid_csv: P
     _save_named(fig, setup_json, fit_json, pdf, png)
 
 
-def fig7_plot(setup_json: Path_, fit_json: Path_ | None, csv: Path_, fig4_csv: Path_, virtual_csv: Path_, pdf: Path_,
-              png: Path_) -> None:
-    """Fig. 7 (Eq. 106) with Fig. 4's leading-order (Eq. 72) and exact-averaging rows and the simulated pull-off."""
+def fig7_plot(setup_json: Path_, fit_json: Path_ | None, pulloff_csv: Path_, csv: Path_, fig4_csv: Path_,
+              virtual_csv: Path_, pdf: Path_, png: Path_) -> None:
+    """Fig. 7 (Eq. 106) with Fig. 4's leading-order (Eq. 72) and exact-averaging rows, simulated and measured pull-off.
+
+    The measured rows at omega_check = omega R/v0 (Eq. 105) and over |P_cr^JKR| = (3 pi/2) R w0 (Eq. 70) of the
+    figure's parameter set (:func:`rig`), as Fig. 4 scales them.
+    """
     fig4 = pd.read_csv(fig4_csv)
+    setup, params, _ = rig(setup_json, fit_json)
+    rows = read_canonical_pulloff(pulloff_csv)
+    rows = rows.assign(omega_check=omega_check(rows["frequency_hz"], params["v0"], setup.radius))
     fig = figures.plot_fig7(pd.read_csv(csv), fig4[fig4["model"] == "leading"], _test_frequencies(setup_json, fit_json),
-                            fig4[fig4["model"] == "exact_averaging"], pd.read_csv(virtual_csv))
+                            fig4[fig4["model"] == "exact_averaging"], pd.read_csv(virtual_csv), rows,
+                            jkr_mN(params["w0"], setup.radius))
     _save_named(fig, setup_json, fit_json, pdf, png)
 
 
@@ -101,7 +110,8 @@ def all_figures(inputs: Mapping[str, Path_], outputs: Mapping[str, Path_], panel
     if "fig6_png" in o:
         fig6_plot(i["setup"], i.get("fit"), i["fig6"], i["grid"], o["fig6_pdf"], o["fig6_png"])
     if "fig7_png" in o:
-        fig7_plot(i["setup"], i.get("fit"), i["fig7"], i["fig4"], i["virtual"], o["fig7_pdf"], o["fig7_png"])
+        fig7_plot(i["setup"], i.get("fit"), i["pulloff"], i["fig7"], i["fig4"], i["virtual"], o["fig7_pdf"],
+                  o["fig7_png"])
     if "fig8_png" in o:
         fig8_plot(i["setup"], i.get("fit"), i["fig8"], o["fig8_pdf"], o["fig8_png"])
 
