@@ -143,7 +143,10 @@ def test_exact_averaging_fit_recovers_simulation_parameters_within_its_model_err
     assert model_error < 1e-3 and np.all(bound < 1e-2), (model_error, bound)
 
     fit = fit_gent_schultz(rows, model, PUBLISHED, **GEOMETRY)
-    assert fit["status"] == "fitted" and fit["v0_identifiable"] is False
+    # 3 rows for 2 parameters leave one degree of freedom: t_1(0.975) = 12.7 times the 1e-3 residual floor; w0 is
+    # determined, n's interval need not close inside the box (then: not determined by these rows)
+    assert fit["parameters"]["w0"]["status"] == "fitted" and fit["v0_identifiable"] is False
+    assert fit["status"] in ("fitted", "not_identifiable")
     recovered = np.log([fit["parameters"]["w0"]["estimate"] / truth.w0, fit["parameters"]["n"]["estimate"] / truth.n])
     assert np.all(np.abs(recovered) <= 2 * bound + 1e-6), (recovered, bound)
 

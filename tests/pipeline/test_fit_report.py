@@ -18,6 +18,7 @@ from vibroadhesion.core import levels
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
 from vibroadhesion.pipeline import data, figures, fit_report, tables
+from vibroadhesion.pipeline.input_checks import schema_validator
 from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -25,9 +26,12 @@ PUBLISHED = {"w0": 0.236, "n": 0.531, "v0": 4.45e-05}
 UNITS = {"w0": "J/m^2", "n": "1", "v0": "m/s"}
 
 
-def _parameters(values: dict[str, float], errors: dict[str, float | None], sources: dict[str, str]) -> dict:
+def _parameters(values: dict[str, float], errors: dict[str, float | None], statuses: dict[str, str],
+                intervals: dict[str, list[float]] | None = None) -> dict:
+    """Parameter entries of the fit JSON (pipeline/schemas/fit.schema.json), ``published`` where no status is given."""
     return {name: {"estimate": values[name], "std_error": errors.get(name), "unit": UNITS[name],
-                   "source": sources.get(name, "published (Fig. 4 caption)")} for name in ("w0", "n", "v0")}
+                   "status": statuses.get(name, "published"), "reason": "",
+                   "interval": (intervals or {}).get(name)} for name in ("w0", "n", "v0")}
 
 
 def _fit(rows: int) -> dict:
@@ -35,8 +39,10 @@ def _fit(rows: int) -> dict:
     simulation = {
         "model": "simulation", "rows": rows, "status": "fitted", "note": "", "free_parameters": ["w0", "n", "v0"],
         "at_bound": [], "v0_identifiable": True, "v0_note": "v0 identifiable: relative standard error 0.117",
+        "determined": ["w0", "n", "v0"],
         "parameters": _parameters({"w0": 0.2361234, "n": 0.531, "v0": 4.503121e-05},
-                                  {"w0": 0.001234, "n": 0.25, "v0": 1.87152e-07}, dict.fromkeys(PUBLISHED, "fitted")),
+                                  {"w0": 0.001234, "n": 0.25, "v0": 1.87152e-07}, dict.fromkeys(PUBLISHED, "fitted"),
+                                  {"w0": [0.2337, 0.2386], "n": [0.31, 1.42], "v0": [4.46e-05, 4.541e-05]}),
         "residuals_mN": [{"line": 2, "residual": 1.7}, {"line": 3, "residual": -7.0}, {"line": 4, "residual": -1400.0}],
         "rms_relative_residual": 0.5774,
         "row_status": [{"line": 2, "frequency_hz": 200.0, "h1_um": 20.0, "status": "pulloff", "model_mN": 171.7},
@@ -47,21 +53,28 @@ def _fit(rows: int) -> dict:
     leading = {
         "model": "leading", "rows": rows, "status": "at_bound", "free_parameters": ["w0", "n"], "at_bound": ["n"],
         "note": "n ends on its bound 0.05 1", "v0_identifiable": False, "v0_note": "v0 not identifiable: no v0",
+        "determined": [],
         "parameters": _parameters({"w0": 0.49, "n": 0.05000000000000003, "v0": 4.45e-05}, {"w0": 0.12},
-                                  {"w0": "fitted", "n": "fitted, on its bound (0.05, 4.0)"}),
+                                  {"w0": "not_identifiable", "n": "at_bound"}),
         "residuals_mN": [{"line": 2, "residual": 17.0}, {"line": 3, "residual": -140.0},
                          {"line": 4, "residual": -280.0}],
         "rms_relative_residual": 0.17,
     }
     refined = {"model": "refined", "rows": rows, "status": "failed", "note": "no root at a trial point",
-               "v0_identifiable": False, "v0_note": "no fit", "parameters": _parameters(PUBLISHED, {}, {})}
+               "determined": [], "v0_identifiable": False, "v0_note": "no fit",
+               "parameters": _parameters(PUBLISHED, {}, {})}
     fits = {"refined": refined, "simulation": simulation, "leading": leading}  # not in the registry's order
     if rows == 0:
         fits = {name: {"model": name, "rows": 0, "status": "published", "note": "no rows: published values kept",
-                       "v0_identifiable": False, "v0_note": "", "parameters": _parameters(PUBLISHED, {}, {})}
+                       "determined": [], "v0_identifiable": False, "v0_note": "",
+                       "parameters": _parameters(PUBLISHED, {}, {})}
                 for name in ("simulation", "leading")}
-    return {"data_rows": rows, "figures_use": "simulation", "fits": fits, "status": "",
-            "published": {**PUBLISHED, "source": "Fig. 4 caption"}}
+    fit = {"data_rows": rows, "figures_preferred": "simulation", "figures_use": "simulation" if rows else "published",
+           "figures_reason": "the simulation fit determines every parameter it fits" if rows else "no measured rows",
+           "fits": fits, "status": "", "published": {**PUBLISHED, "source": "Fig. 4 caption"},
+           "settings": {"confidence": 0.95, "relative_scatter": 0.05, "alpha": 0.05, "max_relative_se": 0.5}}
+    schema_validator("fit").validate(fit)
+    return fit
 
 
 def _rows(tmp_path: Path) -> pd.DataFrame:
@@ -84,19 +97,23 @@ def test_levels_in_the_registry_order_with_the_converged_simulation_as_headline(
     assert fit_report.headline(fit) == "simulation"
     fit["fits"]["simulation"]["status"] = "failed"
     assert fit_report.headline(fit) is None
-    assert "did not converge (**failed**" in fit_report.summary_sentence(fit)
+    assert "reached no estimate (**failed**" in fit_report.summary_sentence(fit)
 
 
-def test_estimates_give_value_plus_minus_se_or_why_there_is_none() -> None:
-    table = fit_report.estimates(_fit(3)).set_index("status")
-    assert table.loc["fitted", "w0"] == "0.2361\u00a0±\u00a00.0012"
-    assert table.loc["fitted", "v0"] == "(4.503\u00a0±\u00a00.019)e-05"
-    assert table.loc["at_bound", "n"] == "0.0500 (at bound)"  # 0.05000000000000003 to 3 figures
-    assert table.loc["at_bound", "v0"] == "4.45e-05 (fixed: published)"  # as published, no padding zero
-    assert table.loc["failed", "w0"] == "0.236 (fixed: published)" and "no root" in table.loc["failed", "reason"]
-    assert table.loc["fitted", "rms_relative_residual"] == 0.5774
-    assert math.isnan(table.loc["failed", "rms_relative_residual"])
-    assert table.loc["fitted", "level"] == levels.level("simulation").label
+def test_estimates_give_value_and_interval_or_say_not_determined() -> None:
+    """A fitted parameter: its value and its interval to 3 figures; a parameter on a bound or not determined: "not
+    determined by these rows", never a bare number; a parameter not fitted: its published value as typed."""
+    table = fit_report.estimates(_fit(3)).set_index("level")
+    simulation, leading, refined = (levels.level(name).label for name in ("simulation", "leading", "refined"))
+    assert table.loc[simulation, "w0"] == "0.236 [0.234, 0.239]"
+    assert table.loc[simulation, "v0"] == "4.50e-05 [4.46e-05, 4.54e-05]"
+    assert table.loc[leading, "n"] == "not determined by these rows (on its bound 0.0500)"
+    assert table.loc[leading, "w0"] == "not determined by these rows"
+    assert table.loc[leading, "v0"] == "4.45e-05 (fixed: published)"  # as published, no padding zero
+    assert table.loc[refined, "w0"] == "0.236 (fixed: published)" and "no root" in table.loc[refined, "reason"]
+    assert table.loc[simulation, "status"] == "fitted" and table.loc[leading, "status"] == "at a bound"
+    assert table.loc[simulation, "rms_relative_residual"] == 0.5774
+    assert math.isnan(table.loc[refined, "rms_relative_residual"])
 
 
 def test_figure_pages_show_the_fit_the_figures_use_and_the_headline() -> None:
@@ -233,7 +250,7 @@ def test_fit_page_renders_with_and_without_measured_rows(tmp_path: Path, rows: i
         render_page(page, manager)
     html = page.html.read_text(encoding="utf-8")
     if rows:
-        assert "0.2361\u00a0±\u00a00.0012" in html and "contact_loss_before_extremum" in html and "image/png" in html
+        assert "0.236 [0.234, 0.239]" in html and "contact_loss_before_extremum" in html and "image/png" in html
         assert "All 3 rows lie inside the asymptotic levels" in html
     else:
         assert "holds no measured rows" in html and "Estimates per model level" not in html

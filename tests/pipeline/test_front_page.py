@@ -12,6 +12,7 @@ from pathlib import Path
 import pytest
 
 from vibroadhesion.core import levels
+from vibroadhesion.pipeline.input_checks import schema_validator
 from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.data import ingest_setup
 from vibroadhesion.pipeline.front_page import refresh_findings
@@ -45,13 +46,21 @@ def _setup_json(tmp_path: Path) -> Path:
 
 
 def _fit_json(tmp_path: Path) -> Path:
-    parameters = {"w0": {"estimate": 0.2361234, "std_error": 0.001234, "unit": "J/m^2", "source": "fitted"},
-                  "n": {"estimate": 0.531, "std_error": 0.25, "unit": "1", "source": "fitted"},
-                  "v0": {"estimate": 4.45e-05, "std_error": None, "unit": "m/s",
-                         "source": "published (Fig. 4 caption)"}}
-    fit = {"data_rows": 7, "figures_use": "simulation", "published": {"w0": 0.236, "n": 0.531, "v0": 4.45e-05},
-           "fits": {"simulation": {"status": "fitted", "note": "", "v0_note": "", "free_parameters": ["w0", "n"],
+    parameters = {"w0": {"estimate": 0.2361234, "std_error": 0.001234, "unit": "J/m^2", "status": "fitted",
+                         "reason": "", "interval": [0.2337, 0.2386]},
+                  "n": {"estimate": 0.531, "std_error": 0.25, "unit": "1", "status": "fitted", "reason": "",
+                        "interval": [0.31, 1.42]},
+                  "v0": {"estimate": 4.45e-05, "std_error": None, "unit": "m/s", "status": "published", "reason": "",
+                         "interval": None}}
+    fit = {"data_rows": 7, "figures_preferred": "simulation", "figures_use": "simulation",
+           "figures_reason": "the simulation fit determines every parameter it fits",
+           "status": "the figures use the simulation fit: the simulation fit determines every parameter it fits",
+           "settings": {"confidence": 0.95, "relative_scatter": 0.05, "alpha": 0.05, "max_relative_se": 0.5},
+           "published": {"w0": 0.236, "n": 0.531, "v0": 4.45e-05, "source": "Fig. 4 caption"},
+           "fits": {"simulation": {"model": "simulation", "rows": 7, "status": "fitted", "determined": ["w0", "n"],
+                                   "note": "", "v0_note": "", "free_parameters": ["w0", "n"], "v0_identifiable": False,
                                    "parameters": parameters, "rms_relative_residual": 2.693e-05}}}
+    schema_validator("fit").validate(fit)
     path = tmp_path / "fit.json"
     path.write_text(json.dumps(fit))
     return path
@@ -79,7 +88,7 @@ def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
     artefacts = {"fit_json": fit_json, "virtual_csv": tmp_path / "virtual.csv", "setup_json": _setup_json(tmp_path)}
     write_index(out, findings=front_page.findings(artefacts, summary))
     text = out.read_text()
-    assert "7 measured rows" in text and "0.2361\u00a0±\u00a00.0012" in text and "0.53\u00a0±\u00a00.25" in text
+    assert "7 measured rows" in text and "0.236 [0.234, 0.239]" in text and "0.531 [0.31, 1.42]" in text
     assert "4.45e-05 (fixed: published)" in text and "2.69e-05" in text
     assert "-2.50e-01" in text and "-2.00e-01" in text  # leading against the simulated pull-off
     assert "3.38e-01" in text and "1.51e-01" in text and "25 of 33" in text  # validation summary
@@ -110,7 +119,8 @@ def test_every_table_heading_names_its_parameter_set(tmp_path: Path) -> None:
     summary = tmp_path / "summary.csv"
     summary.write_text(SUMMARY)
     setup_json, virtual = _setup_json(tmp_path), tmp_path / "virtual.csv"
-    fitted = "simulation fit: w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s"
+    fitted = ("simulation fit of 7 measured rows, 95% intervals: w0 = 0.236 [0.234, 0.239] J/m², n = 0.531 [0.31, 1.42],"
+              " v0 = 44.5 µm/s")
     published = "published parameters: w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s"
     index = front_page.findings({"fit_json": _fit_json(tmp_path), "setup_json": setup_json, "virtual_csv": virtual},
                                 summary)

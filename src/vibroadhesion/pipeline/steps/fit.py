@@ -18,21 +18,22 @@ from vibroadhesion.pipeline.input_checks import schema_validator
 
 
 def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figures_use: str,
-        settings: Mapping[str, float]) -> None:
+        settings: Mapping[str, float] | None = None) -> None:
     """Fit w0, n, v0 to the measured rows with each model level (Eqs. 71-72, 106); results/fit/gent_schultz.json.
 
     No rows: the published parameters pass through. The cheaper levels are fitted first and their fits inside the box
     are start points of the simulation's search. ``figures_use`` names the level the figures prefer; they use it if
     its fit is ``fitted``, else the most faithful fitted level, else the published set
     (:func:`~vibroadhesion.experiments.fit_summary.figures_choice`), and the summary says which and why.
-    ``settings``: ``relative_scatter``, ``alpha``, ``confidence`` of workflow/config.yaml (fit). A level that fails
+    ``settings``: ``relative_scatter``, ``alpha``, ``confidence`` of workflow/config.yaml (fit; None: the defaults of
+    :class:`~vibroadhesion.experiments.fit_statistics.Settings`, which are the config's). A level that fails
     does not stop the others. A long search prints a heartbeat line to the log at most every 10 s.
     """
     setup = data.read_canonical_setup(setup_json)
     rows = data.read_canonical_pulloff(pulloff_csv)
     published = GentSchultzParameters(setup.w0, setup.n, setup.v0)
-    judged = Settings(confidence=settings["confidence"], stated_scatter=settings["relative_scatter"],
-                      alpha=settings["alpha"])
+    judged = Settings() if settings is None else Settings(
+        confidence=settings["confidence"], stated_scatter=settings["relative_scatter"], alpha=settings["alpha"])
     geometry = {"radius": setup.radius, "reduced_modulus": setup.reduced_modulus}
     fits: dict[str, dict[str, Any]] = {}
     for model in [*(name for name in names("fit") if name != "simulation"), "simulation"]:  # the cheaper first
