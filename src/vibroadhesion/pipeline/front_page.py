@@ -18,6 +18,7 @@ import pandas as pd
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import fit_report
 from vibroadhesion.pipeline.pages import (
+    VALIDATION_INDEX,
     VALIDATION_SUMMARY,
     build_paragraph,
     findings_of,
@@ -25,6 +26,7 @@ from vibroadhesion.pipeline.pages import (
     index_artefacts,
     write_index,
 )
+from vibroadhesion.pipeline.report import model_ratios
 from vibroadhesion.pipeline.tables import Column, show, significant
 
 AMPLIFICATION_COLUMNS = {
@@ -55,7 +57,7 @@ def amplification(virtual_csv: str | Path) -> pd.DataFrame:
     virtual = pd.read_csv(virtual_csv)
     out = []
     for fixation, rows in virtual.groupby("fixation", sort=False):
-        ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
+        ratio = model_ratios(rows)
         sim = rows[rows["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
         simulated = ratio["simulation"].where(sim["status"].reindex(ratio.index) == "pulloff")
         for name in [m for m in levels.names("virtual_pulloff") if m in ratio.columns]:
@@ -84,12 +86,14 @@ def _table(frame: pd.DataFrame, columns: Mapping[str, Column]) -> str:
     return show(frame, columns)._repr_html_()
 
 
-def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY) -> str:
+def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY,
+             validation_index: str | Path = VALIDATION_INDEX) -> str:
     """The HTML of the findings: build, measured rows, the fit, the amplification per level, the validity per level.
 
     ``artefacts`` are the papermill parameters of the index's pages (``fit_json``, ``virtual_csv``); the validity
     comes from ``validation_summary`` when it exists (the Snakefile's onsuccess reads it again at the end of a run:
-    :func:`refresh_findings`).
+    :func:`refresh_findings`), linked to ``validation_index`` where that exists; Fig. 4's page, in the same
+    directory, likewise.
     """
     parts = [build_paragraph()]
     if "fit_json" in artefacts:
@@ -101,24 +105,45 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
                   f"<code>data/pulloff.csv</code>; {used}.</p>",
                   _table(fit_report.figures_fit(fit).drop(columns="reason"), fit_report.ESTIMATE_COLUMNS)]
     if "virtual_csv" in artefacts:
-        parts += ["<h2>Pull-off amplification per model level against the SIMULATED pull-off "
-                  "(<a href=\"fig4.html\">Fig. 4</a>)</h2><p>P_cr/P_JKR over the test conditions (frequencies × "
+        fig4 = '<a href="fig4.html">Fig. 4</a>' if (Path(validation_index).parent / "fig4.html").exists() else "Fig. 4"
+        parts += [f"<h2>Pull-off amplification per model level against the SIMULATED pull-off ({fig4})</h2>"
+                  "<p>P_cr/P_JKR over the test conditions (frequencies × "
                   "amplitudes) of the virtual pull-off experiment, a simulation of the full model, not a measurement, "
                   "and each level's relative error against it.</p>",
-                  _table(amplification(artefacts["virtual_csv"]), AMPLIFICATION_COLUMNS)]
-    parts.append(_validity_part(Path(artefacts.get("summary_csv", validation_summary))))
+                  *_amplification_parts(amplification(artefacts["virtual_csv"]))]
+    if "summary_csv" in artefacts:  # the validation index itself: its own pages
+        parts.append(_validity_part(Path(artefacts["summary_csv"]), None))
+    else:
+        parts.append(_validity_part(Path(validation_summary), Path(validation_index)))
     return "\n".join(parts)
 
 
-def _validity_part(summary_csv: Path) -> str:
-    """The validity of each level at the published parameters, or how to build it (the validation ignores the fit)."""
+def _amplification_parts(table: pd.DataFrame) -> list[str]:
+    """The amplification table, after a sentence for each fixation whose simulation found no pull-off at all."""
+    simulated = table[table["level"].str.endswith("(SIMULATED)")]
+    none = [str(fixation) for fixation, points in zip(simulated["fixation"], simulated["points"], strict=True)
+            if points == 0]
+    notes = [f"<p class=\"stale\"><strong>No SIMULATED pull-off ({html.escape(fixation)} fixation)</strong> at this "
+             "parameter set: every family ended first (status on the Fig. 4 page), so no level is compared with "
+             "it.</p>" for fixation in none]
+    return [*notes, _table(table, AMPLIFICATION_COLUMNS)]
+
+
+def _validity_part(summary_csv: Path, validation_index: Path | None) -> str:
+    """The validity of each level at the published parameters, or how to build it (the validation ignores the fit).
+
+    On the figure index the validation pages are linked only where ``validation_index`` exists (a stopped validation
+    run may leave the summary without its pages); on the validation index itself (None) they are listed below.
+    """
     head = "<h2>Validity of each level against the simulation"
     if not summary_csv.exists():
         return (f"{head}</h2><p>Not built yet: run <code>snakemake -c2 validation</code> for the validation pages "
                 "(every level against the direct simulation).</p>")
     table = validity(summary_csv)
     best = table.loc[table["max_error_experiments_applicable"].idxmin()]
-    return (f"{head} (<a href=\"validation_index.html\">validation pages</a>)</h2><p>At the published parameters, "
+    pages = ("" if validation_index is None else '(<a href="validation_index.html">validation pages</a>)'
+             if validation_index.exists() else "(its pages not built: run <code>snakemake -c2 validation</code>)")
+    return (f"{head} {pages}</h2><p>At the published parameters, "
             "the largest relative errors of Ā, ā_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the periodic steady states "
             f"of the full model. The most accurate level at the test frequencies, {html.escape(best['level'])}, errs "
             f"by up to {significant(100 * best['max_error_experiments_applicable'], 2)} %.</p>"
