@@ -22,7 +22,7 @@ import nbformat
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import RADIUS, REDUCED_MODULUS
+from conftest import PLAUSIBLE_FIVE, RADIUS, REDUCED_MODULUS
 
 from vibroadhesion.experiments import virtual_pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
@@ -35,9 +35,6 @@ from vibroadhesion.pipeline.steps.plots import fig4_plot, fig7_plot
 
 ROOT = Path(__file__).resolve().parents[2]
 HEADER = "frequency_hz,h1_um,pulloff_mN,source"
-#: The five plausible rows of issue 26 whose full-model fit ends at w0 = 0.001 J/m^2 (the lower bound).
-PLAUSIBLE_FIVE = ("300,54.75,406.74,lab\n300,36.09,222.12,lab\n400,74.93,631.41,lab\n400,29.47,192.62,lab\n"
-                  "200,37.18,249.56,lab\n")
 #: name -> (the CSV's rows after the header, the rows the fit counts). Static rows: h1_um = 0, frequency empty or 0.
 CASES: dict[str, tuple[str, int]] = {
     "no_rows": ("", 0),
@@ -181,4 +178,4 @@ def test_fig4_says_at_how_many_test_conditions_the_simulation_found_no_pulloff(
     measured = pd.DataFrame({"frequency_hz": [], "h1_um": [], "pulloff_mN": [], "source": []})
     axes = figures.plot_fig4(table, measured, 57.27, pd.read_csv(virtual_at_absurd_parameters)).axes[0]
     assert ("SIMULATED pull-off: none at 1 of 1 test conditions\n(budget_exceeded at 1)"
-            in [t.get_text() for t in axes.texts])
+            in [t.get_text() for t in axes.get_legend().get_texts()])

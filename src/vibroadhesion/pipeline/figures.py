@@ -182,14 +182,17 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
 
 
 def _note_missing_simulation(ax: Axes, virtual: pd.DataFrame, drawn: int) -> None:
-    """Say on ``ax`` how many rigid test conditions of the virtual pull-off gave no pull-off, and why (statuses)."""
+    """Say in the legend of ``ax`` (beside the data) how many rigid test conditions have no simulated pull-off.
+
+    With why: the statuses of their families.
+    """
     rigid = virtual[(virtual["fixation"] == "rigid") & (virtual["model"] == "simulation")]
     if drawn == len(rigid):
         return
     missing = rigid[rigid["status"] != "pulloff"]["status"].value_counts(sort=False)
     why = ", ".join(f"{status} at {count}" for status, count in missing.items())
-    ax.text(0.97, 0.03, f"SIMULATED pull-off: none at {len(rigid) - drawn} of {len(rigid)} test conditions\n({why})",
-            transform=ax.transAxes, ha="right", va="bottom", fontsize=7, color="C3")
+    ax.plot([], [], " ", label=f"SIMULATED pull-off: none at {len(rigid) - drawn} of {len(rigid)} test conditions\n"
+                               f"({why})")
 
 
 def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, frequencies: Sequence[float]) -> None:

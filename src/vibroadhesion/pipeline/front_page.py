@@ -140,6 +140,9 @@ def _validity_part(summary_csv: Path, validation_index: Path | None) -> str:
         return (f"{head}</h2><p>Not built yet: run <code>snakemake -c2 validation</code> for the validation pages "
                 "(every level against the direct simulation).</p>")
     table = validity(summary_csv)
+    if table["max_error_experiments_applicable"].isna().all():
+        return (f"{head}</h2><p>No level was compared with the simulation at the test frequencies: the simulation "
+                "found no steady state there at the published parameters (validation page).</p>")
     best = table.loc[table["max_error_experiments_applicable"].idxmin()]
     pages = ("" if validation_index is None else '(<a href="validation_index.html">validation pages</a>)'
              if validation_index.exists() else "(its pages not built: run <code>snakemake -c2 validation</code>)")

@@ -125,9 +125,11 @@ def _criterion_remark(fixation: str, sim: pd.DataFrame) -> str:
     found = sim[sim["status"].isin(PULLOFF_FOUND)]
     if found.empty:
         counts = ", ".join(f"{status} at {count}" for status, count in sim["status"].value_counts(sort=False).items())
+        budget = ("; budget_exceeded: the withdrawal took its budget of steps (FAMILY_BUDGET of "
+                  "vibroadhesion.experiments.virtual_pulloff) first" if "budget_exceeded" in set(sim["status"]) else "")
         return (f"No SIMULATED pull-off ({fixation} fixation): every family ended without a tensile extremum of the "
-                f"mean force ({counts} of {len(sim)} test conditions; ``budget_exceeded``: the withdrawal took its "
-                "stated budget of steps first). The predictions have nothing to be compared with here.")
+                f"mean force ({counts} of {len(sim)} test conditions{budget}). The predictions have nothing to be "
+                "compared with here.")
     share = found["abar_m"] / found["abar_cr"]
     return (f"At the simulated pull-off ({fixation} fixation, {len(found)} of {len(sim)} test conditions) the mean "
             f"contact radius is {100 * share.min():.0f}–{100 * share.max():.0f} % of the JKR critical radius a_cr of "
