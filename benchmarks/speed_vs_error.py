@@ -98,7 +98,12 @@ def main(setup_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: 
                 [r["max_relative_error_vs_simulation"]] * 2, "-", color=f"C{k}", lw=2.0)
         ax.plot(r["seconds_per_point_median"], r["max_relative_error_vs_simulation"], MARKERS[entry.cost],
                 color=f"C{k}", ms=8, label=f"{entry.label} [{entry.cost}]")
-    ax.set(xscale="log", yscale="log",
+    errors = table.loc[table["model"] != "simulation", "max_relative_error_vs_simulation"]
+    compared = bool((errors > 0).any())  # NaN where the simulation has no steady state at any test condition
+    if not compared:
+        ax.text(0.5, 0.5, "no level compared: the simulation found no steady state\nat the test conditions",
+                transform=ax.transAxes, ha="center", va="center", color="0.35")
+    ax.set(xscale="log", yscale="log" if compared else "linear",
            xlabel=f"time per solved point (s): marker median, bar from the fastest of {REPEATS}",
            ylabel="largest relative error vs simulation", title="Speed against error at the test conditions")
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # beside the points

@@ -16,8 +16,8 @@ from vibroadhesion.pipeline.input_checks import schema_validator
 from vibroadhesion.pipeline import front_page
 from vibroadhesion.pipeline.data import ingest_setup
 from vibroadhesion.pipeline.front_page import refresh_findings
-from vibroadhesion.pipeline.pages import (FILE_TIME_MARGIN_NS, VALIDATION_SUMMARY, build, build_paragraph, findings_of,
-                                          findings_outdated, index_artefacts, write_index)
+from vibroadhesion.pipeline.pages import (FILE_TIME_MARGIN_NS, VALIDATION_INDEX, VALIDATION_SUMMARY, build,
+                                          build_paragraph, findings_of, findings_outdated, index_artefacts, write_index)
 
 VIRTUAL = """fixation,kappa,zeta,frequency_hz,h1_um,model,status,pulloff_ratio,pulloff_mN,abar_m,abar_cr,steady_states
 rigid,,,200,20,simulation,pulloff,3.0,171.8,1.0,1.2,14
@@ -86,7 +86,9 @@ def test_front_page_numbers_are_those_of_the_artefacts(tmp_path: Path) -> None:
     os.utime(summary, (os.stat(fit_json).st_mtime + 10,) * 2)  # validation newer than the fit: no warning
     out = tmp_path / "index.html"
     artefacts = {"fit_json": fit_json, "virtual_csv": tmp_path / "virtual.csv", "setup_json": _setup_json(tmp_path)}
-    write_index(out, findings=front_page.findings(artefacts, summary))
+    for page in ("validation_index", "fig4"):  # the pages its findings link, built
+        (tmp_path / f"{page}.html").write_text("page")
+    write_index(out, findings=front_page.findings(artefacts, summary, tmp_path / "validation_index.html"))
     text = out.read_text()
     assert "7 measured rows" in text and "0.236 [0.234, 0.239]" in text and "0.531 [0.31, 1.42]" in text
     assert "4.45e-05 (fixed: published)" in text and "2.69e-05" in text
@@ -107,8 +109,13 @@ def test_front_page_without_validation_says_how_to_build_it_and_with_it_links_it
     summary = tmp_path / "summary.csv"
     summary.write_text(SUMMARY)
     os.utime(summary, (os.stat(fit_json).st_mtime - 10,) * 2)
-    built = front_page.findings({"fit_json": fit_json, "setup_json": setup_json}, summary)
-    assert "validation_index.html" in built and "older than the fit" not in built
+    validation_index = tmp_path / "validation_index.html"
+    stopped = front_page.findings({"fit_json": fit_json, "setup_json": setup_json}, summary,
+                                  validation_index)  # a validation run stopped
+    assert "its pages not built" in stopped and "validation_index.html" not in stopped
+    validation_index.write_text("page")
+    built = front_page.findings({"fit_json": fit_json, "setup_json": setup_json}, summary, validation_index)
+    assert 'href="validation_index.html"' in built and "older than the fit" not in built
 
 
 def test_every_table_heading_names_its_parameter_set(tmp_path: Path) -> None:
@@ -122,8 +129,9 @@ def test_every_table_heading_names_its_parameter_set(tmp_path: Path) -> None:
     fitted = ("simulation fit of 7 measured rows, 95% intervals: w0 = 0.236 [0.234, 0.239] J/m², n = 0.531 [0.31, 1.42],"
               " v0 = 44.5 µm/s")
     published = "published parameters: w0 = 0.236 J/m², n = 0.531, v0 = 44.5 µm/s"
+    (tmp_path / "fig4.html").write_text("page")  # Fig. 4's page is linked where it exists
     index = front_page.findings({"fit_json": _fit_json(tmp_path), "setup_json": setup_json, "virtual_csv": virtual},
-                                summary)
+                                summary, tmp_path / "validation_index.html")
     headings = [part.split("</h2>")[0] for part in index.split("<h2>")[1:]]
     assert [h.endswith(f"the {fitted}") for h in headings] == [True, True, False]
     assert headings[2].endswith(f"at the {published}") and 'href="fig4.html"' in headings[1]
@@ -141,6 +149,7 @@ def test_build_names_the_commit_not_the_time(tmp_path: Path) -> None:
 
 def test_marking_stale_pages_keeps_the_findings_of_the_index(tmp_path: Path) -> None:
     out = tmp_path / "index.html"
+    (tmp_path / "fig4.html").write_text("page")
     write_index(out, findings="<p>finding 42</p>")
     write_index(out, stale=["fig4"])  # what refresh_indexes does after a run
     text = out.read_text()
@@ -170,9 +179,13 @@ def test_refresh_reads_the_findings_again_from_what_the_run_left(tmp_path: Path,
     VALIDATION_SUMMARY.parent.mkdir(parents=True)
     VALIDATION_SUMMARY.write_text(SUMMARY)
     assert refresh_findings({str(index): pages}) == [str(index)]
-    assert "validation_index.html" in findings_of(index)
+    assert "its pages not built" in findings_of(index) and "validation_index.html" not in findings_of(index)
+    VALIDATION_INDEX.parent.mkdir(parents=True)
+    VALIDATION_INDEX.write_text("page")
+    assert refresh_findings({str(index): pages}) == [str(index)]
+    assert 'href="validation_index.html"' in findings_of(index)
     assert refresh_findings({str(index): pages}) == []
-    for artefact in (*index_artefacts(pages).values(), VALIDATION_SUMMARY):  # written a second before the reading
+    for artefact in (*index_artefacts(pages).values(), VALIDATION_SUMMARY, VALIDATION_INDEX):  # a second before
         os.utime(artefact, ns=(time.time_ns() - 10**9, time.time_ns() - 10**9))
     assert refresh_findings({str(index): pages}) == []
     assert not findings_outdated(index, index_artefacts(pages).values())  # read again, the same: marked current

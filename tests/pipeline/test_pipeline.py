@@ -25,10 +25,11 @@ import nbformat
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import AMPLITUDES_UM, N_PUBLISHED, RADIUS, REDUCED_MODULUS, V0, W0
+from conftest import AMPLITUDES_UM, N_PUBLISHED, PLAUSIBLE_FIVE, RADIUS, REDUCED_MODULUS, V0, W0
 
 from vibroadhesion.experiments.figure_tables.fig4 import fig4_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
+from vibroadhesion.experiments.virtual_pulloff import FAMILY_BUDGET
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.figures import plot_fig4, save_figure
 from vibroadhesion.pipeline.imports import import_closure
@@ -212,11 +213,44 @@ def test_a_run_stopped_by_a_failed_page_marks_it_on_the_index_until_a_run_rebuil
     notebook.write_text(nbformat.writes(broken))
     assert _snakemake(work).returncode != 0
     index = (work / "results/report/index.html").read_text()
-    marked = {stem for stem, _ in PAGES if re.search(rf'href="{stem}\.html">[^<]*</a> <strong class="stale">', index)}
+    items = re.findall(r"<li>(.*?)</li>", index)
+    marked = {stem for stem, title in PAGES for item in items if title in item and "(not built)" in item}
     assert marked == set(REPORT_JOBS["report_pages"][1]), marked
+    assert not any(f'href="{stem}.html"' in index for stem in marked)  # no link to a page that is not there
     notebook.write_text(original)
     assert _snakemake(work).returncode == 0
     assert "out of date" not in (work / "results/report/index.html").read_text().lower()
+
+
+@pytest.mark.pipeline
+def test_the_worst_degenerate_data_set_runs_to_the_end_with_every_page_and_says_what_it_lacks(
+        pipeline_run: Path, tmp_path: Path) -> None:
+    """The five plausible rows of issue 26 (tests/pipeline/test_degenerate_data.py has the other data sets): their
+    full-model fit ended on the lower bound of w0, where the virtual pull-off found no pull-off at any test condition
+    (it walked 400 steps a family, over 20 minutes) and the index job failed on the missing simulated column. Now the
+    run ends with exit 0, every page of the default target rebuilt, each family within its step budget, and where a
+    family found no pull-off the pages say so."""
+    work = tmp_path / "work"
+    shutil.copytree(pipeline_run, work, symlinks=True)  # copy2: modification times kept, so the copy is up to date
+    pulloff = work / "data/pulloff.csv"
+    pulloff.write_text(pulloff.read_text() + PLAUSIBLE_FIVE)
+    out = _snakemake(work)
+    assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+    report = work / "results/report"
+    for page in ("index", *(stem for stem, _ in PAGES)):
+        assert (report / f"{page}.html").stat().st_size > 0, page
+    for page in ("index", "fig4", "fig7", "fit"):  # what shows the rows: rebuilt after the edit
+        assert (report / f"{page}.html").stat().st_mtime_ns > pulloff.stat().st_mtime_ns, page
+    assert "(not built)" not in (report / "index.html").read_text() and "out of date" not in (
+        report / "index.html").read_text().lower()
+    virtual = pd.read_csv(work / "results/simulation/fitted/virtual_pulloff_rigid.csv")
+    simulated = virtual[virtual["model"] == "simulation"]
+    assert len(simulated) == 15 and (simulated["steady_states"] <= FAMILY_BUDGET + 40).all()
+    assert set(simulated["status"]) <= {"pulloff", "budget_exceeded", "contact_loss_before_extremum",
+                                        "no_steady_state_before_extremum"}
+    if not (simulated["status"] == "pulloff").any():
+        assert "<strong>No SIMULATED pull-off (rigid fixation)</strong>" in (report / "index.html").read_text()
+        assert "No SIMULATED pull-off (rigid fixation)" in (report / "fig4.html").read_text()
 
 
 @pytest.mark.pipeline

@@ -12,6 +12,8 @@ from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES, refresh_indexe
 @pytest.mark.parametrize(("name", "pages", "other"), [("index", PAGES, VALIDATION_PAGES),
                                                       ("validation_index", VALIDATION_PAGES, PAGES)])
 def test_index_links_its_own_pages_only(tmp_path: Path, name, pages, other) -> None:
+    for stem, _ in PAGES + VALIDATION_PAGES:
+        (tmp_path / f"{stem}.html").write_text("page")
     out = tmp_path / f"{name}.html"
     write_index(out)
     text = out.read_text()
@@ -19,6 +21,17 @@ def test_index_links_its_own_pages_only(tmp_path: Path, name, pages, other) -> N
         assert text.count(f'<li><a href="{stem}.html">') == 1
     for stem, _ in other:
         assert f'<li><a href="{stem}.html">' not in text
+
+
+def test_index_lists_a_page_that_is_not_built_without_a_link(tmp_path: Path) -> None:
+    """A link to a missing page would lead nowhere: its title is marked "(not built)" instead."""
+    write_index(tmp_path / "validation_index.html")  # no index.html beside it yet: not linked
+    assert 'href="index.html"' not in (tmp_path / "validation_index.html").read_text()
+    (tmp_path / "fig3.html").write_text("page")
+    write_index(tmp_path / "index.html")
+    text = (tmp_path / "index.html").read_text()
+    assert '<a href="fig3.html">' in text and 'href="fig4.html"' not in text
+    assert f"<li>{PAGES[1][1]} <strong class=\"stale\">(not built)</strong></li>" in text
 
 
 def test_unknown_index_name_is_an_error(tmp_path: Path) -> None:
@@ -70,6 +83,25 @@ def test_refresh_marks_the_stale_pages_of_each_index_and_leaves_a_consistent_one
     assert "out of date" not in (report_dir / "validation_index.html").read_text().lower()
 
 
+def test_refresh_touches_only_the_indexes_asked_for_and_writes_a_missing_one_with_its_pages_marked(
+        tmp_path: Path) -> None:
+    """The end-of-run hooks of a `snakemake -c2 validation` run (asked: the validation index) leave index.html's bytes
+    and time as they were, though its page is stale; the validation index, removed with its failed job, is written
+    again with its pages marked and a statement instead of findings."""
+    report_dir = tmp_path / "report"
+    inputs = {"fig3": _page_with_inputs(tmp_path, "fig3", 2000, [3000]),
+              "validation": _page_with_inputs(tmp_path, "validation", 2000, [3000])}
+    write_index(report_dir / "index.html")
+    os.utime(report_dir / "index.html", (2500, 2500))
+    before = (report_dir / "index.html").read_bytes()
+    assert refresh_indexes(inputs, report_dir, ["validation_index"]) == ["validation"]
+    assert (report_dir / "index.html").read_bytes() == before and (report_dir / "index.html").stat().st_mtime == 2500
+    text = (report_dir / "validation_index.html").read_text()
+    assert "The run stopped before the job that writes this index finished" in text
+    assert '<a href="validation.html">' in text and text.count("(out of date)") == 1 and "(not built)" in text
+    assert 'href="index.html"' in text  # the figure pages' index exists beside it
+
+
 def test_virtual_pulloff_tables_give_one_table_per_fixation_with_errors_against_the_simulation(tmp_path: Path) -> None:
     """Hand-made rows: errors are prediction / simulation - 1, shares a_m/a_cr of the simulated rows."""
     rows = [
@@ -103,6 +135,8 @@ def test_rule_timings_give_wall_and_cpu_time_and_peak_memory_of_each_rule(tmp_pa
 def test_index_shows_each_page_figure_as_a_thumbnail_linking_to_the_page(tmp_path: Path) -> None:
     """The run's figure of each page (relative to results/report/), inside a link to that page; the fit page, which
     has none, by its title only."""
+    for stem, _ in PAGES + VALIDATION_PAGES:
+        (tmp_path / f"{stem}.html").write_text("page")
     out = tmp_path / "index.html"
     write_index(out)
     text = out.read_text()

@@ -111,13 +111,15 @@ def release_scheduler_timers():
 
 
 def refresh_report():
-    """The Snakefile's onsuccess and onerror: the indexes' findings read again from the artefacts the run left, where
-    one of them is newer than its index or the build changed (pipeline.pages.findings_outdated, standard library only;
-    pipeline.front_page.refresh_findings imports pandas and the refined model, about a second, only then), then the
-    pages missing or older than an artefact they show marked on them (pipeline.pages.refresh_indexes) and printed."""
+    """The Snakefile's onsuccess and onerror, on the indexes of the run's targets only (report.smk ASKED_REPORT_JOBS):
+    their findings read again from the artefacts the run left, where one of them is newer than the index or the build
+    changed (pipeline.pages.findings_outdated, standard library only; pipeline.front_page.refresh_findings imports
+    pandas and the refined model, about a second, only then), then the pages missing or older than an artefact they
+    show marked on them (pipeline.pages.refresh_indexes) and printed."""
+    asked = [REPORT_JOBS[job] for job in sorted(ASKED_REPORT_JOBS)]
     indexes = {
         f"results/report/{index}.html": {stem: page_parameters(stem) for stem in pages}
-        for index, pages in REPORT_JOBS.values()
+        for index, pages in asked
         if index
     }
     outdated = {index: pages for index, pages in indexes.items() if findings_outdated(index, findings_inputs(pages))}
@@ -125,6 +127,7 @@ def refresh_report():
         from vibroadhesion.pipeline.front_page import refresh_findings
 
         refresh_findings(outdated)
-    stale = refresh_indexes({page: list(inputs.values()) for page, inputs in PAGE_INPUTS.items()}, "results/report")
+    pages = {page: list(inputs.values()) for page, inputs in PAGE_INPUTS.items()}
+    stale = refresh_indexes(pages, "results/report", [index for index, _ in asked if index])
     if stale:
         print(f"report: out of date, marked on the index: {', '.join(stale)}", file=sys.stderr)

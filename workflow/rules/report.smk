@@ -1,4 +1,6 @@
 # Report: each page is a notebook executed by papermill and exported to HTML by nbconvert.
+from functools import partial
+
 from vibroadhesion.pipeline.pages import REPORT_JOBS
 
 # The benchmarks page also lists the wall time of the timed jobs of the default target (`benchmark:`).
@@ -101,6 +103,18 @@ def report_inputs(pages):
     return {**inputs, "notebooks": notebooks, "code": code("report", *notebooks) + [template]}
 
 
+# The report jobs in this run's DAG, i.e. asked for by its targets: Snakemake evaluates a job's input function only
+# while it builds the DAG of the requested targets, so the end-of-run hooks (common.smk refresh_report) touch the
+# indexes of these jobs only, never an output of a target that was not asked for.
+ASKED_REPORT_JOBS = set()
+
+
+def asked_report_inputs(job, wildcards):
+    """Input function of report job ``job``: its inputs (report_inputs), and the job noted in ASKED_REPORT_JOBS."""
+    ASKED_REPORT_JOBS.add(job)
+    return report_inputs(REPORT_JOBS[job][1])
+
+
 # The pages of Figs. 3, 5, 6 and 8 need only the paper's figures, drawn early: rendered as soon as they are (with the
 # gathers), they leave the end of the run to the two index jobs, which wait for the last artefacts; of those, the
 # validation index (five pages, the longest) starts first.
@@ -116,7 +130,7 @@ for job, (index, pages) in REPORT_JOBS.items():
         name:
             job
         input:
-            **report_inputs(pages),
+            unpack(partial(asked_report_inputs, job)),
         output:
             notebooks=[f"results/report/notebooks/{stem}.ipynb" for stem in pages],
             pages=[

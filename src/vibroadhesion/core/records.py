@@ -30,7 +30,7 @@ FloatArray = NDArray[np.float64]
 SteadyStatus = Literal["ok", "no_solution", "contact_loss", "not_converged", "integration_failure",
                        "speed_unresolved"]
 PulloffStatus = Literal["ok", "pulloff", "no_solution", "contact_loss_before_extremum",
-                        "no_steady_state_before_extremum"]
+                        "no_steady_state_before_extremum", "budget_exceeded"]
 #: Statuses of a withdrawal at a finite speed, in time (simulation.withdrawal) or by the slow flow (models.slow_flow).
 WithdrawalStatus = Literal["pulloff", "detached_before_mean_extremum", "not_detached", "integration_failure"]
 

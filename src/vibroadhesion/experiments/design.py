@@ -135,14 +135,16 @@ def design_table(current: pd.DataFrame, candidates: pd.DataFrame, added: Sequenc
     ``current``: the rig's sensitivity rows (rows without a derivative are left out, as in
     :func:`~vibroadhesion.experiments.identifiability.information_table`); ``candidates``: the table of
     :func:`candidate_table`; ``added``: how many tests to add (e.g. 1, 2, 3). One row per design and
-    relative scatter sigma, standard errors sigma sqrt(diag((S^T S)^-1)) (Cramer-Rao).
+    relative scatter sigma, standard errors sigma sqrt(diag((S^T S)^-1)) (Cramer-Rao). An augmentation by more tests
+    than there are usable candidates (where few simulated families found a pull-off) has no row.
     """
     s = current[_S_COLUMNS].to_numpy(float)
     s = s[np.all(np.isfinite(s), axis=1)]
     usable = candidates[candidates["usable"]].reset_index(drop=True)
     pool = usable[_S_COLUMNS].to_numpy(float)
     designs = [("current", usable.iloc[[]])]
-    designs += [(f"current + {k} test{'s' if k > 1 else ''}", usable.iloc[d_optimal(s, pool, k)]) for k in added]
+    designs += [(f"current + {k} test{'s' if k > 1 else ''}", usable.iloc[d_optimal(s, pool, k)]) for k in added
+                if k <= len(pool)]  # more tests than usable candidates (no simulated pull-off among them): none
     rows = []
     for name, tests in designs:
         matrix = np.vstack([s, tests[_S_COLUMNS].to_numpy(float)])

@@ -237,9 +237,10 @@ def figures_choice(fits: dict[str, dict[str, Any]], preferred: str) -> tuple[str
     """
     if all(fit["status"] == "published" for fit in fits.values()):
         return "published", "no measured rows"
-    if fits[preferred]["status"] == "fitted":
+    status = fits[preferred]["status"] if preferred in fits else "not run"
+    if status == "fitted":
         return preferred, f"the {preferred} fit determines every parameter it fits"
-    why = f"the {preferred} fit is {_STATUS_PHRASES.get(fits[preferred]['status'], fits[preferred]['status'])}"
+    why = f"the {preferred} fit is {_STATUS_PHRASES.get(status, status)}"
     for level in (name for name in FIDELITY if name in fits and name != preferred):
         if fits[level]["status"] == "fitted":
             return level, f"{why}; {level} is the most faithful level whose fit is determined"

@@ -56,13 +56,16 @@ def fit_level(rows: pd.DataFrame, model: str, truth: GentSchultzParameters, *, r
               reduced_modulus: float) -> dict[str, Any]:
     """One row of the fits table: the pipeline's fit of ``model`` started from the true parameters.
 
-    ``*_relative_bias`` is estimate/true - 1; a fit that fails (:class:`FitError`) is a row with status
-    ``failed`` and the reason, never numbers.
+    ``*_relative_bias`` is estimate/true - 1; a fit that fails (:class:`FitError`), or that fits nothing (its summary
+    has no free parameters: e.g. no simulated row has a pull-off), is a row with its status and the reason, never
+    numbers.
     """
     try:
         summary = fit_gent_schultz(rows, model, truth, radius=radius, reduced_modulus=reduced_modulus)
     except FitError as exc:
         return {"model": model, "status": "failed", "note": str(exc)}
+    if "free_parameters" not in summary:
+        return {"model": model, "status": summary["status"], "note": summary["note"]}
     row: dict[str, Any] = {"model": model, "status": summary["status"]}
     for name in PARAMETERS:
         entry = summary["parameters"][name]

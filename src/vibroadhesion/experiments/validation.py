@@ -115,7 +115,8 @@ def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float])
     """Largest relative error of each level, inside and outside the applicability region.
 
     Over the whole grid and at the experiments' frequencies, and the share of points below
-    TRUSTED_ERROR.
+    TRUSTED_ERROR. No row where no level was compared (the simulation found no steady state on the grid); the
+    columns are there all the same.
     """
     rows = []
     for model, e in errors.groupby("model", sort=False):
@@ -130,7 +131,12 @@ def error_summary(errors: pd.DataFrame, experiment_omega_check: Sequence[float])
             "points": len(worst),
             "points_below_5pct": int((worst["relative_error"] < TRUSTED_ERROR).sum()),
         })
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows, columns=SUMMARY_COLUMNS)
+
+
+#: Columns of :func:`error_summary` (results/validation/rigid_error_summary.csv).
+SUMMARY_COLUMNS = ["model", "max_error_applicable", "max_error_outside", "max_error_experiments_applicable",
+                   "max_error_experiments_outside", "points", "points_below_5pct"]
 
 
 # --- Compliant fixation: the Fig. 5 sweep, up and down in frequency ----------------------------

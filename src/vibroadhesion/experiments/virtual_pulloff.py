@@ -57,7 +57,9 @@ If the family ends (the simulation loses contact, or no steady state is found wi
 step) while P_m is still growing more tensile, there is no extremum to report: the status says so
 and no number is returned. Where the shooting just fails to converge beyond the last orbit, the
 transient from that orbit at the failed base_offset tells why: ``contact_loss_before_extremum`` if it
-loses contact within END_TRANSIENT_PERIODS periods, ``no_steady_state_before_extremum`` otherwise.
+loses contact within END_TRANSIENT_PERIODS periods, ``no_steady_state_before_extremum`` otherwise. A family
+that takes ``max_steps`` withdrawal steps without either ends as ``budget_exceeded`` (the virtual pull-off table
+allows FAMILY_BUDGET).
 (Example: the compliant family kappa = 0.001, omega_bar = 17.85, h1 = 20 um at omega_check = 1e4 ends at
 base_offset = -26.146 with P_m still decreasing; its last orbit's Floquet multipliers, |lambda| <= 0.97,
 show no fold, and the transient from it at -26.15 loses contact after 60 periods.) The paper's
@@ -102,9 +104,23 @@ from vibroadhesion.numerics.progress import ProgressBar
 END_TRANSIENT_PERIODS = 200
 
 
+#: Withdrawal steps (orbits along the family, failed ones included) that a family of the virtual pull-off table
+#: (:func:`pulloff_table`) may take before it ends as ``budget_exceeded``. At the published parameters the rigid
+#: families take 14-28 steps and the compliant ones 25-52 (results/simulation/published/, column steady_states, which
+#: also counts the extremum's refinement), so 120 leaves twice the largest; a family at parameters far from any data
+#: (e.g. w0 = 0.001 J/m^2, n = 0.98 at h1 = 100 um: a preloaded start at base_offset = etahat = 282, 0.2 per step
+#: from the nominal contact) would otherwise walk its 400 default steps at up to 0.2 s each, for each of the 15 tests.
+FAMILY_BUDGET = 120
+
+
 def _ended(failure: str, solved: int) -> Pulloff:
-    """The record of a family without a force extremum: why it ended, every number NaN."""
+    """The record of a family without a force extremum: why it ended, every number NaN.
+
+    ``failure``: ``contact_loss``, ``budget_exceeded`` (its steps spent while P_m still grew more tensile: no
+    statement about a steady state beyond) or a failed shooting (``no_steady_state_before_extremum``).
+    """
     status: PulloffStatus = ("contact_loss_before_extremum" if failure == "contact_loss"
+                             else "budget_exceeded" if failure == "budget_exceeded"
                              else "no_steady_state_before_extremum")
     nan = np.asarray(math.nan)
     return Pulloff("simulation", np.asarray(status), *(nan,) * 8, steady_states=solved)
@@ -180,6 +196,7 @@ def traced_family(problem: Problem, *, warm: tuple[float, np.ndarray] | None = N
     families computed here; beyond the fold the shooting cannot converge, and the cap keeps those
     attempts cheap); the first, from the static state, the default of :func:`simulation.steady_state`.
     The extremum is located to 1e-4 step in base_offset, so the force to ~1e-8 relative (it is flat there).
+    After ``max_steps`` withdrawal steps without an extremum or an end the record is ``budget_exceeded``.
     """
     fixation = problem.fixation
     sigma = 0.0 if fixation.is_rigid else contact_radius_ratio(problem.chi0) / fixation.kappa
@@ -209,7 +226,7 @@ def traced_family(problem: Problem, *, warm: tuple[float, np.ndarray] | None = N
         d0, state = _next_offset(family, failure, step, sigma, halvings)
         orbit_k = run.orbit(d0, state)
     else:
-        return _ended("not_converged", run.solved), min(family, key=_phat)
+        return _ended("budget_exceeded", run.solved), min(family, key=_phat)
     d_best = run.most_tensile(family[-3:], step)
     return _pulloff_record(run.cache[d_best], d_best, run.solved), (d_best, run.cache[d_best])
 
@@ -393,7 +410,8 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
 
     The simulated (virtual) experiment and, unless ``predictions`` is false, the predictions of the
     module docstring, for the rigid (the default) or the compliant fixation. ``progress`` advances
-    once per amplitude with the steady states solved for it.
+    once per amplitude with the steady states solved for it. Each family takes at most :data:`FAMILY_BUDGET`
+    withdrawal steps (status ``budget_exceeded`` beyond).
     """
     law = GentSchultz(params.n)
     chi0 = groups.chi0(params.w0, reduced_modulus, radius)
@@ -402,7 +420,7 @@ def pulloff_table(params: GentSchultzParameters, frequency_hz: float, h1_um: np.
     eta1 = h1_um * 1e-6 / radius
     rows = []
     for h1, e in zip(h1_um, eta1, strict=True):
-        result = simulated_pulloff(Problem(law, chi0, float(e), omega_check, fixation))
+        result = simulated_pulloff(Problem(law, chi0, float(e), omega_check, fixation), max_steps=FAMILY_BUDGET)
         rows += _record_rows(result, np.asarray([h1]))
         if progress is not None:
             progress.advance(result.steady_states or 0, f"{frequency_hz:g} Hz, h1 = {h1:g} um: {result.status}, "

@@ -45,7 +45,11 @@ def plot_speed_sweep(sweep: pd.DataFrame) -> Figure:
             ax.plot(slow["V_over_v0"], slow["mean_pulloff_ratio"], ":", color=color, lw=0.8, marker="+", ms=5)
             v_min = float(test.dropna(subset=["mean_pulloff_ratio"])["V_over_v0"].min())  # skipped speeds: no point
             ax.plot([v_min / 4.0, v_min], [timed["quasi_static_ratio"].iloc[0]] * 2, "--", color=color, lw=1.5)
-        ax.set(xscale="log", yscale="log", xlabel=r"withdrawal speed $V/v_0$",
+        drawn = bool((rows["mean_pulloff_ratio"] > 0).any())  # none where every withdrawal ended without one
+        if not drawn:
+            ax.text(0.5, 0.5, "no simulated pull-off at any speed", transform=ax.transAxes, ha="center",
+                    va="center", color="0.35")
+        ax.set(xscale="log", yscale="log" if drawn else "linear", xlabel=r"withdrawal speed $V/v_0$",
                ylabel=r"pull-off $P/|P_{JKR}|$ (period mean)", title=f"{fixation} fixation")
     legend_below(fig, axes[0], fontsize=6.5, ncols=5, title="solid, o s ^: time domain (SIMULATED); dotted, +: "
                  "averaged slow flow (rigid only); dashed: quasi-static (V → 0, simulated); open: detached before "

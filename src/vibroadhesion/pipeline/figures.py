@@ -170,6 +170,7 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
         for k, (f, rows) in enumerate(sim.groupby("frequency_hz", sort=True)):
             ax.plot(rows["h1_um"], rows["pulloff_ratio"], "x+*"[k % 3], color=f"C{k}", ms=7,
                     label=f"SIMULATED pull-off, rigid fixation, {f:g} Hz")
+        _note_missing_simulation(ax, virtual, len(sim))
     _plot_measured(ax, measurements, jkr_pulloff_mN, "h1_um", "frequency_hz", sorted(refined["frequency_hz"].unique()))
     if measurements.empty:
         ax.text(0.03, 0.97, "no measured rows in data/pulloff.csv\n(published fit shown)", transform=ax.transAxes,
@@ -178,6 +179,20 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     _legend_outside_applicability(ax, refined["A_over_am"])
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data, not on it
     return fig
+
+
+def _note_missing_simulation(ax: Axes, virtual: pd.DataFrame, drawn: int) -> None:
+    """Say in the legend of ``ax`` (beside the data) how many rigid test conditions have no simulated pull-off.
+
+    With why: the statuses of their families.
+    """
+    rigid = virtual[(virtual["fixation"] == "rigid") & (virtual["model"] == "simulation")]
+    if drawn == len(rigid):
+        return
+    missing = rigid[rigid["status"] != "pulloff"]["status"].value_counts(sort=False)
+    why = ", ".join(f"{status} at {count}" for status, count in missing.items())
+    ax.plot([], [], " ", label=f"SIMULATED pull-off: none at {len(rigid) - drawn} of {len(rigid)} test conditions\n"
+                               f"({why})")
 
 
 def _plot_measured(ax: Axes, measurements: pd.DataFrame, jkr_pulloff_mN: float, x: str, by: str,
@@ -426,11 +441,17 @@ def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:
     ``predictions`` has columns level, measured_mN, predicted_mN (:func:`vibroadhesion.pipeline.fit_report.
     long_predictions`); each level's prediction is |P_cr| of its own fit (Eq. 71 or the simulated pull-off). With
     a ``range`` column, the rows outside the asymptotic levels' range (not ``inside``) are crossed in red and
-    labelled once with why (e.g. ``A/a_m = 0.23 > 0.1``).
+    labelled once with why (e.g. ``A/a_m = 0.23 > 0.1``). Without any prediction (no level fitted the rows: one or
+    two rows for three parameters) the axes say so instead.
     """
     fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
-    values = pd.concat([predictions["measured_mN"], predictions["predicted_mN"]])
-    span = (0.0, 1.05 * float(values.max()))
+    values = pd.to_numeric(pd.concat([predictions["measured_mN"], predictions["predicted_mN"]]), errors="coerce")
+    if not np.isfinite(values).any():
+        ax.text(0.5, 0.5, "no model level fitted these rows:\nno prediction to compare with", ha="center",
+                va="center", transform=ax.transAxes, color="0.35")
+        ax.set(xticks=[], yticks=[], xlabel="measured |P_cr| (mN)", ylabel="predicted |P_cr| (mN)")
+        return fig
+    span = (0.0, 1.05 * float(values[np.isfinite(values)].max()))
     ax.plot(span, span, "-", color="0.6", lw=1.0, label="1:1 (predicted = measured)")
     for k, (level, rows) in enumerate(predictions.groupby("level", sort=False)):
         ax.plot(rows["measured_mN"], rows["predicted_mN"], "os^Dv<>p"[k % 8], mfc="none", color=f"C{k}", ms=6,

@@ -19,6 +19,7 @@ import pandas as pd
 from vibroadhesion.core import levels
 from vibroadhesion.pipeline import fit_report
 from vibroadhesion.pipeline.pages import (
+    VALIDATION_INDEX,
     VALIDATION_SUMMARY,
     build_paragraph,
     findings_of,
@@ -26,6 +27,7 @@ from vibroadhesion.pipeline.pages import (
     index_artefacts,
     write_index,
 )
+from vibroadhesion.pipeline.report import model_ratios
 from vibroadhesion.pipeline.steps.inputs import parameter_label
 from vibroadhesion.pipeline.tables import Column, show, significant
 
@@ -57,7 +59,7 @@ def amplification(virtual_csv: str | Path) -> pd.DataFrame:
     virtual = pd.read_csv(virtual_csv)
     out = []
     for fixation, rows in virtual.groupby("fixation", sort=False):
-        ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
+        ratio = model_ratios(rows)
         sim = rows[rows["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
         simulated = ratio["simulation"].where(sim["status"].reindex(ratio.index) == "pulloff")
         for name in [m for m in levels.names("virtual_pulloff") if m in ratio.columns]:
@@ -101,14 +103,16 @@ def fit_lead(fit: dict[str, Any]) -> str:
             "<a href=\"fit.html\">fit page</a>.</p>")
 
 
-def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY) -> str:
+def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path = VALIDATION_SUMMARY,
+             validation_index: str | Path = VALIDATION_INDEX) -> str:
     """The HTML of the findings: build, measured rows, the fit, the amplification per level, the validity per level.
 
     ``artefacts`` are the papermill parameters of the index's pages (``setup_json``, ``fit_json``, ``virtual_csv``);
     the validity comes from ``validation_summary`` when it exists (the Snakefile's onsuccess reads it again at the end
-    of a run: :func:`refresh_findings`). Each table's heading names its parameter set (:func:`parameter_label`): the
-    fit and the SIMULATED pull-off of the figure index are at the set the figures use (with ``fit_json``; the
-    validation index: the published set), the validity always at the published set.
+    of a run: :func:`refresh_findings`), linked to ``validation_index`` where that exists; Fig. 4's page, in the same
+    directory, likewise. Each table's heading names its parameter set (:func:`parameter_label`): the fit and the
+    SIMULATED pull-off of the figure index are at the set the figures use (with ``fit_json``; the validation index:
+    the published set), the validity always at the published set.
     """
     parts = [build_paragraph()]
     setup_json, fit_json = artefacts["setup_json"], artefacts.get("fit_json")
@@ -122,30 +126,52 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
                   f"{fit['data_rows']} measured rows in <code>data/pulloff.csv</code>; {used}.</p>",
                   _table(fit_report.figures_fit(fit).drop(columns="reason"), fit_report.ESTIMATE_COLUMNS)]
     if "virtual_csv" in artefacts:
-        page = '<a href="fig4.html">Fig. 4</a>' if fit_json else '<a href="validation.html">validation page</a>'
+        fig4 = '<a href="fig4.html">Fig. 4</a>' if (Path(validation_index).parent / "fig4.html").exists() else "Fig. 4"
+        page = fig4 if fit_json else '<a href="validation.html">validation page</a>'
         parts += [f"<h2>Pull-off amplification per model level against the SIMULATED pull-off ({page}) at the "
                   f"{used_set}</h2><p>P_cr/P_JKR over the test conditions (frequencies × amplitudes) of the virtual "
                   "pull-off experiment, a simulation of the full model, not a measurement, and each level's relative "
                   "error against it.</p>",
-                  _table(amplification(artefacts["virtual_csv"]), AMPLIFICATION_COLUMNS)]
+                  *_amplification_parts(amplification(artefacts["virtual_csv"]))]
     published_set = html.escape(parameter_label(setup_json, math=False))
-    parts.append(_validity_part(Path(artefacts.get("summary_csv", validation_summary)), published_set))
+    if "summary_csv" in artefacts:  # the validation index itself: its own pages
+        parts.append(_validity_part(Path(artefacts["summary_csv"]), None, published_set))
+    else:
+        parts.append(_validity_part(Path(validation_summary), Path(validation_index), published_set))
     return "\n".join(parts)
 
 
-def _validity_part(summary_csv: Path, published_set: str) -> str:
+def _amplification_parts(table: pd.DataFrame) -> list[str]:
+    """The amplification table, after a sentence for each fixation whose simulation found no pull-off at all."""
+    simulated = table[table["level"].str.endswith("(SIMULATED)")]
+    none = [str(fixation) for fixation, points in zip(simulated["fixation"], simulated["points"], strict=True)
+            if points == 0]
+    notes = [f"<p class=\"stale\"><strong>No SIMULATED pull-off ({html.escape(fixation)} fixation)</strong> at this "
+             "parameter set: every family ended first (status on the Fig. 4 page), so no level is compared with "
+             "it.</p>" for fixation in none]
+    return [*notes, _table(table, AMPLIFICATION_COLUMNS)]
+
+
+def _validity_part(summary_csv: Path, validation_index: Path | None, published_set: str) -> str:
     """The validity of each level at the published parameters (named by ``published_set``), or how to build it.
 
-    The validation ignores the fit: its heading names the published set whatever the figures use.
+    The validation ignores the fit: its heading names the published set whatever the figures use. On the figure
+    index the validation pages are linked only where ``validation_index`` exists (a stopped validation run may leave
+    the summary without its pages); on the validation index itself (None) they are listed below.
     """
     head = "<h2>Validity of each level against the simulation"
     if not summary_csv.exists():
         return (f"{head}</h2><p>Not built yet: run <code>snakemake -c2 validation</code> for the validation pages "
                 "(every level against the direct simulation).</p>")
     table = validity(summary_csv)
+    if table["max_error_experiments_applicable"].isna().all():
+        return (f"{head} at the {published_set}</h2><p>No level was compared with the simulation at the test "
+                "frequencies: the simulation found no steady state there at the published parameters (validation "
+                "page).</p>")
     best = table.loc[table["max_error_experiments_applicable"].idxmin()]
-    return (f"{head} (<a href=\"validation_index.html\">validation pages</a>) at the {published_set}</h2><p>"
-            "At the published parameters, "
+    pages = ("" if validation_index is None else '(<a href="validation_index.html">validation pages</a>) '
+             if validation_index.exists() else "(its pages not built: run <code>snakemake -c2 validation</code>) ")
+    return (f"{head} {pages}at the {published_set}</h2><p>At the published parameters, "
             "the largest relative errors of Ā, ā_m, w_eff/w0, A/a_m and P_m/|P_JKR| against the periodic steady states "
             f"of the full model. The most accurate level at the test frequencies, {html.escape(best['level'])}, errs "
             f"by up to {significant(100 * best['max_error_experiments_applicable'], 2)} %.</p>"

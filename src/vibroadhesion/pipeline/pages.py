@@ -19,6 +19,8 @@ from vibroadhesion.pipeline.atomic import atomic_path
 
 #: The validation's error summary: read when present (the default target does not build it and must not wait).
 VALIDATION_SUMMARY = Path("results/validation/rigid_error_summary.csv")
+#: The validation index, which the figure index links only where it exists (its findings, front_page).
+VALIDATION_INDEX = Path("results/report/validation_index.html")
 #: How far before the findings read their artefacts an index's time is set (:func:`write_index`): more than the
 #: granularity of file times (the kernel's coarse clock, a few ms), so that an artefact written while they are read
 #: is newer than the index. Far less than a report job's pages take before its index, so the index stays newer
@@ -94,7 +96,7 @@ _INDEX_TEXT = {
         """<p>Built by <code>snakemake -c2 validation</code>.
   Every number on these pages that is not a model prediction is SIMULATED (periodic steady states of the
   full nonlinear model, <code>vibroadhesion.simulation</code>); none is a measurement.
-  <a href="index.html">Figure pages</a>.</p>"""),
+  {figure_pages}</p>"""),
 }
 
 
@@ -110,10 +112,9 @@ def write_index(out: str | Path, stale: Collection[str] = (), findings: str | No
     time, less :data:`FILE_TIME_MARGIN_NS`: an artefact written after the findings started to read is newer than the
     index, and :func:`findings_outdated` says so.
     """
-    stem = Path(out).stem
-    if stem not in _INDEX_TEXT:
+    if Path(out).stem not in _INDEX_TEXT:
         raise ValueError(f"unknown index {out}: expected index.html or validation_index.html")
-    text = _index_html(stem, stale, findings_of(out) if findings is None else findings)
+    text = _index_html(Path(out), stale, findings_of(out) if findings is None else findings)
     with atomic_path(out) as tmp:
         tmp.write_text(text, encoding="utf-8")
     if as_of_ns is not None:
@@ -158,12 +159,19 @@ def findings_of(index: str | Path) -> str:
     return text[start + len(_FINDINGS[0]):end] if 0 <= start < end else ""
 
 
-def _index_html(stem: str, stale: Collection[str], findings: str) -> str:
-    """The text of the index ``stem`` (:func:`write_index`)."""
+def _index_html(out: Path, stale: Collection[str], findings: str) -> str:
+    """The text of the index ``out`` (:func:`write_index`).
+
+    Only pages that exist next to it are linked (:func:`_page_item`); the figure pages' index from the validation
+    index only where it exists too.
+    """
+    stem = out.stem
     subtitle, preamble = _INDEX_TEXT[stem]
     pages = PAGES if stem == "index" else VALIDATION_PAGES
-    items = "\n".join(f'    <li>{_thumbnail(name)}<a href="{html.escape(name)}.html">{html.escape(title)}</a>'
-                      f'{_STALE_MARK if name in stale else ""}</li>' for name, title in pages)
+    figure_pages = ('<a href="index.html">Figure pages</a>.' if (out.parent / "index.html").exists() else
+                    "The figure pages (<code>index.html</code>) are built by <code>snakemake -c2</code>.")
+    preamble = preamble.replace("{figure_pages}", figure_pages)
+    items = "\n".join(_page_item(out.parent, name, title, name in stale) for name, title in pages)
     warning = ""
     if any(name in stale for name, _ in pages):
         target = "snakemake -c2" if stem == "index" else "snakemake -c2 validation"
@@ -201,6 +209,22 @@ ul.pages img {{ display: block; box-sizing: border-box; width: 100%; height: 10e
 
 
 _STALE_MARK = ' <strong class="stale">(out of date)</strong>'
+#: The findings of an index written after its own report job failed (:func:`refresh_indexes`).
+_JOB_FAILED = ('<p class="stale"><strong>The run stopped before the job that writes this index finished</strong> (a '
+               "failed job, its log in <code>results/logs/</code>, or an interruption), so no findings are shown: the "
+               "pages below are what the runs so far left.</p>")
+_MISSING_MARK = ' <strong class="stale">(not built)</strong>'
+
+
+def _page_item(report_dir: Path, name: str, title: str, stale: bool) -> str:
+    """The list item of page ``name`` on its index: linked (with its thumbnail) where it exists in ``report_dir``.
+
+    Else its title, marked as not built: a link to a missing page would lead nowhere.
+    """
+    if not (report_dir / f"{name}.html").exists():
+        return f"    <li>{html.escape(title)}{_MISSING_MARK}</li>"
+    return (f'    <li>{_thumbnail(name)}<a href="{html.escape(name)}.html">{html.escape(title)}</a>'
+            f'{_STALE_MARK if stale else ""}</li>')
 
 
 def _thumbnail(name: str) -> str:
@@ -226,20 +250,23 @@ def stale_pages(page_inputs: Mapping[str, Iterable[str | Path]], report_dir: str
     return stale
 
 
-def refresh_indexes(page_inputs: Mapping[str, Iterable[str | Path]], report_dir: str | Path) -> list[str]:
+def refresh_indexes(page_inputs: Mapping[str, Iterable[str | Path]], report_dir: str | Path,
+                    asked: Collection[str] = tuple(_INDEX_TEXT)) -> list[str]:
     """After every run, finished or failed (the Snakefile's ``onsuccess`` and ``onerror``), mark stale pages.
 
-    Each index of ``report_dir`` that exists is rewritten only when its text changes, so a consistent report keeps
-    its bytes and times. Returns the stale pages (:func:`stale_pages`) that an existing index lists.
+    Only the indexes named in ``asked`` (stems: those of the run's targets) are touched: an index of a target that
+    was not asked for keeps its bytes, whatever the run did. Each asked index of ``report_dir`` that exists is
+    rewritten only when its text changes, so a consistent report keeps its bytes and times; one that is missing (its
+    job failed, and Snakemake removed its outputs) is written with its pages marked and no findings, so that
+    results/report/ still says what it holds. Returns the stale pages (:func:`stale_pages`) that an asked index lists.
     """
     stale, marked = stale_pages(page_inputs, report_dir), []
-    for stem in _INDEX_TEXT:
+    for stem in (stem for stem in _INDEX_TEXT if stem in asked):
         index = Path(report_dir) / f"{stem}.html"
-        if not index.exists():
-            continue
         marked += [name for name, _ in (PAGES if stem == "index" else VALIDATION_PAGES) if name in stale]
-        if index.read_text(encoding="utf-8") != _index_html(stem, stale, findings_of(index)):
-            write_index(index, stale)
+        if not index.exists() or index.read_text(encoding="utf-8") != _index_html(index, stale, findings_of(index)):
+            index.parent.mkdir(parents=True, exist_ok=True)
+            write_index(index, stale, None if index.exists() else _JOB_FAILED)
     return marked
 
 
@@ -268,9 +295,10 @@ def build_paragraph(repository: str | Path = ".") -> str:
 def findings_inputs(parameters: Mapping[str, Mapping[str, str]]) -> list[str | Path]:
     """Every file the findings of an index may read (:func:`vibroadhesion.pipeline.front_page.findings`).
 
-    The artefacts of its pages (:func:`index_artefacts`) and the validation summary, read when present.
+    The artefacts of its pages (:func:`index_artefacts`), the validation summary, read when present, and the
+    validation index, linked when present.
     """
-    return [*index_artefacts(parameters).values(), VALIDATION_SUMMARY]
+    return [*index_artefacts(parameters).values(), VALIDATION_SUMMARY, VALIDATION_INDEX]
 
 
 def index_artefacts(parameters: Mapping[str, Mapping[str, str]]) -> dict[str, str]:

@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.core import groups, levels
+from vibroadhesion.core.records import PULLOFF_FOUND
 from vibroadhesion.experiments.pulloff import jkr_mN
 from vibroadhesion.pipeline import data
 from vibroadhesion.pipeline.tables import Column
@@ -96,22 +97,46 @@ def virtual_pulloff_tables(virtual_csv: str | Path) -> list[tuple[str, pd.DataFr
         case = ("" if fixation == "rigid" else
                 f" (kappa = {rows['kappa'].iloc[0]:g}, zeta = {rows['zeta'].iloc[0]:g}; "
                 "leading: Eqs. (67)-(69), refined: Eq. (90) at a_m = a_cr)")
-        pulloff_ratio = rows.pivot_table(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
-        pulloff_ratio = pulloff_ratio[[m for m in levels.names("virtual_pulloff") if m in pulloff_ratio.columns]]
+        pulloff_ratio = model_ratios(rows)
         for model in pulloff_ratio.columns.drop("simulation"):
             pulloff_ratio[f"{model} error"] = pulloff_ratio[model] / pulloff_ratio["simulation"] - 1
         pulloff_ratio = pulloff_ratio.rename(columns={"simulation": "SIMULATED"})
         sim = rows[rows["model"] == "simulation"].set_index(["frequency_hz", "h1_um"])
         pulloff_ratio["status"], pulloff_ratio["steady states"] = sim["status"], sim["steady_states"]
-        share = sim["abar_m"] / sim["abar_cr"]
         heading = (f"{fixation.upper()} fixation{case}. P_cr/P_JKR: the SIMULATED pull-off (a simulation, not a "
                    "measurement) and the predictions; \"error\" columns: prediction / simulation - 1.")
-        remark = (f"At the simulated pull-off ({fixation} fixation) the mean contact radius is "
-                  f"{100 * share.min():.0f}–{100 * share.max():.0f} % of the JKR critical radius a_cr of Eq. (61) "
-                  "(with the simulated w_eff): the paper's detachment criterion a_m = a_cr (Eq. 60) is not where "
-                  "the mean force peaks.")
-        out.append((heading, pulloff_ratio, remark))
+        out.append((heading, pulloff_ratio, _criterion_remark(str(fixation), sim)))
     return out
+
+
+def model_ratios(rows: pd.DataFrame) -> pd.DataFrame:
+    """P_cr/P_JKR of a virtual pull-off table's rows (one fixation) by (frequency, h1), one column per model level.
+
+    Columns in the order of the registry (:mod:`vibroadhesion.core.levels`); the simulation's column is there even
+    where no family found a pull-off (all NaN), so that the errors against it are NaN rather than missing.
+    """
+    ratio = rows.pivot(index=["frequency_hz", "h1_um"], columns="model", values="pulloff_ratio")
+    return ratio[[m for m in levels.names("virtual_pulloff") if m in ratio.columns]]
+
+
+def _criterion_remark(fixation: str, sim: pd.DataFrame) -> str:
+    """The simulated mean contact radius at pull-off as a share of a_cr (Eqs. 60-61), or why there is none.
+
+    ``sim``: the simulation's rows of one fixation (status, abar_m, abar_cr).
+    """
+    found = sim[sim["status"].isin(PULLOFF_FOUND)]
+    if found.empty:
+        counts = ", ".join(f"{status} at {count}" for status, count in sim["status"].value_counts(sort=False).items())
+        budget = ("; budget_exceeded: the withdrawal took its budget of steps (FAMILY_BUDGET of "
+                  "vibroadhesion.experiments.virtual_pulloff) first" if "budget_exceeded" in set(sim["status"]) else "")
+        return (f"No SIMULATED pull-off ({fixation} fixation): every family ended without a tensile extremum of the "
+                f"mean force ({counts} of {len(sim)} test conditions{budget}). The predictions have nothing to be "
+                "compared with here.")
+    share = found["abar_m"] / found["abar_cr"]
+    return (f"At the simulated pull-off ({fixation} fixation, {len(found)} of {len(sim)} test conditions) the mean "
+            f"contact radius is {100 * share.min():.0f}–{100 * share.max():.0f} % of the JKR critical radius a_cr of "
+            "Eq. (61) (with the simulated w_eff): the paper's detachment criterion a_m = a_cr (Eq. 60) is not where "
+            "the mean force peaks.")
 
 
 def rule_timings(tsv_files: Sequence[str | Path]) -> pd.DataFrame:

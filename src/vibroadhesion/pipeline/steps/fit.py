@@ -36,7 +36,8 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
         confidence=settings["confidence"], stated_scatter=settings["relative_scatter"], alpha=settings["alpha"])
     geometry = {"radius": setup.radius, "reduced_modulus": setup.reduced_modulus}
     fits: dict[str, dict[str, Any]] = {}
-    for model in [*(name for name in names("fit") if name != "simulation"), "simulation"]:  # the cheaper first
+    levels = names("fit")
+    for model in sorted(levels, key=("simulation",).__contains__):  # the cheaper levels first (a stable sort)
         starts = [parameters_from_fit(f) for f in fits.values() if f["status"] not in ("failed", "published")
                   and not f.get("at_bound")]
         fits[model] = fit_gent_schultz(rows, model, published, **geometry, settings=judged, starts=starts,
@@ -54,7 +55,7 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
         "figures_reason": reason,
         "settings": {"confidence": judged.confidence, "relative_scatter": judged.stated_scatter,
                      "alpha": judged.alpha, "max_relative_se": judged.max_relative_se},
-        "fits": {model: fits[model] for model in names("fit")},
+        "fits": {model: fits[model] for model in levels},
     }
     errors = sorted(schema_validator("fit").iter_errors(summary), key=str)
     if errors:  # a defect of the fit's code, never of the user's rows: stop before writing
