@@ -49,7 +49,7 @@ FITTED_SIMULATION_RULES = {"virtual_pulloff", "virtual_pulloff_fixation"}
 # (including the compliant virtual pull-off; the default run made the rigid one for Figs. 4 and 7).
 VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_compliant", "validation_compliant_plot",
                     "pulloff_sensitivity", "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
-                    "identifiability_fit", "identifiability", "identifiability_design", "benchmark_j_integrals",
+                    "identifiability_fit", "identifiability", "identifiability_design", "fit_coverage", "benchmark_j_integrals",
                     "withdrawal", "withdrawal_slow_flow", "withdrawal_gather", "withdrawal_plot",
                     "benchmark_simulate", "benchmark_speed_vs_error", "rigs_part", "rigs_gather", "rigs_plot",
                     "report_validation_index", "validation"}

@@ -7,9 +7,10 @@ into the JSON-ready summary of results/fit/gent_schultz.json (schema: pipeline/s
 per parameter and per level by the rules of :mod:`vibroadhesion.experiments.fit_statistics`, the profile-likelihood
 interval of each parameter inside the box, the standard errors (Gauss-Newton, s^2 (J^T J)^-1 in ln theta mapped to
 natural units by the delta method, s^2 = RSS/(m - p) floored at the noise floor) and the goodness-of-fit test.
-Intervals are computed only for a fit that the test does not reject and that has no parameter on a bound: the
-parameters of a model that does not represent the rows, or that are conditional on another at a bound, are not
-determined by them (``not_identifiable``, with the reason), and their profiles would cost the slowest refits.
+Intervals are computed only for a fit with no parameter on a bound: parameters conditional on another at a bound
+are not determined by the rows (``not_identifiable``, with the reason), and their profiles would cost the slowest
+refits (the full model far out in the box). A ``poor_fit`` level keeps its intervals, conditional on a model the
+rows reject: the level's status says so wherever they are shown, and the figures never use it.
 
 A level's status is the first of: ``poor_fit`` (the goodness-of-fit test rejects the misfit), ``at_bound`` (a
 parameter ends on a bound), ``not_identifiable`` (a freed parameter is not determined by the rows), ``fitted``
@@ -101,7 +102,7 @@ def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...
     inside = tuple(name for name in free if name not in at_bound)
     rel_se = relative_standard_errors(fit["jac"][:, [free.index(name) for name in inside]], s2)
     gof = goodness_of_fit(fit["residuals"], condition_groups(condition_keys(rows)), len(free), settings)
-    judged = rel_se is not None and not at_bound and not gof.rejected
+    judged = rel_se is not None and not at_bound
     intervals = _intervals(fit, free, inside, s2, settings) if judged else {}
     statuses = {name: parameter_status(name in at_bound, None if rel_se is None else float(rel_se[inside.index(name)])
                                        if name in inside else None, intervals.get(name), settings.max_relative_se)
@@ -110,10 +111,8 @@ def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...
         notes.append(f"the Jacobian has lower rank than the {len(inside)} free parameters inside the box: the rows "
                      f"do not determine {', '.join(inside)} separately (no standard errors)")
     elif not judged:
-        notes.append("no intervals: " + ("the model does not represent the rows (goodness of fit), so they determine "
-                                         "none of its parameters" if gof.rejected else
-                                         f"{', '.join(at_bound)} at a bound leaves the others conditional on it"))
-        statuses = {name: ("not_identifiable", "no interval: the fit is poor or at a bound") if status == "fitted"
+        notes.append(f"no intervals: {', '.join(at_bound)} at a bound leaves the others conditional on it")
+        statuses = {name: ("not_identifiable", "no interval: another parameter is at a bound") if status == "fitted"
                     else (status, why) for name, (status, why) in statuses.items()}
     notes += [f"{name} not determined by these rows: {why}" for name, (status, why) in statuses.items()
               if status == "not_identifiable" and judged]

@@ -35,6 +35,7 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.experiments.envelope import envelope_log_derivatives, pulloff_problem
+from vibroadhesion.experiments.fit_statistics import MAX_RELATIVE_SE
 from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
 from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
@@ -42,8 +43,8 @@ from vibroadhesion.numerics.progress import ProgressBar
 
 PARAMETERS = ("w0", "n", "v0")
 
-#: Relative standard error above which a parameter is not identifiable (as ``max_relative_se_v0`` of the fit).
-IDENTIFIABLE_RELATIVE_SE = 0.5
+#: Relative standard error above which a parameter is not identifiable (the fit's status rule).
+IDENTIFIABLE_RELATIVE_SE = MAX_RELATIVE_SE
 
 #: Columns of the sensitivity table: the row, its status and force, and S_ij = d ln P_i / d ln theta_j.
 SENSITIVITY_COLUMNS = ["frequency_hz", "h1_um", "status", "pulloff_mN", *(f"dlnP_dln{n}" for n in PARAMETERS)]

@@ -140,8 +140,9 @@ def pulloff_leading(eta1: ArrayLike, chi0: float, law: RateLaw, fixation: Fixati
 
 
 def _log_pulloff_lhs(log_Abar: NDArray[np.float64], law: RateLaw) -> NDArray[np.float64]:
-    """ln of the left-hand side of Eq. (72) at Abar = e^z."""
-    return np.log(pulloff_lhs_leading(np.exp(log_Abar), law))
+    """ln of the left-hand side of Eq. (72) at Abar = e^z (-inf where it vanishes: increasing all the same)."""
+    with np.errstate(divide="ignore"):
+        return np.log(pulloff_lhs_leading(np.exp(log_Abar), law))
 
 
 def critical_internal_variables_rigid(eta1: NDArray[np.float64], chi0: float, law: RateLaw) -> NDArray[np.float64]:
