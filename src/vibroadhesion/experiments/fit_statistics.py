@@ -77,10 +77,6 @@ class ResidualModel(Protocol):
         """d r_i / d x_j, one column per free parameter."""
 
 
-class FitError(RuntimeError):
-    """The least-squares iteration failed, or spent its effort budget; no estimate is reported."""
-
-
 @dataclass(frozen=True)
 class Settings:
     """How a fit is judged: confidence of the intervals, the status threshold, the stated scatter, the test level.

@@ -28,7 +28,6 @@ import pandas as pd
 from scipy.optimize import OptimizeResult
 
 from vibroadhesion.experiments.fit_statistics import (
-    FitError,
     GoodnessOfFit,
     Interval,
     ResidualModel,
@@ -160,14 +159,8 @@ def _intervals(fit: dict[str, Any], free: tuple[str, ...], inside: tuple[str, ..
     dof = len(fit["residuals"]) - len(free)
     if fit["model"] is None or dof < 1:
         return {}
-    intervals = {}
-    for name in inside:
-        try:
-            intervals[name] = profile_interval(fit["model"], fit["x"], free.index(name), fit["log_bounds"], s2, dof,
-                                               settings.confidence)
-        except FitError:  # the model's effort budget spent along the profile: no interval, the parameter undetermined
-            continue
-    return intervals
+    return {name: profile_interval(fit["model"], fit["x"], free.index(name), fit["log_bounds"], s2, dof,
+                                   settings.confidence) for name in inside}
 
 
 def level_status(statuses: list[str], gof: GoodnessOfFit) -> str:

@@ -43,7 +43,7 @@ import pandas as pd
 from scipy.optimize import least_squares
 
 from vibroadhesion.core import levels
-from vibroadhesion.experiments.fit_statistics import FitError, Settings, relative_standard_errors
+from vibroadhesion.experiments.fit_statistics import Settings, relative_standard_errors
 from vibroadhesion.experiments.fit_summary import BOUNDS, fit_record, fitted_summary, published_table
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.progress import Heartbeat
@@ -52,6 +52,10 @@ from vibroadhesion.numerics.roots import NoRootError
 #: Step in ln theta of the central differences of :class:`LevelResiduals` (truncation O(h^2) ~ 1e-10 against the
 #: levels' ~1e-12 relative rounding over h ~ 1e-7: the derivatives to ~1e-7 relative).
 DIFFERENCE_STEP = 1e-5
+
+
+class FitError(RuntimeError):
+    """The least-squares iteration failed; no estimate is reported."""
 
 
 def _model_mN(model: str, params: GentSchultzParameters, freq: np.ndarray, h1: np.ndarray,

@@ -35,8 +35,8 @@ import numpy as np
 import pandas as pd
 
 from vibroadhesion.experiments.envelope import envelope_log_derivatives, pulloff_problem
-from vibroadhesion.experiments.fit_statistics import MAX_RELATIVE_SE, FitError
-from vibroadhesion.experiments.fitting import fit_gent_schultz
+from vibroadhesion.experiments.fit_statistics import MAX_RELATIVE_SE
+from vibroadhesion.experiments.fitting import FitError, fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
 from vibroadhesion.experiments.virtual_pulloff import traced_pulloff
 from vibroadhesion.numerics.progress import ProgressBar

@@ -55,7 +55,7 @@ contact where the family warm-started from a neighbouring pull-off has one (200 
 n = 0.264: P*/P_observed - 1 = 0.003 cold, 0.020 warm), so the first search can stop at such a jump (one of the
 70 fits above, 35 % off in w0); the second, whose families start warm from the first's end, goes on. A search
 that ends with no more pairs with a pull-off than free parameters is a
-:class:`~vibroadhesion.experiments.fit_statistics.FitError`.
+:class:`~vibroadhesion.experiments.fitting.FitError`.
 
 A row with a withdrawal speed V > 0 (:data:`SPEED_COLUMN`) is predicted instead by the withdrawal at that speed,
 once per distinct (f, h1, V), with its own Jacobian (central differences):
@@ -98,9 +98,9 @@ from vibroadhesion.experiments.envelope import (
     pulloff_problem,
     start_state,
 )
-from vibroadhesion.experiments.fit_statistics import FitError, Settings
+from vibroadhesion.experiments.fit_statistics import Settings
 from vibroadhesion.experiments.fit_summary import BOUNDS, fit_record, fitted_summary
-from vibroadhesion.experiments.fitting import v0_gate, v0_note_before_fit
+from vibroadhesion.experiments.fitting import FitError, v0_gate, v0_note_before_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
 from vibroadhesion.experiments.virtual_pulloff import FAMILY_BUDGET, traced_family
 from vibroadhesion.numerics.progress import Heartbeat
@@ -110,10 +110,6 @@ WARM_MARGIN = 2
 _FAMILY_STEP = 0.2
 #: How many of the start points (:func:`start_points`) are searched in full.
 SEARCHES = 2
-#: Periodic orbits one search (and, afresh, the intervals after it) may solve per (f, h1) pair before it stops with
-#: a :class:`~vibroadhesion.experiments.fit_statistics.FitError`: a fit from a distant start to the published parameters
-#: solves ~60 per pair (15 pairs, 120 families); far out in the box (w0 near its bound) a family costs seconds.
-ORBITS_PER_PAIR = 300
 
 #: The key of the static JKR rows (h1 = 0, no frequency): their pull-off is |P_cr^JKR| (Eq. 70).
 STATIC = (0.0, 0.0)
@@ -149,8 +145,6 @@ class _Families:
     families: int = 0
     withdrawals: int = 0
     progress: Heartbeat | None = None
-    orbits: int = 0
-    budget: int | None = None
 
     def evaluate(self, params: GentSchultzParameters) -> tuple[list[str], np.ndarray, list[Extremum | None]]:
         """Status, P* in mN (module docstring; NaN without orbits) and its orbit for every pair at ``params``."""
@@ -171,16 +165,11 @@ class _Families:
                 statuses.append(status)
                 extrema.append(None)
                 continue
-            if self.budget is not None and self.orbits > self.budget:
-                raise FitError(f"simulation fit: effort budget of {self.budget} periodic orbits for "
-                               f"{len(self.pairs)} (f, h1) pairs spent (last at {params}): the search ran where "
-                               "families cost seconds; no estimate")
             problem = pulloff_problem(params, *pair, **self.geometry)
             warm = self.warm.get(pair)
             start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, start_state(warm[1]))
             record, at = traced_family(problem, warm=start, iterations=WARM_ITERATIONS, max_steps=FAMILY_BUDGET)
             self.families += 1
-            self.orbits += int(record.steady_states or 0)
             if self.progress is not None:
                 self.progress.beat(f"{i + 1}/{len(self.pairs)} (f, h1) pairs traced at {params}, {self.families} "
                                    "families so far")
@@ -388,8 +377,7 @@ def _best_search(rows: pd.DataFrame, starts: list[GentSchultzParameters], geomet
     best: tuple[float, dict[str, Any], _Families] | None = None
     failures: list[str] = []
     for start in starts[:SEARCHES]:
-        pairs = sorted(set(_pair_keys(rows)))
-        families = _Families(pairs, geometry, progress=progress, budget=ORBITS_PER_PAIR * len(pairs))
+        families = _Families(sorted(set(_pair_keys(rows))), geometry, progress=progress)
         try:
             fit = _least_squares(rows, start, ("w0", "n"), families)
         except FitError as exc:
@@ -421,7 +409,6 @@ def fit_simulation(rows: pd.DataFrame, published: GentSchultzParameters, *, radi
     geometry = {"radius": radius, "reduced_modulus": reduced_modulus}
     ranked = start_points(rows, [published, *starts], geometry)  # one evaluation each: no heartbeat needed
     fit, families = _best_search(rows, ranked, geometry, progress)
-    families.budget = families.orbits + ORBITS_PER_PAIR * len(families.pairs)  # afresh for the v0 stage and intervals
     free: tuple[str, ...] = ("w0", "n")
     v0_note = v0_note_before_fit("simulation", len({pair[0] for pair in pairs if pair != STATIC}), len(rows))
     if not v0_note:
