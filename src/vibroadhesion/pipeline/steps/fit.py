@@ -38,8 +38,8 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
     fits: dict[str, dict[str, Any]] = {}
     levels = names("fit")
     for model in sorted(levels, key=("simulation",).__contains__):  # the cheaper levels first (a stable sort)
-        starts = [parameters_from_fit(f) for f in fits.values() if f["status"] not in ("failed", "published")
-                  and not f.get("at_bound")]
+        starts = [parameters_from_fit(f) for f in fits.values() if f["status"] in ("fitted", "not_identifiable")
+                  and not f.get("at_bound")]  # a poor fit's parameters are no start: the rows reject its model
         fits[model] = fit_gent_schultz(rows, model, published, **geometry, settings=judged, starts=starts,
                                        progress=Heartbeat(f"fit {model}"))
     used, reason = figures_choice(fits, figures_use)
