@@ -68,10 +68,7 @@ the cheaper levels, each with w0 scaled by the ratio of the simulated to the obs
 evaluation: the least-squares factor c = sum q_i / sum q_i^2 of q_i = P*_i/P_observed,i, since |P_cr| scales
 with w0 through |P_JKR|, Eq. 70, and the amplification moves less); the :data:`SEARCHES` starts of least predicted
 misfit are searched (a further one only while the best so far ends on a bound), each with its own families, and
-the fit of least stated misfit is kept. Each family takes at most
-:data:`~vibroadhesion.experiments.virtual_pulloff.FAMILY_BUDGET` withdrawal steps (14-52 at the published
-parameters); one that ends on it (``budget_exceeded``) is a row without a pull-off, as above, so that a search far
-out in the box (w0 near its bound, where a family costs seconds) ends in minutes.
+the fit of least stated misfit is kept.
 
 The least-squares search, the identifiability rule for v0 (at least two frequencies and a relative
 standard error below the threshold of every parameter's status) and the summary are those of
@@ -102,7 +99,7 @@ from vibroadhesion.experiments.fit_statistics import Settings
 from vibroadhesion.experiments.fit_summary import BOUNDS, fit_record, fitted_summary
 from vibroadhesion.experiments.fitting import FitError, v0_gate, v0_note_before_fit
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, jkr_mN
-from vibroadhesion.experiments.virtual_pulloff import FAMILY_BUDGET, traced_family
+from vibroadhesion.experiments.virtual_pulloff import traced_family
 from vibroadhesion.numerics.progress import Heartbeat
 
 #: The warm family starts this many family steps (0.2 in deltabar_m) on the compressive side of the last pull-off.
@@ -170,7 +167,7 @@ class _Families:
             problem = pulloff_problem(params, *pair, **self.geometry)
             warm = self.warm.get(pair)
             start = None if warm is None else (warm[0] + WARM_MARGIN * _FAMILY_STEP, start_state(warm[1]))
-            record, at = traced_family(problem, warm=start, iterations=WARM_ITERATIONS, max_steps=FAMILY_BUDGET)
+            record, at = traced_family(problem, warm=start, iterations=WARM_ITERATIONS)
             self.families += 1
             if self.progress is not None:
                 self.progress.beat(f"{i + 1}/{len(self.pairs)} (f, h1) pairs traced at {params}, {self.families} "
