@@ -1,22 +1,23 @@
-"""Every number README.md states about results, pinned to the pipeline's artefacts.
+"""Every number docs/findings.md states about results, pinned to the pipeline's artefacts.
 
-Each test quotes one phrase of README.md exactly (line breaks and runs of spaces count as one
-space) and marks the numbers it pins with braces, ``{3.02}``; the test asserts that README.md
-contains the phrase (braces removed) and compares each marked number, in order, with values
-selected from the artefacts. So editing the README or the code alone fails. The comparison
-follows the printed digits:
+docs/findings.md is where the findings live as text (the report's index pages show them read from the artefacts);
+the README's summary of them is pinned by :func:`check_readme` number by number, not by its wording. Each test here
+quotes one phrase of docs/findings.md exactly (line breaks and runs of spaces count as one space) and marks the
+numbers it pins with braces, ``{3.02}``; the test asserts that the document contains the phrase (braces removed) and
+compares each marked number, in order, with values selected from the artefacts. So a number that changes in the
+document or in the artefacts alone fails. The comparison follows the printed digits:
 
 * ``{3.02}`` (rounds): the value rounded to the printed decimals, or to the printed significant
   digits in e-notation (``{1.6e-14}``), is the printed number; signed (``{+131}``, ``{−91}``) when
-  the README prints a sign. A list of values must all round to it; a range ``{27}–{38} %`` is the
+  the document prints a sign. A list of values must all round to it; a range ``{27}–{38} %`` is the
   min and the max over the rows the phrase names.
-* ``{bound:1e-4}`` (the README's "agrees to 1e-4"): max <= 1e-4 and > 1e-5, a bound tight to its order
+* ``{bound:1e-4}`` (the document's "agrees to 1e-4"): max <= 1e-4 and > 1e-5, a bound tight to its order
   (for differences the model makes: they do not move with the machine).
-* ``{within:1e-9}`` (the README's "to 1e-9" for a difference that only rounding and solver tolerances make):
+* ``{within:1e-9}`` (the document's "to 1e-9" for a difference that only rounding and solver tolerances make):
   max <= 1e-9. The bound follows from the numerics (the tolerance, the precision); how far below it a value
   falls depends on the CPU's rounding and the solver's path (4.4e-10 on one machine, 4e-12 on an AMD EPYC for
   the same two searches), so no lower limit is pinned.
-* ``{about:8}`` (the README's "~8 %"): every value within one unit of the last printed digit.
+* ``{about:8}`` (the document's "~8 %"): every value within one unit of the last printed digit.
 
 Percentages are compared as percent. Timings (machine measurements) and Snakemake job counts are not pinned;
 a test that uses the artefacts is marked ``pipeline`` (tests/conftest.py).
@@ -61,6 +62,7 @@ ARTEFACTS = {
     "rig_comparison": "validation/rig_comparison.csv",
     "rig_equivalence": "validation/rig_equivalence.csv",
 }
+FINDINGS = " ".join((ROOT / "docs" / "findings.md").read_text(encoding="utf-8").split())
 README = " ".join((ROOT / "README.md").read_text(encoding="utf-8").split())
 MARK = re.compile(r"\{(?:(bound|about|within):)?([^}]*)\}")
 Values = float | Sequence[float] | np.ndarray
@@ -100,16 +102,21 @@ def satisfies(mode: str | None, values: np.ndarray, printed: str) -> bool:
     return all(rounds_to(float(v), printed) for v in values)
 
 
-def check(phrase: str, values: Sequence[Values]) -> None:
-    """Assert that README.md states ``phrase`` and that its marked numbers describe ``values``."""
+def check(phrase: str, values: Sequence[Values], document: str = FINDINGS) -> None:
+    """Assert that docs/findings.md (or ``document``) states ``phrase`` and that its marked numbers describe ``values``."""
     text = " ".join(MARK.sub(r"\2", phrase).split())
-    assert text in README, f"README.md no longer says: {text!r}"
+    assert text in document, f"no longer stated: {text!r}"
     marks = MARK.findall(phrase)
     assert len(marks) == len(values), (marks, values)
     for (mode, printed), value in zip(marks, values, strict=True):
         array = np.atleast_1d(np.asarray(value, dtype=float))
         assert array.size and np.all(np.isfinite(array)), (printed, array)
-        assert satisfies(mode or None, array, printed), f"README: {printed} ({mode or 'rounds'}), artefact: {array}"
+        assert satisfies(mode or None, array, printed), f"stated: {printed} ({mode or 'rounds'}), artefact: {array}"
+
+
+def check_readme(numbers: str, values: Sequence[Values]) -> None:
+    """Assert that README.md states the marked ``numbers`` (a number or a short group of them, with their unit)."""
+    check(numbers, values, README)
 
 
 def test_the_comparison_follows_the_printed_digits() -> None:
@@ -199,6 +206,7 @@ def test_leading_and_refined_underestimate_w_eff(pipeline_results: Path) -> None
     w = grid_quantity(pipeline_results, "w_eff_ratio")
     low = np.concatenate([100 * (1 - w[m] / w["simulation"]) for m in ("leading", "refined")])
     check("underestimate the simulated effective work of adhesion by {22}–{34} %", [low.min(), low.max()])
+    check_readme("effective work of adhesion by {22}–{34} %", [low.min(), low.max()])
 
 
 def test_w_eff_at_20_um(pipeline_results: Path) -> None:
@@ -276,6 +284,7 @@ def test_eq_72_at_200_hz_and_how_low_it_is(pipeline_results: Path) -> None:
     low = 100 * (1 - ratio["leading"] / ratio["simulation"])
     check("against Eq. (72)'s {2.21} / {4.75} / {8.08} / {12.0} / {16.5}: over 200–400 Hz the paper's estimate is "
           "{27}–{38} % low", [*ratio.loc[200.0, "leading"].sort_index(), low.min(), low.max()])
+    check_readme("Eq. (72), is {27}–{38} % low", [low.min(), low.max()])
 
 
 def test_simulated_detachment_radius(pipeline_results: Path) -> None:
@@ -289,6 +298,8 @@ def test_force_minimum_of_the_exact_averaging(pipeline_results: Path) -> None:
     high = (ratio["exact_averaging_force_minimum"] / ratio["simulation"] - 1).groupby(level="h1_um")
     check("matches the simulation to {bound:1e-4} at 20 um and is up to {0.6} % high at 40 um and {10}–{22} % high "
           "at 100 um", [high.max()[20], 100 * high.max()[40], 100 * high.min()[100], 100 * high.max()[100]])
+    check_readme("to {bound:1e-4} at 20 µm", [high.max()[20]])
+    check_readme("{10}–{22} % high at 100 µm", [100 * high.min()[100], 100 * high.max()[100]])
 
 
 def test_compliant_fixation_of_the_virtual_experiment(pipeline_results: Path) -> None:
@@ -363,6 +374,9 @@ def test_cramer_rao_errors_of_w0_and_v0_and_the_correlation(pipeline_results: Pa
     check("at {1} % measurement scatter the Cramér–Rao standard errors are w0 {4.0} %, n 9.1 %, v0 {82} % "
           "(n and v0 correlated at {0.997};",
           [100 * row["relative_noise"], 100 * row["w0_relative_se"], 100 * row["v0_relative_se"], row["corr_n_v0"]])
+    check_readme("w0 {4.0} %, n {9.1} % at {1} % scatter", [100 * row["w0_relative_se"], 100 * row["n_relative_se"],
+                                                        100 * row["relative_noise"]])
+    check_readme("v0 ({82} %)", [100 * row["v0_relative_se"]])
 
 
 def test_cramer_rao_error_of_n(pipeline_results: Path) -> None:
@@ -400,7 +414,7 @@ def test_recommended_level_and_the_static_test(pipeline_results: Path) -> None:
 
 
 def test_design_table(pipeline_results: Path) -> None:
-    """The README's table of the D-optimal added tests: its rows are design.csv's, in its order."""
+    """The table of the D-optimal added tests: its rows are design.csv's, in its order."""
     design = read(pipeline_results, "design")
     rows = [("none (the rig's 15)", "current"), ("10 Hz, h1 = 80 um", "current + 1 test"),
             ("10 Hz, 80 um; 30 Hz, 120 um", "current + 2 tests"),

@@ -1,6 +1,6 @@
-"""The numbers README.md states in "Two rigs" and "Pull-off at a finite withdrawal speed", pinned to the artefacts.
+"""The numbers docs/findings.md states in "Two rigs" and "Pull-off at a finite withdrawal speed", pinned to the artefacts.
 
-Same rules as :mod:`test_headline_numbers` (its ``check`` and ``read``): each test quotes one phrase of the README
+Same rules as :mod:`test_headline_numbers` (its ``check`` and ``read``): each test quotes one phrase of the document
 and compares each braced number with the values the phrase names, at the printed digits.
 """
 
@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pandas as pd
 from conftest import V0
-from test_headline_numbers import check, read
+from test_headline_numbers import check, check_readme, read
 
 # ----------------------------------------------------------------- "Two rigs: base and force excitation"
 
@@ -79,6 +79,7 @@ def test_quasi_static_speed_limits_rigid(pipeline_results: Path) -> None:
           "{1.7}–{9.1} v0 at 40–100 um, within 5 % below {0.34}–{0.35} v0 and {4.3}–{46} v0",
           [thin[one], thin[one] * V0 * 1e6, thick[one].min(), thick[one].max(), thin[five].min(), thin[five].max(),
            thick[five].min(), thick[five].max()])
+    check_readme("slower than V = {0.11} v0 gives the quasi-static pull-off to 1 %", [thin[one]])
 
 
 def test_quasi_static_speed_limits_compliant(pipeline_results: Path) -> None:
