@@ -17,7 +17,7 @@ from conftest import AMPLITUDES_UM, LinearResiduals, FREQUENCIES_HZ, N_PUBLISHED
 
 from vibroadhesion.core.records import Pulloff
 from vibroadhesion.experiments import fit_summary, fitting
-from vibroadhesion.experiments.fit_summary import parameters_from_fit
+from vibroadhesion.experiments.fit_summary import start_from_fit
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff, pulloff_mN
 from vibroadhesion.numerics.progress import Heartbeat
@@ -56,7 +56,17 @@ def test_leading_fit_recovers_true_w0_n_from_noise_free_rows_to_1e6() -> None:
     assert est["v0"] == PUBLISHED.v0  # the leading model does not depend on v0
     assert summary["v0_identifiable"] is False
     assert summary["rms_relative_residual"] < 1e-6
-    assert parameters_from_fit(summary) == GentSchultzParameters(est["w0"], est["n"], PUBLISHED.v0)
+    assert start_from_fit(summary, PUBLISHED) == GentSchultzParameters(est["w0"], est["n"], PUBLISHED.v0)
+
+
+def test_a_start_keeps_what_a_level_determined_and_the_published_value_elsewhere() -> None:
+    """A cheaper level's n that the rows leave open is no start value: the full model's search starts at the published n."""
+    summary = fit_gent_schultz(_rows(FREQUENCIES_HZ, "leading"), "leading", PUBLISHED, **GEOMETRY)
+    open_n = summary | {"status": "not_identifiable", "determined": ["w0"]}
+    assert start_from_fit(open_n, PUBLISHED) == GentSchultzParameters(_estimates(summary)["w0"], PUBLISHED.n,
+                                                                      PUBLISHED.v0)
+    assert start_from_fit(summary | {"status": "poor_fit"}, PUBLISHED) is None
+    assert start_from_fit(summary | {"determined": []}, PUBLISHED) is None
 
 
 def test_refined_fit_recovers_true_w0_n_v0_from_noise_free_low_frequency_rows_to_1e6() -> None:
@@ -123,7 +133,7 @@ def test_zero_rows_returns_published_parameters(model: str) -> None:
     assert summary["status"] == "published"
     assert summary["rows"] == 0
     assert _estimates(summary) == {"w0": PUBLISHED.w0, "n": PUBLISHED.n, "v0": PUBLISHED.v0}
-    assert parameters_from_fit(summary) == PUBLISHED
+    assert start_from_fit(summary, PUBLISHED) is None  # nothing determined: no start of its own
 
 
 # ----------------------------------------------------------------------------- statuses, rows, static tests

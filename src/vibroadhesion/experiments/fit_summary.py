@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -103,7 +104,9 @@ def fitted_summary(rows: pd.DataFrame, fit: dict[str, Any], free: tuple[str, ...
     rel_se = relative_standard_errors(fit["jac"][:, [free.index(name) for name in inside]], s2)
     gof = goodness_of_fit(fit["residuals"], condition_groups(condition_keys(rows)), len(free), settings)
     judged = rel_se is not None and not at_bound
-    intervals = _intervals(fit, free, inside, s2, settings) if judged else {}
+    profiled = () if rel_se is None else tuple(  # a relative SE above the threshold is not_identifiable already
+        name for name, se in zip(inside, rel_se, strict=True) if se <= settings.max_relative_se)
+    intervals = _intervals(fit, free, profiled, s2, settings) if judged else {}
     statuses = {name: parameter_status(name in at_bound, None if rel_se is None else float(rel_se[inside.index(name)])
                                        if name in inside else None, intervals.get(name), settings.max_relative_se)
                 for name in free}
@@ -155,7 +158,7 @@ def _bound_statuses(fit: dict[str, Any], free: tuple[str, ...], s2: float) -> tu
 
 def _intervals(fit: dict[str, Any], free: tuple[str, ...], inside: tuple[str, ...], s2: float,
                settings: Settings) -> dict[str, Interval]:
-    """The profile interval of each parameter inside the box (none without the residual model or a spare row)."""
+    """The profile interval of each parameter of ``inside`` (none without the residual model or a spare row)."""
     dof = len(fit["residuals"]) - len(free)
     if fit["model"] is None or dof < 1:
         return {}
@@ -211,10 +214,18 @@ def published_table(params: GentSchultzParameters) -> dict[str, Any]:
     return parameter_table(params, {}, (), None, {})
 
 
-def parameters_from_fit(summary: dict[str, Any]) -> GentSchultzParameters:
-    """The parameter set a fit summary reports (fitted where free, published otherwise)."""
+def start_from_fit(summary: dict[str, Any], published: GentSchultzParameters) -> GentSchultzParameters | None:
+    """A start point of the full model's search from a cheaper level's fit: what it determined, published elsewhere.
+
+    None where the level determined nothing or the rows reject its model (``poor_fit``, ``at_bound``, failed): an
+    undetermined estimate is any point of a flat valley (n = 3.8 where the rows say nothing on n), where the full model
+    costs most to evaluate and which the search would have to leave again.
+    """
+    if summary["status"] not in ("fitted", "not_identifiable") or not summary.get("determined"):
+        return None
     p = summary["parameters"]
-    return GentSchultzParameters(p["w0"]["estimate"], p["n"]["estimate"], p["v0"]["estimate"])
+    kept = {name: p[name]["estimate"] for name in summary["determined"]}
+    return replace(published, **kept)
 
 
 #: The fitted levels from the most to the least faithful to the full model (the simulation is the reference; the

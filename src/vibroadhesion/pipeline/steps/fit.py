@@ -8,7 +8,7 @@ from typing import Any
 
 from vibroadhesion.core.levels import names
 from vibroadhesion.experiments.fit_statistics import Settings
-from vibroadhesion.experiments.fit_summary import figures_choice, parameters_from_fit
+from vibroadhesion.experiments.fit_summary import figures_choice, start_from_fit
 from vibroadhesion.experiments.fitting import fit_gent_schultz
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
 from vibroadhesion.numerics.progress import Heartbeat
@@ -21,9 +21,10 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
         settings: Mapping[str, float] | None = None) -> None:
     """Fit w0, n, v0 to the measured rows with each model level (Eqs. 71-72, 106); results/fit/gent_schultz.json.
 
-    No rows: the published parameters pass through. The cheaper levels are fitted first and their fits inside the box
-    are start points of the simulation's search. ``figures_use`` names the level the figures prefer; they use it if
-    its fit is ``fitted``, else the most faithful fitted level, else the published set
+    No rows: the published parameters pass through. The cheaper levels are fitted first; what each determined
+    (published values elsewhere) is a start point of the simulation's search
+    (:func:`~vibroadhesion.experiments.fit_summary.start_from_fit`). ``figures_use`` names the level the figures
+    prefer; they use it if its fit is ``fitted``, else the most faithful fitted level, else the published set
     (:func:`~vibroadhesion.experiments.fit_summary.figures_choice`), and the summary says which and why.
     ``settings``: ``relative_scatter``, ``alpha``, ``confidence`` of workflow/config.yaml (fit; None: the defaults of
     :class:`~vibroadhesion.experiments.fit_statistics.Settings`, which are the config's). A level that fails
@@ -38,8 +39,7 @@ def fit(setup_json: str | Path, pulloff_csv: str | Path, out: str | Path, figure
     fits: dict[str, dict[str, Any]] = {}
     levels = names("fit")
     for model in sorted(levels, key=("simulation",).__contains__):  # the cheaper levels first (a stable sort)
-        starts = [parameters_from_fit(f) for f in fits.values() if f["status"] in ("fitted", "not_identifiable")
-                  and not f.get("at_bound")]  # a poor fit's parameters are no start: the rows reject its model
+        starts = [start for f in fits.values() if (start := start_from_fit(f, published)) is not None]
         fits[model] = fit_gent_schultz(rows, model, published, **geometry, settings=judged, starts=starts,
                                        progress=Heartbeat(f"fit {model}"))
     used, reason = figures_choice(fits, figures_use)
