@@ -64,7 +64,8 @@ once per distinct (f, h1, V), with its own Jacobian (central differences):
 Starts. The misfit surface of the full model has more than one basin (the families' branches above), and from
 the published parameters alone the search can run to a bound while a cheaper level fits the same rows inside the
 box. The search therefore starts from several points (:func:`start_points`): the published set and what the
-cheaper levels determined (:func:`~vibroadhesion.experiments.fit_summary.start_from_fit`), each with w0 scaled by the ratio of the simulated to the observed forces there (one
+cheaper levels determined (:func:`~vibroadhesion.experiments.fit_summary.start_from_fit`), each with w0 scaled
+by the ratio of the simulated to the observed forces there (one
 evaluation: the least-squares factor c = sum q_i / sum q_i^2 of q_i = P*_i/P_observed,i, since |P_cr| scales
 with w0 through |P_JKR|, Eq. 70, and the amplification moves less); the :data:`SEARCHES` starts of least predicted
 misfit are searched (a further one only while the best so far ends on a bound), each with its own families, and
