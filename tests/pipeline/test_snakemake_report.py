@@ -106,6 +106,18 @@ def test_every_link_and_image_inside_the_report_zip_resolves_there(report_zip: z
     assert {f"../{fig}/{fig}.png" for fig in FIGURES} <= linked  # the thumbnails, resolved above
 
 
+def test_the_report_zip_shows_the_indexes_results_report_shows(pipeline_results: Path,
+                                                                report_zip: zipfile.ZipFile) -> None:
+    """The indexes in the zip are those of results/report/ after the run (whose figure index was written before the
+    validation it links, and read again at the end of the run), and a second `all validation` has nothing to do."""
+    for stem in ("index", "validation_index"):
+        (packed,) = [name for name in report_zip.namelist() if name.endswith(f"/{stem}.html")]
+        assert report_zip.read(packed) == (pipeline_results / "report" / f"{stem}.html").read_bytes(), stem
+    run = subprocess.run([str(Path(sys.prefix) / "bin" / "snakemake"), "-n", "all", "validation"],
+                         cwd=pipeline_results.parent, capture_output=True, text=True, timeout=600)
+    assert run.returncode == 0 and "Nothing to be done" in run.stdout + run.stderr, run.stdout[-3000:]
+
+
 def test_the_report_site_holds_each_file_at_its_path_under_results(tmp_path: Path) -> None:
     """The folder Snakemake packs (rule report_site): the pages and figures at their paths under results/, so the
     index's links (``fig3.html``, ``../fig3/fig3.png``) resolve in it; a file outside results/ is refused before
@@ -116,12 +128,12 @@ def test_the_report_site_holds_each_file_at_its_path_under_results(tmp_path: Pat
     for path, content in files.items():
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_bytes(content)
-    report_site(files, tmp_path / "site", results)
+    report_site(files, tmp_path / "site", {}, results)
     copied = {p.relative_to(tmp_path / "site").as_posix(): p.read_bytes() for p in (tmp_path / "site").rglob("*")
               if p.is_file()}
     assert copied == {"report/index.html": b"<a href='fig3.html'>", "report/fig3.html": b"<p>",
                       "fig3/fig3.png": b"\x89PNG"}
     (tmp_path / "elsewhere.png").write_bytes(b"x")
     with pytest.raises(ValueError, match="elsewhere.png"):
-        report_site([*files, tmp_path / "elsewhere.png"], tmp_path / "other", results)
+        report_site([*files, tmp_path / "elsewhere.png"], tmp_path / "other", {}, results)
     assert not (tmp_path / "other").exists()
