@@ -50,6 +50,7 @@ include: "workflow/rules/rigs.smk"
 include: "workflow/rules/identifiability.smk"
 include: "workflow/rules/benchmarks.smk"
 include: "workflow/rules/report.smk"
+include: "workflow/rules/report_site.smk"
 
 
 # Under a cluster executor (profiles/slurm) these run on the submit host, as the plot and report rules do
@@ -79,7 +80,8 @@ rule all:
 rule validation:
     """Every model level against the direct simulation, the compliant resonance sweep, the
     identifiability of the Gent-Schultz parameters from the virtual pull-off experiment, the
-    speed-against-error benchmarks, and their report pages."""
+    speed-against-error benchmarks, their report pages, and the rendered report as one folder for Snakemake's
+    report (`snakemake --report results/report.zip all validation`)."""
     input:
         rules.validation_plot.output.png,
         rules.validation_compliant_plot.output.png,
@@ -93,6 +95,7 @@ rule validation:
         rules.fit_coverage.output.summary,
         rules.benchmark_speed_vs_error.output.csv,
         rules.report_validation_index.output.index,
+        rules.report_site.output,
 
 
 # After every run, finished or stopped by a failed job, the indexes mark the pages older than an artefact they

@@ -46,13 +46,14 @@ DATA_RULES = {"ingest_pulloff", "fit_gent_schultz", "fig4_fig7_data", "plot_pull
 # With measured rows the fit leaves the published set: Figs. 4 and 7 then overlay a simulation of their own.
 FITTED_SIMULATION_RULES = {"virtual_pulloff", "virtual_pulloff_fixation"}
 # What `snakemake -c2 validation` adds to a finished default run: the checks against the simulation
-# (including the compliant virtual pull-off; the default run made the rigid one for Figs. 4 and 7).
+# (including the compliant virtual pull-off; the default run made the rigid one for Figs. 4 and 7), and the rendered
+# report as one folder for Snakemake's report (rule report_site).
 VALIDATION_RULES = {"validation_errors", "validation_plot", "validation_compliant", "validation_compliant_plot",
                     "pulloff_sensitivity", "virtual_pulloff", "virtual_pulloff_fixation", "virtual_pulloff_gather",
                     "identifiability_fit", "identifiability", "identifiability_design", "fit_coverage", "benchmark_j_integrals",
                     "withdrawal", "withdrawal_slow_flow", "withdrawal_gather", "withdrawal_plot",
                     "benchmark_simulate", "benchmark_speed_vs_error", "rigs_part", "rigs_gather", "rigs_plot",
-                    "report_validation_index", "validation"}
+                    "report_validation_index", "report_site", "validation"}
 
 
 def _copy_repo(dest: Path) -> Path:
@@ -166,7 +167,7 @@ def test_data_edit_leaves_the_validation_at_the_published_parameters(pipeline_re
         pytest.skip("VIBROADHESION_RESULTS names finished results without their repository")
     work = shutil.copytree(pipeline_results.parent, tmp_path / "repository", symlinks=True)
     planned = _planned_after_pulloff_edit(work, "200,60,700,my lab\n", "all", "validation")
-    expected = DATA_RULES | FITTED_SIMULATION_RULES | {"report_validation_index", "validation"}
+    expected = DATA_RULES | FITTED_SIMULATION_RULES | {"report_validation_index", "report_site", "validation"}
     assert planned == expected, planned ^ expected
 
 

@@ -13,7 +13,7 @@ import pytest
 from papermill.exceptions import PapermillExecutionError
 
 from vibroadhesion.pipeline.pages import PAGES, VALIDATION_PAGES
-from vibroadhesion.pipeline.steps.report import INJECTED, Page, render_page, reset_namespace, shared_kernel
+from vibroadhesion.pipeline.steps.report import INJECTED, RUN_RECORD, Page, render_page, reset_namespace, shared_kernel
 
 
 def _notebook(path: Path, *sources: str) -> Path:
@@ -64,6 +64,31 @@ def test_pages_in_a_shared_kernel_equal_pages_in_kernels_of_their_own(tmp_path: 
     assert shared[1][1].cells[-1].outputs[0]["data"]["text/plain"] == "3.0"
 
 
+def test_a_page_rendered_twice_gives_the_same_bytes_and_the_kernel_no_warning(
+        tmp_path: Path, capfd: pytest.CaptureFixture[str]) -> None:
+    """Same inputs, same bytes: the executed notebook records no time and no temporary path (papermill's start and end
+    times, durations and output path; nbclient's execution times) and a table's plain-text form no memory address,
+    so a page rendered twice is the same notebook and the same HTML file; the kernel runs over IPC, so ipykernel
+    prints no warning about unencrypted TCP."""
+    page = _page(tmp_path, "twice", "import pandas as pd", "pd.DataFrame({'x': [1.5]}).style.set_uuid('t')")
+    renders = []
+    for _ in range(2):
+        with shared_kernel() as manager:
+            reset_namespace(manager)
+            render_page(page, manager)
+        renders.append((page.executed.read_bytes(), page.html.read_bytes()))
+    assert renders[0] == renders[1]
+    nb = nbformat.read(page.executed, as_version=4)
+    recorded = [nb.metadata["papermill"], *(cell.metadata.get("papermill", {}) for cell in nb.cells)]
+    assert not [key for metadata in recorded for key in metadata if key in RUN_RECORD]
+    assert not [cell.metadata["execution"] for cell in nb.cells if "execution" in cell.metadata]
+    assert nb.metadata["papermill"]["input_path"] == str(page.notebook)  # what stays: the source and the parameters
+    assert nb.metadata["papermill"]["parameters"] == {"value": "1"}
+    assert nb.cells[-1].outputs[0]["data"]["text/plain"] == "     x\n0  1.5"  # the Styler's data as text
+    output = capfd.readouterr()
+    assert "without encryption" not in output.err + output.out, output.err[-2000:]
+
+
 def test_a_page_shows_outputs_and_no_code(tmp_path: Path) -> None:
     """Readers see what a cell prints, not the cell: no source, no In/Out prompts; the executed notebook keeps both."""
     page = _page(tmp_path, "shown", "marker_variable = 6 * 7", "print(marker_variable)")
@@ -100,8 +125,9 @@ def _recorded_parameters(executed: Path) -> dict[str, str]:
 def test_every_built_page_renders_again_to_the_same_bytes(pipeline_results: Path, tmp_path: Path,
                                                           monkeypatch: pytest.MonkeyPatch) -> None:
     """Same inputs, same bytes: each page of the built report, rendered again from the artefacts its executed
-    notebook names, is the same HTML file. Catches a random id in a page, such as the uuid a pandas Styler draws
-    for its table unless given one (the identifiability page's design and excluded-candidates tables did)."""
+    notebook names, is the same HTML file and the same executed notebook. Catches a random id in a page, such as the
+    uuid a pandas Styler draws for its table unless given one (the identifiability page's design and
+    excluded-candidates tables did), and a memory address in a table's plain-text form."""
     monkeypatch.chdir(pipeline_results.parent)  # the artefact paths are relative to the repository copy
     built = sorted((pipeline_results / "report" / "notebooks").glob("*.ipynb"))
     assert {p.stem for p in built} == {stem for stem, _ in PAGES + VALIDATION_PAGES}
@@ -113,3 +139,5 @@ def test_every_built_page_renders_again_to_the_same_bytes(pipeline_results: Path
             render_page(page, manager)
     for page in pages:
         assert page.html.read_bytes() == (pipeline_results / "report" / page.html.name).read_bytes(), page.html.name
+        assert page.executed.read_bytes() == (pipeline_results / "report" / "notebooks" / page.executed.name
+                                              ).read_bytes(), page.executed.name

@@ -6,7 +6,12 @@ rule benchmark_j_integrals:
         reference_table="tests/reference/j_integrals_mpmath.csv",
         code=code("benchmarks/j_integrals.py"),
     output:
-        csv="results/benchmarks/j_integrals.csv",
+        csv=report(
+            "results/benchmarks/j_integrals.csv",
+            caption="../report/benchmarks_tables.rst",
+            category="Benchmarks",
+            subcategory="Tables",
+        ),
         txt="results/benchmarks/j_integrals.txt",
     log:
         "results/logs/benchmark_j_integrals.log",
@@ -24,7 +29,12 @@ rule benchmark_simulate:
         kernels=rules.simulation_kernels.output[0],
         code=code("benchmarks/simulate.py"),
     output:
-        "results/benchmarks/simulate.txt",
+        report(
+            "results/benchmarks/simulate.txt",
+            caption="../report/benchmarks_tables.rst",
+            category="Benchmarks",
+            subcategory="Tables",
+        ),
     log:
         "results/logs/benchmark_simulate.log",
     priority: LONG_JOB_PRIORITY
@@ -43,7 +53,12 @@ rule benchmark_speed_vs_error:
         kernels=rules.simulation_kernels.output[0],
         code=code("benchmarks/speed_vs_error.py"),
     output:
-        csv="results/benchmarks/speed_vs_error.csv",
+        csv=report(
+            "results/benchmarks/speed_vs_error.csv",
+            caption="../report/benchmarks_tables.rst",
+            category="Benchmarks",
+            subcategory="Tables",
+        ),
         txt="results/benchmarks/speed_vs_error.txt",
         png=report(
             "results/benchmarks/speed_vs_error.png", caption="../report/speed_vs_error.rst", category="Benchmarks"

@@ -66,9 +66,21 @@ rule identifiability:
         fits=expand(rules.identifiability_fit.output[0], model=FITTED_LEVELS),
         code=code("identifiability"),
     output:
-        sensitivity="results/validation/identifiability/sensitivity.csv",
-        information="results/validation/identifiability/information.csv",
-        fits="results/validation/identifiability/fits.csv",
+        sensitivity=report(
+            "results/validation/identifiability/sensitivity.csv",
+            caption="../report/identifiability.rst",
+            category="Identifiability",
+        ),
+        information=report(
+            "results/validation/identifiability/information.csv",
+            caption="../report/identifiability.rst",
+            category="Identifiability",
+        ),
+        fits=report(
+            "results/validation/identifiability/fits.csv",
+            caption="../report/identifiability.rst",
+            category="Identifiability",
+        ),
     log:
         "results/logs/identifiability.log",
     priority: GATHER_PRIORITY
@@ -85,8 +97,16 @@ rule identifiability_design:
         sensitivity=expand(rules.pulloff_sensitivity.output[0], frequency=SENSITIVITY_JOBS),
         code=code("identifiability_design"),
     output:
-        design="results/validation/identifiability/design.csv",
-        candidates="results/validation/identifiability/candidates.csv",
+        design=report(
+            "results/validation/identifiability/design.csv",
+            caption="../report/identifiability.rst",
+            category="Identifiability",
+        ),
+        candidates=report(
+            "results/validation/identifiability/candidates.csv",
+            caption="../report/identifiability.rst",
+            category="Identifiability",
+        ),
     log:
         "results/logs/identifiability_design.log",
     priority: GATHER_PRIORITY
@@ -105,7 +125,11 @@ rule fit_coverage:
         code=code("fit_coverage"),
     output:
         fits="results/validation/identifiability/fit_coverage_fits.csv",
-        summary="results/validation/identifiability/fit_coverage.csv",
+        summary=report(
+            "results/validation/identifiability/fit_coverage.csv",
+            caption="../report/identifiability.rst",
+            category="Identifiability",
+        ),
     log:
         "results/logs/fit_coverage.log",
     benchmark:

@@ -133,15 +133,8 @@ for job, (index, pages) in REPORT_JOBS.items():
             unpack(partial(asked_report_inputs, job)),
         output:
             notebooks=[f"results/report/notebooks/{stem}.ipynb" for stem in pages],
-            pages=[
-                report(f"results/report/{stem}.html", caption="../report/page.rst", category="Report pages")
-                for stem in pages
-            ],
-            index=(
-                [report(f"results/report/{index}.html", caption="../report/page.rst", category="Report pages")]
-                if index
-                else []
-            ),
+            pages=[f"results/report/{stem}.html" for stem in pages],
+            index=[f"results/report/{index}.html"] if index else [],
         log:
             f"results/logs/{job}.log",
         priority: REPORT_PRIORITY.get(job, 0)

@@ -35,8 +35,18 @@ rule rigs_gather:
         parts=expand(rules.rigs_part.output[0], case=RIG_CASE_JOBS),
         code=code("rigs_gather"),
     output:
-        csv="results/validation/rig_comparison.csv",
-        summary="results/validation/rig_equivalence.csv",
+        csv=report(
+            "results/validation/rig_comparison.csv",
+            caption="../report/rigs_tables.rst",
+            category="Rigs",
+            subcategory="Tables",
+        ),
+        summary=report(
+            "results/validation/rig_equivalence.csv",
+            caption="../report/rigs_tables.rst",
+            category="Rigs",
+            subcategory="Tables",
+        ),
     log:
         "results/logs/rigs_gather.log",
     priority: GATHER_PRIORITY
@@ -51,7 +61,7 @@ rule rigs_plot:
         code=code("rigs_plot"),
     output:
         pdf="results/validation/rig_comparison.pdf",
-        png=report("results/validation/rig_comparison.png", caption="../report/rigs.rst", category="Validation"),
+        png=report("results/validation/rig_comparison.png", caption="../report/rigs.rst", category="Rigs"),
     log:
         "results/logs/rigs_plot.log",
     priority: GATHER_PRIORITY

@@ -9,8 +9,18 @@ rule validation_errors:
         grid=rules.simulation_rigid_grid.output[0],
         code=code("validation_errors"),
     output:
-        errors="results/validation/rigid_errors.csv",
-        summary="results/validation/rigid_error_summary.csv",
+        errors=report(
+            "results/validation/rigid_errors.csv",
+            caption="../report/validation_tables.rst",
+            category="Validation",
+            subcategory="Tables",
+        ),
+        summary=report(
+            "results/validation/rigid_error_summary.csv",
+            caption="../report/validation_tables.rst",
+            category="Validation",
+            subcategory="Tables",
+        ),
     log:
         "results/logs/validation_errors.log",
     # Under a second, and it gates the speed-against-error benchmark and the error maps.
@@ -43,7 +53,12 @@ rule validation_compliant:
         kernels=rules.simulation_kernels.output[0],
         code=code("validation_compliant"),
     output:
-        csv="results/validation/compliant_sweep.csv",
+        csv=report(
+            "results/validation/compliant_sweep.csv",
+            caption="../report/validation_tables.rst",
+            category="Validation",
+            subcategory="Tables",
+        ),
         curve="results/validation/compliant_sweep_refined.csv",
     log:
         "results/logs/validation_compliant.log",

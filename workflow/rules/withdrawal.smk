@@ -57,8 +57,18 @@ rule withdrawal_gather:
         slow_flow=rules.withdrawal_slow_flow.output[0],
         code=code("withdrawal_gather"),
     output:
-        csv="results/withdrawal/speed_sweep.csv",
-        limits="results/withdrawal/quasi_static_limits.csv",
+        csv=report(
+            "results/withdrawal/speed_sweep.csv",
+            caption="../report/withdrawal_tables.rst",
+            category="Withdrawal",
+            subcategory="Tables",
+        ),
+        limits=report(
+            "results/withdrawal/quasi_static_limits.csv",
+            caption="../report/withdrawal_tables.rst",
+            category="Withdrawal",
+            subcategory="Tables",
+        ),
     log:
         "results/logs/withdrawal_gather.log",
     priority: GATHER_PRIORITY
@@ -73,7 +83,7 @@ rule withdrawal_plot:
         code=code("withdrawal_plot"),
     output:
         pdf="results/withdrawal/speed_sweep.pdf",
-        png=report("results/withdrawal/speed_sweep.png", caption="../report/withdrawal.rst", category="Validation"),
+        png=report("results/withdrawal/speed_sweep.png", caption="../report/withdrawal.rst", category="Withdrawal"),
     log:
         "results/logs/withdrawal_plot.log",
     priority: GATHER_PRIORITY
