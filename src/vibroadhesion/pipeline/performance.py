@@ -23,7 +23,7 @@ J_INTEGRALS_TEXT = "benchmarks/j_integrals.txt"
 INTRO = """# Performance
 
 Written by `benchmarks/performance_table.py` from the artefacts of one `snakemake -c2 all validation` run on
-{machine}. Rerun it after a run to refresh the numbers; timings of a loaded machine move by 10–20 %, so compare two
+{machine} ({load}). Rerun it after a run to refresh the numbers; timings of a loaded machine move by 10–20 %, so compare two
 versions side by side in one session (`benchmarks/pipeline_time.py A B`: cold and no-op runs of two checkouts in
 turn, minimum and median of repeats), never against an older copy of this file. The accuracy of each method is
 machine-independent and stated in [findings.md](findings.md#accuracy-of-the-numerics).
@@ -42,6 +42,12 @@ def machine_line(results: Path) -> str:
     first = (results / J_INTEGRALS_TEXT).read_text(encoding="utf-8").splitlines()[0]
     machine = first.split(" on ", 1)[1] if " on " in first else first
     return re.sub(r", \d+ repeats in turn$", "", machine)
+
+
+def load_line(results: Path) -> str:
+    """The machine's load when the J-integral benchmark started, as it recorded it (its second line)."""
+    second = (results / J_INTEGRALS_TEXT).read_text(encoding="utf-8").splitlines()[1]
+    return second.split(": ", 1)[1] if ": " in second else second
 
 
 def rules_table(results: Path) -> pd.DataFrame:
@@ -77,7 +83,7 @@ def performance_markdown(results: str | Path) -> str:
     """The whole of docs/performance.md, from the artefacts under ``results``."""
     root = Path(results)
     return "\n".join([
-        INTRO.format(machine=machine_line(root)),
+        INTRO.format(machine=machine_line(root), load=load_line(root)),
         "## Jobs\n\nEach job of the run with a Snakemake `benchmark:` file (one run, interpreter start-up included).\n",
         _markdown(rules_table(root)),
         "## Model levels: speed against error\n\nAt the rig's 15 test conditions, each point solved 5 times per "
