@@ -22,11 +22,14 @@ J_INTEGRALS_TEXT = "benchmarks/j_integrals.txt"
 
 INTRO = """# Performance
 
-Written by `benchmarks/performance_table.py` from the artefacts of one `snakemake -c2 all validation` run on
-{machine} ({load}). Rerun it after a run to refresh the numbers; timings of a loaded machine move by 10–20 %, so compare two
+Written by `benchmarks/performance_table.py` from the artefacts of one `snakemake -c2 all validation` run.
+
+Machine: {machine}; {load}.
+
+Rerun the script after a run to refresh the numbers. Timings of a loaded machine move by 10–20 %: compare two
 versions side by side in one session (`benchmarks/pipeline_time.py A B`: cold and no-op runs of two checkouts in
-turn, minimum and median of repeats), never against an older copy of this file. The accuracy of each method is
-machine-independent and stated in [findings.md](findings.md#accuracy-of-the-numerics).
+turn, minimum and median of repeats), never against an older copy of this file. The accuracy of each method does not
+depend on the machine and is stated in [findings.md](findings.md#accuracy-of-the-numerics).
 """
 
 
