@@ -26,7 +26,7 @@ from conftest import PLAUSIBLE_FIVE, RADIUS, REDUCED_MODULUS
 
 from vibroadhesion.experiments import virtual_pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
-from vibroadhesion.pipeline import data, figures, front_page
+from vibroadhesion.pipeline import data, figures, front_page, page_figures
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.pages import write_index
 from vibroadhesion.pipeline.steps import fit as fit_step
@@ -175,7 +175,7 @@ def test_a_degenerate_data_set_gives_every_artefact_and_page_and_says_what_it_la
 def test_measured_against_predicted_without_a_prediction_says_so_instead_of_drawing_nan_limits() -> None:
     """One or two rows for three parameters: no level fits, the fit page's plot has no point to draw."""
     empty = pd.DataFrame({"level": [], "measured_mN": [], "predicted_mN": [], "range": []})
-    axes = figures.plot_measured_vs_predicted(empty).axes[0]
+    axes = page_figures.plot_measured_vs_predicted(empty).axes[0]
     assert [t.get_text() for t in axes.texts] == ["no model level fitted these rows:\nno prediction to compare with"]
 
 

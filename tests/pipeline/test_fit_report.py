@@ -17,7 +17,7 @@ import yaml
 from vibroadhesion.core import levels
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
-from vibroadhesion.pipeline import data, figures, fit_report, tables
+from vibroadhesion.pipeline import data, fit_report, page_figures, tables
 from vibroadhesion.pipeline.input_checks import schema_validator
 from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
 
@@ -228,7 +228,7 @@ def test_rows_outside_the_asymptotic_levels_range_are_flagged_in_table_plot_and_
     assert set(plotted.loc[plotted["range"] != "inside", "measured_mN"]) <= {150.0, 60.0}
     headers = fit_report.measured_vs_predicted_columns(table)
     assert headers["range"].header == "asymptotic levels' range" and headers["range"].format == "text"
-    fig = figures.plot_measured_vs_predicted(pd.DataFrame({
+    fig = page_figures.plot_measured_vs_predicted(pd.DataFrame({
         "level": ["a", "a"], "measured_mN": [170.0, 150.0], "predicted_mN": [171.0, 140.0],
         "range": ["inside", table["range"].iloc[3]]}))
     assert [t.get_text() for t in fig.axes[0].texts] == [f"A/a_m = {refined[3]:.2g} > 0.1"]
