@@ -184,6 +184,6 @@ def test_fig4_says_at_how_many_test_conditions_the_simulation_found_no_pulloff(
     table = pd.DataFrame({"model": ["leading", "leading"], "frequency_hz": [np.nan, np.nan], "h1_um": [0.0, 20.0],
                           "pulloff_ratio": [1.0, 2.0], "A_over_am": [0.0, 0.01]})
     measured = pd.DataFrame({"frequency_hz": [], "h1_um": [], "pulloff_mN": [], "source": []})
-    axes = figures.plot_fig4(table, measured, 57.27, pd.read_csv(virtual_at_absurd_parameters)).axes[0]
+    fig = figures.plot_fig4(table, measured, 57.27, pd.read_csv(virtual_at_absurd_parameters))
     assert ("SIMULATED pull-off: none at 1 of 1 test conditions\n(budget_exceeded at 1)"
-            in [t.get_text() for t in axes.get_legend().get_texts()])
+            in [t.get_text() for t in fig.legends[0].get_texts()])

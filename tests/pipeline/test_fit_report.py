@@ -232,7 +232,7 @@ def test_rows_outside_the_asymptotic_levels_range_are_flagged_in_table_plot_and_
         "level": ["a", "a"], "measured_mN": [170.0, 150.0], "predicted_mN": [171.0, 140.0],
         "range": ["inside", table["range"].iloc[3]]}))
     assert [t.get_text() for t in fig.axes[0].texts] == [f"A/a_m = {refined[3]:.2g} > 0.1"]
-    assert "outside the asymptotic levels' range" in [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert "outside the asymptotic levels' range" in [t.get_text() for t in fig.legends[0].get_texts()]
 
 
 @pytest.mark.parametrize("rows", [0, 3])

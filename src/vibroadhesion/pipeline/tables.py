@@ -150,21 +150,82 @@ def specs(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
     for name in frame.columns:
         spec = column(str(name), columns, relative)
         listed = (columns and name in columns) or name in COLUMNS
-        out[str(name)] = spec if listed or pd.api.types.is_numeric_dtype(frame[name]) else replace(spec, format="text")
+        numeric = pd.api.types.is_numeric_dtype(frame[name]) and not pd.api.types.is_bool_dtype(frame[name])
+        out[str(name)] = spec if listed or numeric else replace(spec, format="text")
     return out
 
 
 def formatted(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
               relative: bool = False) -> pd.DataFrame:
-    """``frame`` as the page shows it: strings, headers ``label (unit)``, the index (if named) as leading columns."""
+    """``frame`` as the page shows it: strings, headers ``label (unit)``, the index (if named) as leading columns.
+
+    A ``sig`` column has one number format (:func:`uniform`); a status column reads in words (:func:`status_words`).
+    """
     if frame.index.names != [None]:
         frame = frame.reset_index()
-    return pd.DataFrame({spec.header: [_cell(value, spec.format) for value in frame[name]]
-                         for name, spec in specs(frame, columns, relative).items()})
+    out = {}
+    for name, spec in specs(frame, columns, relative).items():
+        values = list(frame[name])
+        if name.endswith("status"):
+            values = [status_words(v) if isinstance(v, str) else v for v in values]
+        out[spec.header] = uniform(values) if spec.format == "sig" else [_cell(v, spec.format) for v in values]
+    return pd.DataFrame(out)
+
+
+#: Status codes of the artefacts as a reader says them (others: underscores read as spaces).
+STATUS_WORDS = {"pulloff": "pull-off found", "pull-off pulloff": "pull-off found", "ok": "ok"}
+
+
+def status_words(status: str) -> str:
+    """A status of an artefact in words: ``ok; pull-off pulloff`` -> ``ok; pull-off found``.
+
+    Each part of a status joined by "; " alike; a code not in :data:`STATUS_WORDS` reads with spaces for underscores
+    (``contact_loss`` -> ``contact loss``).
+    """
+    return "; ".join(STATUS_WORDS.get(part, part.replace("_", " ")) for part in status.split("; "))
+
+
+def uniform(values: list[object]) -> list[str]:
+    """A column of numbers in one format: each to at least :data:`SIGNIFICANT` significant figures.
+
+    Whole numbers below 1e5 as such; else, where every number lies in 1e-3 to 1e5 (or is 0), the same decimals for
+    all (the most that one needs: :func:`_decimals`), unless the largest would then show more than ``SIGNIFICANT + 2`` figures; else
+    scientific notation with the same mantissa digits for all (those the most precise needs, at most
+    ``SIGNIFICANT``). Missing numbers read :data:`MISSING`, words as they are.
+    """
+    numbers = [x for x in map(_number, values) if x is not None]
+    nonzero = [abs(x) for x in numbers if x != 0]
+    if all(x.is_integer() and abs(x) < 1e5 for x in numbers):
+        fmt = "{:.0f}"
+    elif all(1e-3 <= x < 1e5 for x in nonzero):
+        decimals = max(_decimals(x) for x in nonzero)
+        too_many = math.floor(math.log10(max(nonzero))) + 1 + decimals > SIGNIFICANT + 2
+        fmt = _scientific(nonzero) if too_many else f"{{:.{decimals}f}}"
+    else:
+        fmt = _scientific(nonzero)
+    return [fmt.format(x) if (x := _number(v)) is not None else _cell(v, "text") for v in values]
+
+
+def _decimals(x: float) -> int:
+    """The decimals that show ``x`` to :data:`SIGNIFICANT` figures, or fewer where they show it exactly (44.5)."""
+    needed = max(0, SIGNIFICANT - 1 - math.floor(math.log10(float(f"{x:.{SIGNIFICANT}g}"))))
+    return next((d for d in range(needed) if float(f"{x:.{d}f}") == x), needed)
+
+
+def _scientific(magnitudes: list[float]) -> str:
+    """The scientific format of a column: the mantissa digits that the most precise of ``magnitudes`` needs.
+
+    The fewest (up to :data:`SIGNIFICANT` figures) that show a value exactly, else :data:`SIGNIFICANT`.
+    """
+    digits = max((next((k for k in range(SIGNIFICANT - 1) if float(f"{x:.{k}e}") == x), SIGNIFICANT - 1)
+                  for x in magnitudes), default=0)
+    return f"{{:.{digits}e}}"
 
 
 def _cell(value: object, format: Format) -> str:
-    """One cell in ``format`` (see the module docstring)."""
+    """One cell in ``format`` (see the module docstring); a boolean as yes or no."""
+    if isinstance(value, (bool, np.bool_)):
+        return "yes" if value else "no"
     if format == "text":
         return MISSING if _missing(value) else str(value)
     if format == "int":
