@@ -102,14 +102,15 @@ def test_a_column_of_words_not_listed_is_text_aligned_left() -> None:
 
 
 def test_a_column_of_numbers_has_one_format() -> None:
-    """Issue 27's rigs table: 60.00, 100.0 and 20 in one column read 60.00, 100.00, 20.00 (the decimals 20 needs for
-    four figures); whole numbers stay whole; a column spanning 1e-6 to 1 is scientific throughout, with the digits
-    its most precise value needs."""
-    assert tables.uniform([59.99999, 100.00001, 20.0]) == ["60.00", "100.00", "20.00"]
+    """Issue 27's rigs table: 60.00, 100.0 and 20 in one column read 60.00, 100.0, 20.00 (four figures each); whole
+    numbers stay whole; a value with fewer figures is not padded where no other needs more; a column spanning 1e-6
+    to 1 is scientific throughout."""
+    assert tables.uniform([59.99999, 100.00001, 20.0]) == ["60.00", "100.0", "20.00"]
     assert tables.uniform([20.0, 40.0, float("nan")]) == ["20", "40", tables.MISSING]
+    assert tables.uniform([44.5, float("nan")]) == ["44.5", tables.MISSING]
     assert tables.uniform([1.494, 2.753e-06, 0.25]) == ["1.494e+00", "2.753e-06", "2.500e-01"]
     assert tables.uniform([100.0, 1e4, 1e6, 1e9]) == ["1e+02", "1e+04", "1e+06", "1e+09"]
-    assert tables.uniform([0.001234, 5000.5]) == ["1.234e-03", "5.000e+03"]  # 5000.500000 would show 10 figures
+    assert tables.uniform([2.0236, 42.36, 4432.4]) == ["2.024", "42.36", "4432"]
 
 
 def test_booleans_and_statuses_read_as_words() -> None:

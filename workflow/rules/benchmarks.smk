@@ -24,14 +24,15 @@ rule benchmark_simulate:
         kernels=rules.simulation_kernels.output[0],
         code=code("benchmarks/simulate.py"),
     output:
-        "results/benchmarks/simulate.txt",
+        txt="results/benchmarks/simulate.txt",
+        csv="results/benchmarks/simulate.csv",
     log:
         "results/logs/benchmark_simulate.log",
     priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:
-        "{params.python:q} {input.script:q} {output:q} > {log:q} 2>&1"
+        "{params.python:q} {input.script:q} {output.txt:q} {output.csv:q} > {log:q} 2>&1"
 
 
 rule benchmark_speed_vs_error:

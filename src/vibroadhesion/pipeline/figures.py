@@ -29,6 +29,7 @@ from vibroadhesion.core.integrals import j_integrals_large_Abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
 from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 from vibroadhesion.pipeline.data import SPEED_COLUMN  # noqa: E402
+from vibroadhesion.pipeline.leads import coinciding_frequencies  # noqa: E402
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
@@ -90,15 +91,17 @@ def _legend_outside_applicability(ax: Axes, A_over_am: pd.Series) -> None:
 
 
 class PlainLogFormatter(LogFormatterSciNotation):
-    """Tick labels of a log axis as plain numbers (``30``, ``0.5``) from 1e-3 to 1e5, as powers of ten outside.
+    """Tick labels of a log axis as plain numbers (``30``, ``0.001``) where the axis lies within 1e-4 to 1e5.
 
-    Which ticks are labelled is matplotlib's choice for log axes (minor ticks only where the axis spans few decades).
+    An axis reaching beyond reads in powers of ten throughout (``10⁹``, not ``10000`` beside ``10⁵``). Which ticks are
+    labelled is matplotlib's choice for log axes (minor ticks only where the axis spans few decades).
     """
 
     def __call__(self, x: float, pos: int | None = None) -> str:
         """The label of the tick at ``x``: empty where matplotlib leaves it out."""
         label = str(super().__call__(x, pos))
-        if label and 1e-3 <= abs(x) < 1e5:
+        low, high = sorted(abs(v) for v in self.axis.get_view_interval()) if self.axis else (x, x)
+        if label and 1e-4 <= low and high < 1e5:
             return self.fix_minus(f"{x:g}")
         return label
 
@@ -208,25 +211,6 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     _legend_outside_applicability(ax, refined["A_over_am"])
     legend_below(fig, [ax], ncol=2, fontsize=7)
     return fig
-
-
-#: Curves closer than this share of the plot's height lie under one another at the page's size (a line's width).
-COINCIDE = 0.005
-
-
-def coinciding_frequencies(table: pd.DataFrame) -> list[float]:
-    """The test frequencies whose refined curve of Fig. 4 (Eq. 106) is hidden under the leading order (Eqs. 71-72).
-
-    Hidden: within :data:`COINCIDE` of the plot's height from the leading-order curve at every h1.
-    """
-    lead = table[table["model"] == "leading"].set_index("h1_um")["pulloff_ratio"]
-    height = float(table["pulloff_ratio"].max())
-    out = []
-    for f, rows in table[table["model"] == "refined"].groupby("frequency_hz", sort=True):
-        gap = (rows.set_index("h1_um")["pulloff_ratio"] - lead.reindex(rows["h1_um"])).abs()
-        if gap.notna().all() and float(gap.max()) <= COINCIDE * height:
-            out.append(float(f))
-    return out
 
 
 def _note_missing_simulation(ax: Axes, virtual: pd.DataFrame, drawn: int) -> None:

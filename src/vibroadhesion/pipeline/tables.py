@@ -159,14 +159,15 @@ def formatted(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
               relative: bool = False) -> pd.DataFrame:
     """``frame`` as the page shows it: strings, headers ``label (unit)``, the index (if named) as leading columns.
 
-    A ``sig`` column has one number format (:func:`uniform`); a status column reads in words (:func:`status_words`).
+    A ``sig`` column has one number format (:func:`uniform`); a status or method column reads in words
+    (:func:`status_words`).
     """
     if frame.index.names != [None]:
         frame = frame.reset_index()
     out = {}
     for name, spec in specs(frame, columns, relative).items():
         values = list(frame[name])
-        if name.endswith("status"):
+        if name.endswith("status") or name == "method":
             values = [status_words(v) if isinstance(v, str) else v for v in values]
         out[spec.header] = uniform(values) if spec.format == "sig" else [_cell(v, spec.format) for v in values]
     return pd.DataFrame(out)
@@ -186,40 +187,34 @@ def status_words(status: str) -> str:
 
 
 def uniform(values: list[object]) -> list[str]:
-    """A column of numbers in one format: each to at least :data:`SIGNIFICANT` significant figures.
+    """A column of numbers in one format: the same significant figures and the same notation for every number.
 
-    Whole numbers below 1e5 as such; else, where every number lies in 1e-3 to 1e5 (or is 0), the same decimals for
-    all (the most that one needs: :func:`_decimals`), unless the largest would then show more than ``SIGNIFICANT + 2`` figures; else
-    scientific notation with the same mantissa digits for all (those the most precise needs, at most
-    ``SIGNIFICANT``). Missing numbers read :data:`MISSING`, words as they are.
+    Whole numbers below 1e5 as such. Else as many significant figures as the most precise value needs (at most
+    :data:`SIGNIFICANT`: 44.5 stays 44.5; 20, 59.99999 and 100.00001 read 20.00, 60.00 and 100.0), in plain notation
+    where every number lies in 1e-3 to 1e5 (or is 0), else all in scientific notation. Missing numbers read
+    :data:`MISSING`, words as they are.
     """
     numbers = [x for x in map(_number, values) if x is not None]
     nonzero = [abs(x) for x in numbers if x != 0]
     if all(x.is_integer() and abs(x) < 1e5 for x in numbers):
-        fmt = "{:.0f}"
-    elif all(1e-3 <= x < 1e5 for x in nonzero):
-        decimals = max(_decimals(x) for x in nonzero)
-        too_many = math.floor(math.log10(max(nonzero))) + 1 + decimals > SIGNIFICANT + 2
-        fmt = _scientific(nonzero) if too_many else f"{{:.{decimals}f}}"
-    else:
-        fmt = _scientific(nonzero)
-    return [fmt.format(x) if (x := _number(v)) is not None else _cell(v, "text") for v in values]
+        return [f"{x:.0f}" if (x := _number(v)) is not None else _cell(v, "text") for v in values]
+    digits = max((_figures(x) for x in nonzero), default=1)
+    plain = all(1e-3 <= x < 1e5 for x in nonzero)
+    return [(_plain(x, digits) if plain else f"{x:.{digits - 1}e}") if (x := _number(v)) is not None
+            else _cell(v, "text") for v in values]
 
 
-def _decimals(x: float) -> int:
-    """The decimals that show ``x`` to :data:`SIGNIFICANT` figures, or fewer where they show it exactly (44.5)."""
-    needed = max(0, SIGNIFICANT - 1 - math.floor(math.log10(float(f"{x:.{SIGNIFICANT}g}"))))
-    return next((d for d in range(needed) if float(f"{x:.{d}f}") == x), needed)
+def _figures(x: float) -> int:
+    """The significant figures that show ``x`` exactly, at most :data:`SIGNIFICANT`."""
+    return next((k for k in range(1, SIGNIFICANT) if float(f"{x:.{k}g}") == x), SIGNIFICANT)
 
 
-def _scientific(magnitudes: list[float]) -> str:
-    """The scientific format of a column: the mantissa digits that the most precise of ``magnitudes`` needs.
-
-    The fewest (up to :data:`SIGNIFICANT` figures) that show a value exactly, else :data:`SIGNIFICANT`.
-    """
-    digits = max((next((k for k in range(SIGNIFICANT - 1) if float(f"{x:.{k}e}") == x), SIGNIFICANT - 1)
-                  for x in magnitudes), default=0)
-    return f"{{:.{digits}e}}"
+def _plain(x: float, digits: int) -> str:
+    """``x`` to ``digits`` significant figures in plain notation, trailing zeros kept (``20.00``, ``100.0``)."""
+    if x == 0:
+        return f"{0:.{max(0, digits - 1)}f}"
+    rounded = float(f"{x:.{digits}g}")
+    return f"{rounded:.{max(0, digits - 1 - math.floor(math.log10(abs(rounded))))}f}"
 
 
 def _cell(value: object, format: Format) -> str:
