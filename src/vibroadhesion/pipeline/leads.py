@@ -57,7 +57,7 @@ def _percent_span(values: Iterable[float]) -> str:
 
 
 #: Curves closer than this share of the plot's height lie under one another at the page's size (a line's width).
-COINCIDE = 0.005
+COINCIDE = 0.01
 
 
 def coinciding_frequencies(table: pd.DataFrame) -> list[float]:
@@ -97,7 +97,8 @@ def fig4(fig_csv: Path_, virtual_csv: Path_, setup_json: Path_) -> str:
     virtual = pd.read_csv(virtual_csv)
     sim = virtual[(virtual["fixation"] == "rigid") & (virtual["model"] == "simulation")
                   & (virtual["status"] == "pulloff")]
-    hidden = ", so they lie under it in the figure" if coinciding_frequencies(table) else ""
+    under = coinciding_frequencies(table)
+    hidden = f", so at {'/'.join(f'{f:g}' for f in under)} Hz they lie under it in the figure" if under else ""
     text = (f"At the test amplitudes h1 = {_span(lead.index, 3)} µm the leading order predicts a pull-off "
             f"{_span(lead)} times the static JKR force; the refined curves at the test frequencies differ from it by "
             f"at most {significant(100 * float(np.nanmax(np.abs(gap))), 2)} %{hidden}.")

@@ -107,10 +107,14 @@ def plot_speed_vs_error(table: pd.DataFrame, repeats: int) -> Figure:
                 color=f"C{k}", ms=8, label=f"{entry.label} [{entry.cost}]")
     errors = table.loc[table["model"] != "simulation", "max_relative_error_vs_simulation"]
     compared = bool((errors > 0).any())  # NaN where the simulation has no steady state at any test condition
+    # a log axis only where the errors span a decade: over less it would carry two labelled ticks
+    decades = compared and float(errors[errors > 0].max() / errors[errors > 0].min()) > 10.0
     if not compared:
         ax.text(0.5, 0.5, "no level compared: the simulation found no steady state\nat the test conditions",
                 transform=ax.transAxes, ha="center", va="center", color="0.35")
-    ax.set(xscale="log", yscale="log" if compared else "linear",
+    if compared and not decades:
+        ax.set_ylim(0.0, 1.1 * float(errors.max()))
+    ax.set(xscale="log", yscale="log" if decades else "linear",
            xlabel=f"time per solved point (s): marker median, bar from the fastest of {repeats}",
            ylabel="largest relative error vs simulation", title="Speed against error at the test conditions")
     legend_below(fig, [ax], ncol=2, fontsize=7.5)

@@ -193,4 +193,5 @@ def speed_table(speed_csv: str | Path) -> pd.DataFrame:
 def benchmark_conditions(txt: str | Path) -> str:
     """The lines of a benchmark's text report before its table (machine, load, repeats), as one paragraph."""
     head = Path(txt).read_text(encoding="utf-8").split("\n\n")[0]
-    return " ".join(line.strip().rstrip(".") + "." for line in head.splitlines() if line.strip())
+    return " ".join(line.strip()[0].upper() + line.strip()[1:].rstrip(".") + "." for line in head.splitlines()
+                    if line.strip())
