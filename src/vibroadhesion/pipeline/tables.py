@@ -167,7 +167,7 @@ def formatted(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
     out = {}
     for name, spec in specs(frame, columns, relative).items():
         values = list(frame[name])
-        if name.endswith("status") or name == "method":
+        if name.partition(":")[0].endswith("status") or name == "method":
             values = [status_words(v) if isinstance(v, str) else v for v in values]
         out[spec.header] = uniform(values) if spec.format == "sig" else [_cell(v, spec.format) for v in values]
     return pd.DataFrame(out)
