@@ -250,7 +250,7 @@ def test_fit_page_renders_with_and_without_measured_rows(tmp_path: Path, rows: i
         render_page(page, manager)
     html = page.html.read_text(encoding="utf-8")
     if rows:
-        assert "0.236 [0.234, 0.239]" in html and "contact_loss_before_extremum" in html and "image/png" in html
+        assert "0.236 [0.234, 0.239]" in html and "contact loss before extremum" in html and "image/png" in html
         assert "All 3 rows lie inside the asymptotic levels" in html
     else:
         assert "holds no measured rows" in html and "Estimates per model level" not in html
