@@ -65,11 +65,12 @@ def coinciding_frequencies(table: pd.DataFrame) -> list[float]:
 
     Hidden: within :data:`COINCIDE` of the plot's height from the leading-order curve at every h1.
     """
-    lead = table[table["model"] == "leading"].set_index("h1_um")["pulloff_ratio"]
+    lead = table[table["model"] == "leading"].drop_duplicates("h1_um").set_index("h1_um")["pulloff_ratio"]
     height = float(table["pulloff_ratio"].max())
     out = []
     for f, rows in table[table["model"] == "refined"].groupby("frequency_hz", sort=True):
-        gap = (rows.set_index("h1_um")["pulloff_ratio"] - lead.reindex(rows["h1_um"])).abs()
+        gap = (rows["pulloff_ratio"].to_numpy() - lead.reindex(rows["h1_um"]).to_numpy())
+        gap = pd.Series(np.abs(gap))
         if gap.notna().all() and float(gap.max()) <= COINCIDE * height:
             out.append(float(f))
     return out
@@ -91,7 +92,7 @@ def fig4(fig_csv: Path_, virtual_csv: Path_, setup_json: Path_) -> str:
     """Fig. 4: the leading order, the refined curves and the SIMULATED pull-off at the test amplitudes."""
     table = pd.read_csv(fig_csv)
     tests = table[table["h1_um"].isin(list(read_canonical_setup(setup_json).amplitudes_um))]
-    lead = tests[tests["model"] == "leading"].set_index("h1_um")["pulloff_ratio"]
+    lead = tests[tests["model"] == "leading"].drop_duplicates("h1_um").set_index("h1_um")["pulloff_ratio"]
     refined = tests[tests["model"] == "refined"]
     gap = (refined["pulloff_ratio"].to_numpy() / lead.reindex(refined["h1_um"]).to_numpy() - 1)
     virtual = pd.read_csv(virtual_csv)
