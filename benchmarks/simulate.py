@@ -1,6 +1,8 @@
 """Benchmark: periodic steady states of the full model by shooting (vibroadhesion.simulation).
 
-Usage: python benchmarks/simulate.py [OUT_TXT] [--against PYTHON] [--compile]
+Usage: python benchmarks/simulate.py [OUT_TXT [OUT_CSV]] [--against PYTHON] [--compile]
+
+OUT_CSV: the table of cases, one row per case (the report's benchmarks page shows it).
 
 For each case it prints
 * the time per steady state (min and median of 5 of process CPU time, of 3 for a case slower than 0.5 s; median
@@ -37,11 +39,13 @@ import tempfile
 import time
 
 import numpy as np
+import pandas as pd
 
 from vibroadhesion.core.fixation import Fixation
 from vibroadhesion.core.problem import Problem
 from vibroadhesion.core.ratelaw import GentSchultz
 from vibroadhesion.experiments.benchmarking import load_average, load_note, machine_description
+from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.simulation import steady_state, transient
 
 CHI0, RADIUS, NU0 = 2.589e-2, 51.5e-3, 1.227e-5
@@ -234,3 +238,5 @@ if __name__ == "__main__":
     if args:
         with open(args[0], "w", encoding="utf-8") as fh:
             fh.write(text)
+    if len(args) > 1:
+        write_csv(pd.DataFrame(rows), args[1])

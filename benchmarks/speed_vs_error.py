@@ -20,7 +20,6 @@ import statistics
 import sys
 from functools import partial
 
-import matplotlib.pyplot as plt
 import pandas as pd
 
 from vibroadhesion.core import groups, levels
@@ -29,11 +28,10 @@ from vibroadhesion.experiments.benchmarking import load_average, load_note, mach
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.data import read_canonical_setup
 from vibroadhesion.pipeline.figures import save_figure
+from vibroadhesion.pipeline.page_figures import plot_speed_vs_error
 
 #: The registry's functions this script resolves (vibroadhesion.core.levels): the rigid steady states.
 LEVEL_FUNCTIONS = (("validation_rigid", "steady_state"),)
-#: Marker of each cost class of the registry in the figure (the classes the timings are grouped into).
-MARKERS: dict[levels.Cost, str] = {"algebraic": "o", "quadrature": "s", "simulation": "^"}
 #: Runs of each level per point.
 REPEATS = 5
 
@@ -86,27 +84,7 @@ def main(setup_json: str, errors_csv: str, out_csv: str, out_txt: str, out_png: 
     with open(out_txt, "w", encoding="utf-8") as fh:
         fh.write(text)
     print(text)
-    fig, ax = plt.subplots(figsize=(5.2, 3.8), layout="constrained")
-    for k, r in table.iterrows():
-        entry = levels.level(r["model"])
-        if r["model"] == "simulation":  # the reference: no error of its own to plot, only its time
-            ax.axvspan(r["seconds_per_point_min"], r["seconds_per_point_median"], color=f"C{k}", alpha=0.3)
-            ax.axvline(r["seconds_per_point_median"], color=f"C{k}", ls="--", lw=1.0,
-                       label=f"{entry.label} [{entry.cost}]: the reference (its time)")
-            continue
-        ax.plot([r["seconds_per_point_min"], r["seconds_per_point_median"]],
-                [r["max_relative_error_vs_simulation"]] * 2, "-", color=f"C{k}", lw=2.0)
-        ax.plot(r["seconds_per_point_median"], r["max_relative_error_vs_simulation"], MARKERS[entry.cost],
-                color=f"C{k}", ms=8, label=f"{entry.label} [{entry.cost}]")
-    errors = table.loc[table["model"] != "simulation", "max_relative_error_vs_simulation"]
-    compared = bool((errors > 0).any())  # NaN where the simulation has no steady state at any test condition
-    if not compared:
-        ax.text(0.5, 0.5, "no level compared: the simulation found no steady state\nat the test conditions",
-                transform=ax.transAxes, ha="center", va="center", color="0.35")
-    ax.set(xscale="log", yscale="log" if compared else "linear",
-           xlabel=f"time per solved point (s): marker median, bar from the fastest of {REPEATS}",
-           ylabel="largest relative error vs simulation", title="Speed against error at the test conditions")
-    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # beside the points
+    fig = plot_speed_vs_error(table, REPEATS)
     save_figure(fig, out_png.replace(".png", ".pdf"), out_png)
 
 

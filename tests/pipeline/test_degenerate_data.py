@@ -26,7 +26,7 @@ from conftest import PLAUSIBLE_FIVE, RADIUS, REDUCED_MODULUS
 
 from vibroadhesion.experiments import virtual_pulloff
 from vibroadhesion.experiments.pulloff import GentSchultzParameters
-from vibroadhesion.pipeline import data, figures, front_page
+from vibroadhesion.pipeline import data, figures, front_page, page_figures
 from vibroadhesion.pipeline.artefacts import write_csv
 from vibroadhesion.pipeline.pages import write_index
 from vibroadhesion.pipeline.steps import fit as fit_step
@@ -175,7 +175,7 @@ def test_a_degenerate_data_set_gives_every_artefact_and_page_and_says_what_it_la
 def test_measured_against_predicted_without_a_prediction_says_so_instead_of_drawing_nan_limits() -> None:
     """One or two rows for three parameters: no level fits, the fit page's plot has no point to draw."""
     empty = pd.DataFrame({"level": [], "measured_mN": [], "predicted_mN": [], "range": []})
-    axes = figures.plot_measured_vs_predicted(empty).axes[0]
+    axes = page_figures.plot_measured_vs_predicted(empty).axes[0]
     assert [t.get_text() for t in axes.texts] == ["no model level fitted these rows:\nno prediction to compare with"]
 
 
@@ -184,6 +184,6 @@ def test_fig4_says_at_how_many_test_conditions_the_simulation_found_no_pulloff(
     table = pd.DataFrame({"model": ["leading", "leading"], "frequency_hz": [np.nan, np.nan], "h1_um": [0.0, 20.0],
                           "pulloff_ratio": [1.0, 2.0], "A_over_am": [0.0, 0.01]})
     measured = pd.DataFrame({"frequency_hz": [], "h1_um": [], "pulloff_mN": [], "source": []})
-    axes = figures.plot_fig4(table, measured, 57.27, pd.read_csv(virtual_at_absurd_parameters)).axes[0]
+    fig = figures.plot_fig4(table, measured, 57.27, pd.read_csv(virtual_at_absurd_parameters))
     assert ("SIMULATED pull-off: none at 1 of 1 test conditions\n(budget_exceeded at 1)"
-            in [t.get_text() for t in axes.get_legend().get_texts()])
+            in [t.get_text() for t in fig.legends[0].get_texts()])

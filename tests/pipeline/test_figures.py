@@ -11,7 +11,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from vibroadhesion.pipeline import error_maps, figures
+from vibroadhesion.pipeline import error_maps, figures, leads
 
 #: A fold pair as in Fig. 5 at kappa = 0.001: two saddle-node points 5 % apart in omega_bar.
 FOLDS = (10.5, 11.0)
@@ -149,3 +149,20 @@ def test_fig4_fills_and_labels_rows_measured_at_a_withdrawal_speed(tmp_path: Pat
     labels = {line.get_label(): line.get_markerfacecolor() for line in fig.axes[0].lines}
     assert labels["lab, 200 Hz, withdrawn at V > 0"] != "none" and labels["lab, 400 Hz"] == "none"
     plt.close(fig)
+
+
+def test_fig4_names_the_refined_curves_hidden_under_the_leading_order() -> None:
+    """A refined curve within 1 % of the plot's height (0.3 here) of the leading order is said to be hidden; one
+    0.5 away (2.5 % of 20) is not. Hand-made curves: leading 1 to 20, refined at 200 Hz + 0.1, at 400 Hz + 0.5."""
+    h1 = np.array([0.0, 50.0, 100.0])
+    lead = pd.DataFrame({"model": "leading", "frequency_hz": np.nan, "h1_um": h1, "pulloff_ratio": [1.0, 8.0, 20.0]})
+    refined = [pd.DataFrame({"model": "refined", "frequency_hz": f, "h1_um": h1,
+                             "pulloff_ratio": [1.0 + d, 8.0 + d, 20.0 + d], "A_over_am": 0.01})
+               for f, d in ((200.0, 0.1), (400.0, 0.5))]
+    table = pd.concat([lead, *refined], ignore_index=True)
+    assert leads.coinciding_frequencies(table) == [200.0]
+    labels = [t.get_text() for t in figures.plot_fig4(table, pd.DataFrame(
+        {"frequency_hz": [], "h1_um": [], "pulloff_mN": [], "source": []}), 57.27).legends[0].get_texts()]
+    assert "refined, Eq. (106), 200 Hz (coincides with the leading order: hidden under it)" in labels
+    assert "refined, Eq. (106), 400 Hz" in labels
+    plt.close("all")

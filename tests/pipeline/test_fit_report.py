@@ -17,7 +17,7 @@ import yaml
 from vibroadhesion.core import levels
 from vibroadhesion.experiments.pulloff import GentSchultzParameters, predict_pulloff
 from vibroadhesion.models.refined import APPLICABILITY_LIMIT, VALIDATED_OMEGA_CHECK
-from vibroadhesion.pipeline import data, figures, fit_report, tables
+from vibroadhesion.pipeline import data, fit_report, page_figures, tables
 from vibroadhesion.pipeline.input_checks import schema_validator
 from vibroadhesion.pipeline.steps.report import Page, render_page, reset_namespace, shared_kernel
 
@@ -228,11 +228,11 @@ def test_rows_outside_the_asymptotic_levels_range_are_flagged_in_table_plot_and_
     assert set(plotted.loc[plotted["range"] != "inside", "measured_mN"]) <= {150.0, 60.0}
     headers = fit_report.measured_vs_predicted_columns(table)
     assert headers["range"].header == "asymptotic levels' range" and headers["range"].format == "text"
-    fig = figures.plot_measured_vs_predicted(pd.DataFrame({
+    fig = page_figures.plot_measured_vs_predicted(pd.DataFrame({
         "level": ["a", "a"], "measured_mN": [170.0, 150.0], "predicted_mN": [171.0, 140.0],
         "range": ["inside", table["range"].iloc[3]]}))
     assert [t.get_text() for t in fig.axes[0].texts] == [f"A/a_m = {refined[3]:.2g} > 0.1"]
-    assert "outside the asymptotic levels' range" in [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert "outside the asymptotic levels' range" in [t.get_text() for t in fig.legends[0].get_texts()]
 
 
 @pytest.mark.parametrize("rows", [0, 3])
@@ -250,7 +250,7 @@ def test_fit_page_renders_with_and_without_measured_rows(tmp_path: Path, rows: i
         render_page(page, manager)
     html = page.html.read_text(encoding="utf-8")
     if rows:
-        assert "0.236 [0.234, 0.239]" in html and "contact_loss_before_extremum" in html and "image/png" in html
+        assert "0.236 [0.234, 0.239]" in html and "contact loss before extremum" in html and "image/png" in html
         assert "All 3 rows lie inside the asymptotic levels" in html
     else:
         assert "holds no measured rows" in html and "Estimates per model level" not in html

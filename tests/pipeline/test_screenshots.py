@@ -23,6 +23,7 @@ import io
 import json
 import shutil
 import subprocess
+import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -53,16 +54,19 @@ pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="Chromium is not instal
 PROBE = """<script>
 window.addEventListener("load", () => {
   const page = document.documentElement;
-  const tables = [...document.querySelectorAll("table")].map((table) => {
+  const narrowerBoxes = (element) => {
     const narrower = [];
-    for (let box = table.parentElement; box && box !== page; box = box.parentElement) {
+    for (let box = element.parentElement; box && box !== page; box = box.parentElement) {
       if (box.scrollWidth > box.clientWidth + 1) narrower.push(box.tagName + "." + box.className);
     }
-    return {head: (table.rows[0] ? table.rows[0].innerText : "").slice(0, 80),
-            right: table.getBoundingClientRect().right, narrower: narrower};
-  });
+    return narrower;
+  };
+  const tables = [...document.querySelectorAll("table")].map((table) => (
+    {head: (table.rows[0] ? table.rows[0].innerText : "").slice(0, 80),
+     right: table.getBoundingClientRect().right, narrower: narrowerBoxes(table)}));
   const images = [...document.images].map((img) => ({src: img.src, complete: img.complete,
-    width: img.naturalWidth, height: img.naturalHeight}));
+    width: img.naturalWidth, height: img.naturalHeight, right: img.getBoundingClientRect().right,
+    narrower: narrowerBoxes(img)}));
   const code = document.querySelectorAll(
     ".jp-InputPrompt, .jp-OutputPrompt, .jp-InputArea-editor, .jp-CodeMirrorEditor, .input_prompt, .highlight").length;
   const prompts = (document.body.innerText.match(/(In|Out)\\s*\\[\\s*\\d*\\s*\\]\\s*:/g) || []).length;
@@ -192,16 +196,60 @@ def test_page_shows_no_code(rendered: dict[str, Rendering], name: str) -> None:
 
 
 @pytest.mark.parametrize("name", PAGE_NAMES)
-def test_no_table_is_wider_than_its_room(rendered: dict[str, Rendering], name: str) -> None:
-    """At 1200 pixels every table fits: neither clipped nor behind a scroll bar; the page does not scroll sideways."""
+def test_no_table_or_figure_is_wider_than_its_room(rendered: dict[str, Rendering], name: str) -> None:
+    """At 1200 pixels every table and figure fits: neither clipped nor behind a scroll bar; no sideways scroll."""
     probe = rendered[name].probe
     assert _wide_tables(probe) == []
+    assert _wide_tables(probe, "images") == []
     assert probe["pageWidth"] <= probe["viewport"]
 
 
-def _wide_tables(probe: dict[str, Any]) -> list[dict[str, Any]]:
-    """The tables that reach past the window or make a box around them scroll (clipped or behind a scroll bar)."""
-    return [t for t in probe["tables"] if t["narrower"] or t["right"] > probe["viewport"] + 1]
+def _wide_tables(probe: dict[str, Any], kind: str = "tables") -> list[dict[str, Any]]:
+    """The tables (or images) that reach past the window or make a box around them scroll (clipped or behind a
+    scroll bar)."""
+    return [t for t in probe[kind] if t["narrower"] or t["right"] > probe["viewport"] + 1]
+
+
+#: Six rows for data/pulloff.csv of a copy (never of this checkout's data/): pull-off forces of the virtual
+#: experiment at 200/300/400 Hz and 20/60 µm, labelled "simulated" as every simulated row must be.
+SIX_SIMULATED_ROWS = ("200.0,20.0,173.472524,simulated\n200.0,60.0,737.961579,simulated\n"
+                      "300.0,20.0,173.452498,simulated\n300.0,60.0,735.731205,simulated\n"
+                      "400.0,20.0,174.448593,simulated\n400.0,60.0,755.242568,simulated\n")
+#: The pages that show the measured rows (the figure index, Figs. 4 and 7, the fit page): rebuilt with the rows.
+PAGES_WITH_ROWS = ["index", "fig4", "fig7", "fit"]
+
+
+@pytest.fixture(scope="module")
+def rendered_with_rows(pipeline_results: Path, tmp_path_factory: pytest.TempPathFactory) -> dict[str, Rendering]:
+    """:data:`PAGES_WITH_ROWS` of the default target rebuilt with six simulated rows in a copy of the finished run.
+
+    The copy keeps the run's results and Snakemake's records, so only the jobs the rows change run again (ingest,
+    fit, the fitted virtual pull-off, Figs. 4 and 7 and their pages).
+    """
+    copy = tmp_path_factory.mktemp("with-rows") / "repository"
+    shutil.copytree(pipeline_results.parent, copy, symlinks=True,
+                    ignore=shutil.ignore_patterns(".venv", ".git", "test-output"))
+    with (copy / "data/pulloff.csv").open("a", encoding="utf-8") as rows:
+        rows.write(SIX_SIMULATED_ROWS)
+    out = subprocess.run([str(Path(sys.prefix) / "bin" / "snakemake"), "-c2"], cwd=copy, capture_output=True,
+                         text=True, timeout=3600)
+    assert out.returncode == 0, f"snakemake failed:\n{out.stdout[-3000:]}\n{out.stderr[-5000:]}"
+    work = tmp_path_factory.mktemp("chromium-with-rows")
+    return {name: render(copy / "results/report" / f"{name}.html", work, SCREENSHOTS / f"{name}-six-rows.png")
+            for name in PAGES_WITH_ROWS}
+
+
+@pytest.mark.parametrize("name", PAGES_WITH_ROWS)
+def test_pages_with_measured_rows_fit_the_window(rendered_with_rows: dict[str, Rendering], name: str) -> None:
+    """With six rows the fit page's table of measured against predicted and the figures still fit 1200 pixels."""
+    probe = rendered_with_rows[name].probe
+    assert _wide_tables(probe) == [] and _wide_tables(probe, "images") == []
+    assert probe["pageWidth"] <= probe["viewport"]
+    assert rendered_with_rows[name].requests == [] and probe["code"] == 0 and probe["prompts"] == 0
+    for image in probe["images"]:
+        assert image["complete"] and not _blank(_image_pixels(image["src"])), image["src"][:100]
+    if name in ("fig4", "fit"):
+        assert "simulated" in probe["text"]  # the rows' source, shown with them
 
 
 def _image_pixels(src: str) -> np.ndarray:

@@ -69,8 +69,8 @@ def test_a_table_has_no_index_and_keeps_the_index_levels_as_columns() -> None:
     html = table._repr_html_()
     assert "141" not in html and "161" not in html  # the pandas index is not shown
     assert list(table.frame.columns) == ["f (Hz)", "h1 (µm)", "refined", "refined error", "status"]
-    assert table.frame.iloc[1].tolist() == ["300", "40", "4.753", "-3.61e-01", "contact_loss"]
-    assert '<td style="text-align: left">contact_loss</td>' in html
+    assert table.frame.iloc[1].tolist() == ["300", "40", "4.753", "-3.61e-01", "contact loss"]
+    assert '<td style="text-align: left">contact loss</td>' in html
     pivoted = tables.show(frame.set_index(["frequency_hz", "h1_um"]))
     assert list(pivoted.frame.columns)[:2] == ["f (Hz)", "h1 (µm)"]
     assert "141" not in repr(table)
@@ -99,3 +99,20 @@ def test_a_column_of_words_not_listed_is_text_aligned_left() -> None:
     table = tables.show(pd.DataFrame({"method": ["fixed rule (72 nodes)"], "evals_per_s": [3.163e6]}))
     assert table.frame.iloc[0].tolist() == ["fixed rule (72 nodes)", "3.163e+06"]
     assert table.left == frozenset({"method"})
+
+
+def test_a_column_of_numbers_has_one_format() -> None:
+    """Issue 27's rigs table: 60.00, 100.0 and 20 in one column read 60.00, 100.0, 20.00 (four figures each); whole
+    numbers stay whole; a value with fewer figures is not padded where no other needs more; a column spanning 1e-6
+    to 1 is scientific throughout."""
+    assert tables.uniform([59.99999, 100.00001, 20.0]) == ["60.00", "100.0", "20.00"]
+    assert tables.uniform([20.0, 40.0, float("nan")]) == ["20", "40", tables.MISSING]
+    assert tables.uniform([44.5, float("nan")]) == ["44.5", tables.MISSING]
+    assert tables.uniform([1.494, 2.753e-06, 0.25]) == ["1.494e+00", "2.753e-06", "2.500e-01"]
+    assert tables.uniform([100.0, 1e4, 1e6, 1e9]) == ["1e+02", "1e+04", "1e+06", "1e+09"]
+    assert tables.uniform([2.0236, 42.36, 4432.4]) == ["2.024", "42.36", "4432"]
+
+
+def test_booleans_and_statuses_read_as_words() -> None:
+    frame = pd.DataFrame({"stable": [True, False], "status": ["ok; pull-off pulloff", "budget_exceeded"]})
+    assert tables.formatted(frame).values.tolist() == [["yes", "ok; pull-off found"], ["no", "budget exceeded"]]

@@ -29,8 +29,14 @@ rule benchmark_simulate:
         kernels=rules.simulation_kernels.output[0],
         code=code("benchmarks/simulate.py"),
     output:
-        report(
+        txt=report(
             "results/benchmarks/simulate.txt",
+            caption="../report/benchmarks_tables.rst",
+            category="Benchmarks",
+            subcategory="Tables",
+        ),
+        csv=report(
+            "results/benchmarks/simulate.csv",
             caption="../report/benchmarks_tables.rst",
             category="Benchmarks",
             subcategory="Tables",
@@ -41,7 +47,7 @@ rule benchmark_simulate:
     params:
         python=PYTHON,
     shell:
-        "{params.python:q} {input.script:q} {output:q} > {log:q} 2>&1"
+        "{params.python:q} {input.script:q} {output.txt:q} {output.csv:q} > {log:q} 2>&1"
 
 
 rule benchmark_speed_vs_error:

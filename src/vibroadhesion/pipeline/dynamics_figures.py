@@ -68,7 +68,7 @@ def plot_rig_comparison(table: pd.DataFrame) -> Figure:
     anti-resonance the force rig at F1 = k h1 (triangles; leading order dashed). Right: |1 - omega_bar^2 +
     2 i zeta omega_bar| (Eqs. 22, 65), 0 at the undamped anti-resonance, with the frequencies of the table.
     """
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 3.8), layout="constrained")
+    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 5.0), layout="constrained")
     zeta = float(table["zeta"].max())
     damped = table[table["zeta"] == zeta]
     for k, (frequency, rows) in enumerate(damped.groupby("frequency_hz")):
@@ -98,5 +98,5 @@ def plot_rig_comparison(table: pd.DataFrame) -> Figure:
     right.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$",
               ylabel=r"$F_1/(k h_1)$ at equal contact amplitude", ylim=(1e-3, None))
     right.legend(fontsize=7)
-    left.legend(fontsize=6, loc="upper left", bbox_to_anchor=(0.0, -0.18), ncol=2)
+    legend_below(fig, [left], ncol=2, fontsize=6.5)
     return fig

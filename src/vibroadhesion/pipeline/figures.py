@@ -3,8 +3,9 @@
 Each ``plot_figN`` draws the table that :mod:`vibroadhesion.experiments.figure_tables` computed (and nothing it
 would have to recompute with a solver), so restyling a plot never reruns a solve. :func:`save_figure` writes PDF and
 PNG without time stamps. With :mod:`vibroadhesion.pipeline.error_maps` (the validation's error maps, in this
-style) and :mod:`vibroadhesion.pipeline.dynamics_figures` (the withdrawal speed and the two rigs), the only
-modules of the package that import matplotlib.
+style), :mod:`vibroadhesion.pipeline.dynamics_figures` (the withdrawal speed and the two rigs) and
+:mod:`vibroadhesion.pipeline.page_figures` (the compliant sweep, measured against predicted, speed against error),
+the only modules of the package that import matplotlib.
 """
 
 from __future__ import annotations
@@ -22,11 +23,13 @@ import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
+from matplotlib.ticker import LogFormatterSciNotation  # noqa: E402
 
 from vibroadhesion.core.integrals import j_integrals_large_Abar  # noqa: E402
 from vibroadhesion.experiments.figure_tables import APPLICABILITY_LIMIT  # noqa: E402
 from vibroadhesion.pipeline.atomic import atomic_path  # noqa: E402
 from vibroadhesion.pipeline.data import SPEED_COLUMN  # noqa: E402
+from vibroadhesion.pipeline.leads import coinciding_frequencies  # noqa: E402
 
 if TYPE_CHECKING:
     from matplotlib.typing import RcKeyType
@@ -87,13 +90,40 @@ def _legend_outside_applicability(ax: Axes, A_over_am: pd.Series) -> None:
                 "outside the asymptotic model (Sec. 3.5.3)")
 
 
+class PlainLogFormatter(LogFormatterSciNotation):
+    """Tick labels of a log axis as plain numbers (``30``, ``0.001``) where the axis lies within 1e-4 to 1e5.
+
+    An axis reaching beyond reads in powers of ten throughout (``10⁹``, not ``10000`` beside ``10⁵``). Which ticks are
+    labelled is matplotlib's choice for log axes (minor ticks only where the axis spans few decades).
+    """
+
+    def __call__(self, x: float, pos: int | None = None) -> str:
+        """The label of the tick at ``x``: empty where matplotlib leaves it out."""
+        label = str(super().__call__(x, pos))
+        low, high = sorted(abs(v) for v in self.axis.get_view_interval()) if self.axis else (x, x)
+        if label and 1e-4 <= low and high < 1e5:
+            return self.fix_minus(f"{x:g}")
+        return label
+
+
+def plain_log_labels(fig: Figure) -> Figure:
+    """Label every log axis of ``fig`` (panels and insets) with :class:`PlainLogFormatter`."""
+    for ax in [*fig.axes, *(child for panel in fig.axes for child in panel.child_axes)]:
+        for axis in (ax.xaxis, ax.yaxis):
+            if axis.get_scale() == "log":
+                axis.set_major_formatter(PlainLogFormatter())
+                axis.set_minor_formatter(PlainLogFormatter(labelOnlyBase=False))
+    return fig
+
+
 def save_figure(fig: Figure, pdf: str | Path, png: str | Path) -> None:
-    """Save ``fig`` as PNG and PDF without time stamps, then close it.
+    """Save ``fig`` as PNG and PDF without time stamps (log axes in plain numbers: :func:`plain_log_labels`), close it.
 
     The layout engine (constrained layout) places the axes for the PNG, the page's figure; the PDF keeps that
     layout (engine off for its draw) instead of solving it again: the two files show the same placement, and the
     second solve was a third of a figure's save time (Fig. 6: 80 tick labels per log axis measured each time).
     """
+    plain_log_labels(fig)
     with atomic_path(png) as tmp:
         fig.savefig(tmp, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
     fig.set_layout_engine("none")
@@ -155,13 +185,15 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
     experiment (its own, labelled series: not measurements), and the measured rows scaled by the same
     ``jkr_pulloff_mN``: coloured by frequency as the refined curve of that frequency, marked by source.
     """
-    fig, ax = plt.subplots(figsize=(7.8, 3.9), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7.8, 5.6), constrained_layout=True)
     lead = table[table["model"] == "leading"]
     ax.plot(lead["h1_um"], lead["pulloff_ratio"], "k-", lw=1.6, label="leading order, Eqs. (71)–(72)")
     refined = table[table["model"] == "refined"]
+    hidden = coinciding_frequencies(table)
     for k, (f, rows) in enumerate(refined.groupby("frequency_hz", sort=True)):
         plot_applicable(ax, rows["h1_um"], rows["pulloff_ratio"], rows["A_over_am"], "--", color=f"C{k}", lw=1.0,
-                        label=f"refined, Eq. (106), {f:g} Hz")
+                        label=f"refined, Eq. (106), {f:g} Hz" + (" (coincides with the leading order: hidden under "
+                                                                   "it)" if f in hidden else ""))
     exact = table[table["model"] == "exact_averaging"]
     ax.plot(exact["h1_um"], exact["pulloff_ratio"], "k:", lw=1.4,
             label=OMEGA_CHECK_LABEL_INF_EXACT)
@@ -177,7 +209,7 @@ def plot_fig4(table: pd.DataFrame, measurements: pd.DataFrame, jkr_pulloff_mN: f
                 va="top", fontsize=7.5, color="0.35")
     ax.set(xlabel=r"base amplitude $h_1$ (µm)", ylabel=r"$P_{cr}/P^{JKR}_{cr}$", xlim=(0, None), ylim=(0, None))
     _legend_outside_applicability(ax, refined["A_over_am"])
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data, not on it
+    legend_below(fig, [ax], ncol=2, fontsize=7)
     return fig
 
 
@@ -295,7 +327,7 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     ``jkr_pulloff_mN``, as in Fig. 4 (:func:`_plot_measured`), coloured by amplitude; a static test (no frequency)
     has no place on this axis: it is in Fig. 4 only.
     """
-    fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 3.6), constrained_layout=True)
+    fig, (ax_a, ax_b) = plt.subplots(1, 2, figsize=(9.0, 5.0), constrained_layout=True)
     for k, (h1, rows) in enumerate(_by_amplitude(table)):
         lead = leading[np.isclose(leading["h1_um"], h1)].iloc[0]
         for ax, column in ((ax_a, "Abar_cr"), (ax_b, "pulloff_ratio")):
@@ -322,7 +354,7 @@ def plot_fig7(table: pd.DataFrame, leading: pd.DataFrame, experiment_omega_check
     ax_b.plot([], [], "k--", lw=0.8, label=f"Eq. (72) ({OMEGA_CHECK} " + r"$\to \infty$)")
     ax_b.plot([], [], "k:", lw=1.0, label="exact averaging, $a_m = a_{cr}$")
     _legend_outside_applicability(ax_b, table["A_over_am"])
-    ax_b.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    legend_below(fig, [ax_b, ax_a], ncol=3, fontsize=7)
     return fig
 
 
@@ -405,73 +437,9 @@ def fold_inset(ax: Axes, curves: pd.DataFrame, folds: pd.DataFrame) -> Axes:
     return inset
 
 
-# --- Validation: every model level against the simulation ------------------------------------
-
-
-def plot_compliant_sweep(sweep: pd.DataFrame, curve: pd.DataFrame) -> Figure:
-    """A/a_m against omega_bar through the folded resonance.
-
-    The refined model's traced curve and the simulated orbits swept up and down (open markers: unstable orbit,
-    |Floquet multiplier| > 1).
-    """
-    fig, ax = plt.subplots(figsize=(6.0, 4.2), layout="constrained")
-    for j, (_, seg) in enumerate(curve.groupby("branch", sort=False)):
-        ax.plot(seg["omega_bar"], seg["A_over_am"], "k-", lw=1.0,
-                label="refined model, Eqs. (87), (90)" if j == 0 else None)
-    sim = sweep[(sweep["model"] == "simulation") & sweep["A_over_am"].notna()]
-    for direction, marker, color in (("up", "^", "C0"), ("down", "v", "C3")):
-        rows = sim[sim["direction"] == direction]
-        stable = rows["stable"].astype(bool)
-        ax.plot(rows.loc[stable, "omega_bar"], rows.loc[stable, "A_over_am"], marker, color=color, ms=5, ls="none",
-                label=f"simulation, sweep {direction}")
-        ax.plot(rows.loc[~stable, "omega_bar"], rows.loc[~stable, "A_over_am"], marker, color=color, mfc="none", ms=5,
-                ls="none", label=f"simulation, sweep {direction}, unstable orbit")
-    ax.set(xscale="log", yscale="log", xlabel=r"$\bar\omega = \omega/\omega_0$", ylabel=r"$A/a_m$",
-           xlim=(sweep["omega_bar"].min(), sweep["omega_bar"].max()))
-    shade_amplitude_regions(ax)
-    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0)  # beside the data
-    return fig
-
-
-# --- The fit page -----------------------------------------------------------------------------
-
-def plot_measured_vs_predicted(predictions: pd.DataFrame) -> Figure:
-    """Predicted against measured pull-off force (mN), one marker per model level, and the 1:1 line.
-
-    ``predictions`` has columns level, measured_mN, predicted_mN (:func:`vibroadhesion.pipeline.fit_report.
-    long_predictions`); each level's prediction is |P_cr| of its own fit (Eq. 71 or the simulated pull-off). With
-    a ``range`` column, the rows outside the asymptotic levels' range (not ``inside``) are crossed in red and
-    labelled once with why (e.g. ``A/a_m = 0.23 > 0.1``). Without any prediction (no level fitted the rows: one or
-    two rows for three parameters) the axes say so instead.
-    """
-    fig, ax = plt.subplots(figsize=(5.6, 3.6), layout="constrained")
-    values = pd.to_numeric(pd.concat([predictions["measured_mN"], predictions["predicted_mN"]]), errors="coerce")
-    if not np.isfinite(values).any():
-        ax.text(0.5, 0.5, "no model level fitted these rows:\nno prediction to compare with", ha="center",
-                va="center", transform=ax.transAxes, color="0.35")
-        ax.set(xticks=[], yticks=[], xlabel="measured |P_cr| (mN)", ylabel="predicted |P_cr| (mN)")
-        return fig
-    span = (0.0, 1.05 * float(values[np.isfinite(values)].max()))
-    ax.plot(span, span, "-", color="0.6", lw=1.0, label="1:1 (predicted = measured)")
-    for k, (level, rows) in enumerate(predictions.groupby("level", sort=False)):
-        ax.plot(rows["measured_mN"], rows["predicted_mN"], "os^Dv<>p"[k % 8], mfc="none", color=f"C{k}", ms=6,
-                ls="none", label=str(level))
-    outside = predictions[predictions.get("range", pd.Series("inside", index=predictions.index)) != "inside"]
-    if not outside.empty:
-        ax.plot(outside["measured_mN"], outside["predicted_mN"], "x", color="red", ms=8, ls="none",
-                label="outside the asymptotic levels' range")
-        for row in outside.drop_duplicates(["measured_mN", "range"]).itertuples():
-            ax.annotate(str(row.range).partition(": ")[2], (row.measured_mN, row.predicted_mN), fontsize=6,
-                        color="red", xytext=(4, -8), textcoords="offset points")
-    ax.set(xlim=span, ylim=span, aspect="equal", xlabel="measured |P_cr| (mN)",
-           ylabel="predicted |P_cr| (mN)")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7, borderaxespad=0)  # beside the data
-    return fig
-
-
 def figure_png(fig: Figure) -> bytes:
     """``fig`` as PNG bytes without a time stamp (for a page that draws it inline), then close it."""
     buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
+    plain_log_labels(fig).savefig(buffer, format="png", metadata=_PNG_METADATA, bbox_inches="tight")
     plt.close(fig)
     return buffer.getvalue()

@@ -330,3 +330,28 @@ def speed_sentence(table: pd.DataFrame) -> str:
 def measured_rows(pulloff_csv: str | Path) -> pd.DataFrame:
     """The ingested rows (results/data/pulloff.csv) with the ``line`` the fit's residuals refer to."""
     return data.read_canonical_pulloff(pulloff_csv)
+
+
+#: The parts of :func:`measured_vs_predicted` a page shows as tables of their own (one would be wider than the page):
+#: heading, and the column-name prefixes of the part (each row also keeps its test conditions).
+MEASURED_VS_PREDICTED_PARTS = (
+    ("Pull-off force: measured and predicted by each level at its own fit", ("source", "pulloff_mN", "predicted_mN:")),
+    ("Relative residual of each level (predicted / measured − 1)", ("relative_residual:",)),
+    ("Status of each row's prediction per level", ("status:",)),
+    ("The asymptotic levels' range at each row", ("omega_check", "A_over_am:", "range")),
+)
+
+
+def measured_vs_predicted_parts(table: pd.DataFrame) -> list[tuple[str, pd.DataFrame]]:
+    """:func:`measured_vs_predicted` in the narrower tables of :data:`MEASURED_VS_PREDICTED_PARTS` (heading, rows).
+
+    Each keeps the row's test conditions (frequency, amplitude, withdrawal speed where shown); a part without a column
+    in ``table`` is left out.
+    """
+    keys = [c for c in ("frequency_hz", "h1_um", data.SPEED_COLUMN) if c in table.columns]
+    out = []
+    for heading, prefixes in MEASURED_VS_PREDICTED_PARTS:
+        columns = [c for c in table.columns if c not in keys and str(c).startswith(prefixes)]
+        if columns:
+            out.append((heading, table[keys + columns]))
+    return out

@@ -122,10 +122,12 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
         parts.append(fit_lead(fit))
         used = (html.escape(fit["status"]) if fit["data_rows"] else
                 "nothing is fitted: the figures use the published parameters")
+        fitted = fit_report.figures_fit(fit).drop(columns="reason")
         parts += [f"<h2>The fit (<a href=\"fit.html\">fit page</a>): the figures use the {used_set}</h2><p>"
                   f"{fit['data_rows']} measured rows in <code>data/pulloff.csv</code>; {used}.</p>",
-                  _table(fit_report.figures_fit(fit).drop(columns="reason"), fit_report.ESTIMATE_COLUMNS)]
+                  _table(fitted, fit_report.ESTIMATE_COLUMNS) if len(fitted) else ""]
     if "virtual_csv" in artefacts:
+        parts.insert(1, headline(amplification(artefacts["virtual_csv"])))
         fig4 = '<a href="fig4.html">Fig. 4</a>' if (Path(validation_index).parent / "fig4.html").exists() else "Fig. 4"
         page = fig4 if fit_json else '<a href="validation.html">validation page</a>'
         parts += [f"<h2>Pull-off amplification per model level against the SIMULATED pull-off ({page}) at the "
@@ -139,6 +141,39 @@ def findings(artefacts: Mapping[str, str | Path], validation_summary: str | Path
     else:
         parts.append(_validity_part(Path(validation_summary), Path(validation_index), published_set))
     return "\n".join(parts)
+
+
+def headline(table: pd.DataFrame) -> str:
+    """The index's first finding: the paper's formulas and the exact averaging against the SIMULATED pull-off.
+
+    ``table``: :func:`amplification` (rigid fixation, the figures' model); empty where the simulation found no
+    pull-off (the table's notes say so).
+    """
+    rigid = table[table["fixation"] == "rigid"].set_index("level")
+    label = {name: levels.level(name).label for name in ("leading", "refined", "exact_averaging")}
+    sim = rigid[rigid.index.str.endswith("(SIMULATED)")]
+    if sim.empty or not sim["points"].iloc[0] or label["leading"] not in rigid.index:
+        return ""
+    lead = rigid.loc[label["leading"]]
+    text = (f"<p class=\"lead\"><b>What the reproduction found.</b> At the paper's test conditions the SIMULATED "
+            f"pull-off of the full model (rigid fixation) is {significant(sim['ratio_min'].iloc[0], 3)}–"
+            f"{significant(sim['ratio_max'].iloc[0], 3)} times the static JKR force. The paper's leading-order "
+            f"formula predicts {significant(lead['ratio_min'], 3)}–{significant(lead['ratio_max'], 3)} times, "
+            f"{significant(-100 * lead['error_max'], 2)}–{significant(-100 * lead['error_min'], 2)} % below the "
+            "simulation" if lead["error_max"] < 0 else
+            f"<p class=\"lead\"><b>What the reproduction found.</b> The paper's leading-order formula errs by "
+            f"{_signed(100 * lead['error_min'])} % to {_signed(100 * lead['error_max'])} % against the "
+            "SIMULATED pull-off of the full model")
+    if label["exact_averaging"] in rigid.index:
+        exact = rigid.loc[label["exact_averaging"]]
+        text += (f"; the exact high-frequency averaging errs by {_signed(100 * exact['error_min'])} % to "
+                 f"{_signed(100 * exact['error_max'])} %")
+    return text + ".</p>"
+
+
+def _signed(percent: float) -> str:
+    """A per cent with its sign, two significant figures: ``−6.7``, ``+12``."""
+    return ("+" if percent > 0 else "−" if percent < 0 else "") + significant(abs(percent), 2)
 
 
 def _amplification_parts(table: pd.DataFrame) -> list[str]:

@@ -83,7 +83,9 @@ REPORT_JOBS: dict[str, tuple[str | None, tuple[str, ...]]] = {
 _INDEX_TEXT = {
     "index": (
         "reproduction report",
-        """<p>Figs. 3, 5, 6 and 8 reproduce the paper at the published Gent–Schultz parameters of
+        """<p>Every page is a notebook executed by papermill on the artefacts of the pipeline; the numbers behind
+  each figure are in <code>results/figN/figN.csv</code>.</p>
+  <p>Figs. 3, 5, 6 and 8 reproduce the paper at the published Gent–Schultz parameters of
   <code>data/setup.yaml</code>. Figs. 4 and 7 and the fit page show the measured rows of
   <code>data/pulloff.csv</code> with the fit the figures use (<code>fit.figures_use</code>); no measured pull-off
   forces are published in text form, so without your rows that fit is the published set. Series marked
@@ -193,12 +195,12 @@ ul.pages img {{ display: block; box-sizing: border-box; width: 100%; height: 10e
 </style></head>
 <body>
   <h1>An asymptotic model of vibroadhesion — {subtitle}</h1>
-  <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>. Every page is a
-  notebook executed by papermill on the artefacts of the pipeline;
-  the numbers behind each figure are in <code>results/figN/figN.csv</code>.</p>
-  {preamble}
+  <p>Argatov, Papangelo &amp; Ciavarella, <em>An asymptotic model of vibroadhesion</em>: what its reproduction
+  found.</p>
   {warning}
   {_FINDINGS[0]}{findings}{_FINDINGS[1]}
+  <h2>How this report was built</h2>
+  {preamble}
   <h2>Pages</h2>
   <ul class="pages">
 {items}

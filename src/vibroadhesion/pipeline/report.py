@@ -18,7 +18,7 @@ from vibroadhesion.core import groups, levels
 from vibroadhesion.core.records import PULLOFF_FOUND
 from vibroadhesion.experiments.pulloff import jkr_mN
 from vibroadhesion.pipeline import data
-from vibroadhesion.pipeline.tables import Column
+from vibroadhesion.pipeline.tables import Column, uniform
 
 #: How a page shows :func:`setup_table`: the values as typed in data/setup.yaml (all digits), the source as text.
 SETUP_COLUMNS = {"value": Column("value", format="exact"), "source": Column("source", format="text")}
@@ -147,3 +147,51 @@ def rule_timings(tsv_files: Sequence[str | Path]) -> pd.DataFrame:
         rows.append({"rule": Path(path).stem, "wall_s": float(t["s"].iloc[0]), "cpu_s": float(t["cpu_time"].iloc[0]),
                      "max_rss_MB": float(t["max_rss"].iloc[0])})
     return pd.DataFrame(rows)
+
+
+def footnoted_limits(limits_csv: str | Path) -> tuple[pd.DataFrame, str]:
+    """The withdrawal's speed limits (quasi_static_limits.csv) with the note that every row repeats as a footnote.
+
+    Per share (1 %, 5 %): the speed V/v0 where there is one (one format: :func:`uniform`), else the row's own note
+    in its place (no speed within that share); the method in words. The footnote is the note every row with a
+    speed carries, once.
+    """
+    limits = pd.read_csv(limits_csv)
+    out = limits[["fixation", "frequency_hz", "h1_um"]].copy()
+    notes: set[str] = set()
+    for share in ("1pct", "5pct"):
+        speed, note = limits[f"V_over_v0_within_{share}"], limits[f"note_{share}"].astype(str)
+        notes |= set(note[speed.notna()])
+        shown = iter(uniform([v for v in speed if math.isfinite(v)]))
+        out[f"V_over_v0_within_{share}"] = [next(shown) if math.isfinite(v) else n for v, n in zip(speed, note,
+                                                                                                 strict=True)]
+        out[f"method_{share}"] = limits[f"method_{share}"].astype(str).str.replace("_", " ").str.replace("/", " / ")
+    footnote = f"Every speed: {'; '.join(sorted(notes))}." if notes else ""
+    return out, footnote
+
+
+#: How a page shows the benchmark of every model level (results/benchmarks/speed_vs_error.csv) in ms and per cent.
+SPEED_COLUMNS = {"level": Column("model level", format="text"), "points": Column("points", format="int"),
+                 "fastest_ms": Column("time per point, fastest", "ms"),
+                 "median_ms": Column("time per point, median", "ms"),
+                 "slowest_ms": Column("slowest point, median", "ms"),
+                 "max_error_pct": Column("largest error vs simulation", "%"),
+                 "median_error_pct": Column("median error vs simulation", "%")}
+
+
+def speed_table(speed_csv: str | Path) -> pd.DataFrame:
+    """The benchmark of every model level: times per solved point in ms, errors against the simulation in per cent."""
+    table = pd.read_csv(speed_csv)
+    return pd.DataFrame({"level": [levels.level(str(m)).label for m in table["model"]], "points": table["points"],
+                         "fastest_ms": 1e3 * table["seconds_per_point_min"],
+                         "median_ms": 1e3 * table["seconds_per_point_median"],
+                         "slowest_ms": 1e3 * table["seconds_per_point_max"],
+                         "max_error_pct": 100 * table["max_relative_error_vs_simulation"],
+                         "median_error_pct": 100 * table["median_relative_error_vs_simulation"]})
+
+
+def benchmark_conditions(txt: str | Path) -> str:
+    """The lines of a benchmark's text report before its table (machine, load, repeats), as one paragraph."""
+    head = Path(txt).read_text(encoding="utf-8").split("\n\n")[0]
+    return " ".join(line.strip()[0].upper() + line.strip()[1:].rstrip(".") + "." for line in head.splitlines()
+                    if line.strip())

@@ -150,21 +150,77 @@ def specs(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
     for name in frame.columns:
         spec = column(str(name), columns, relative)
         listed = (columns and name in columns) or name in COLUMNS
-        out[str(name)] = spec if listed or pd.api.types.is_numeric_dtype(frame[name]) else replace(spec, format="text")
+        numeric = pd.api.types.is_numeric_dtype(frame[name]) and not pd.api.types.is_bool_dtype(frame[name])
+        out[str(name)] = spec if listed or numeric else replace(spec, format="text")
     return out
 
 
 def formatted(frame: pd.DataFrame, columns: Mapping[str, Column] | None = None,
               relative: bool = False) -> pd.DataFrame:
-    """``frame`` as the page shows it: strings, headers ``label (unit)``, the index (if named) as leading columns."""
+    """``frame`` as the page shows it: strings, headers ``label (unit)``, the index (if named) as leading columns.
+
+    A ``sig`` column has one number format (:func:`uniform`); a status or method column reads in words
+    (:func:`status_words`).
+    """
     if frame.index.names != [None]:
         frame = frame.reset_index()
-    return pd.DataFrame({spec.header: [_cell(value, spec.format) for value in frame[name]]
-                         for name, spec in specs(frame, columns, relative).items()})
+    out = {}
+    for name, spec in specs(frame, columns, relative).items():
+        values = list(frame[name])
+        if name.partition(":")[0].endswith("status") or name == "method":
+            values = [status_words(v) if isinstance(v, str) else v for v in values]
+        out[spec.header] = uniform(values) if spec.format == "sig" else [_cell(v, spec.format) for v in values]
+    return pd.DataFrame(out)
+
+
+#: Status codes of the artefacts as a reader says them (others: underscores read as spaces).
+STATUS_WORDS = {"pulloff": "pull-off found", "pull-off pulloff": "pull-off found", "ok": "ok"}
+
+
+def status_words(status: str) -> str:
+    """A status of an artefact in words: ``ok; pull-off pulloff`` -> ``ok; pull-off found``.
+
+    Each part of a status joined by "; " alike; a code not in :data:`STATUS_WORDS` reads with spaces for underscores
+    (``contact_loss`` -> ``contact loss``).
+    """
+    return "; ".join(STATUS_WORDS.get(part, part.replace("_", " ")) for part in status.split("; "))
+
+
+def uniform(values: list[object]) -> list[str]:
+    """A column of numbers in one format: the same significant figures and the same notation for every number.
+
+    Whole numbers below 1e5 as such. Else as many significant figures as the most precise value needs (at most
+    :data:`SIGNIFICANT`: 44.5 stays 44.5; 20, 59.99999 and 100.00001 read 20.00, 60.00 and 100.0), in plain notation
+    where every number lies in 1e-3 to 1e5 (or is 0), else all in scientific notation. Missing numbers read
+    :data:`MISSING`, words as they are.
+    """
+    numbers = [x for x in map(_number, values) if x is not None]
+    nonzero = [abs(x) for x in numbers if x != 0]
+    if all(x.is_integer() and abs(x) < 1e5 for x in numbers):
+        return [f"{x:.0f}" if (x := _number(v)) is not None else _cell(v, "text") for v in values]
+    digits = max((_figures(x) for x in nonzero), default=1)
+    plain = all(1e-3 <= x < 1e5 for x in nonzero)
+    return [(_plain(x, digits) if plain else f"{x:.{digits - 1}e}") if (x := _number(v)) is not None
+            else _cell(v, "text") for v in values]
+
+
+def _figures(x: float) -> int:
+    """The significant figures that show ``x`` exactly, at most :data:`SIGNIFICANT`."""
+    return next((k for k in range(1, SIGNIFICANT) if float(f"{x:.{k}g}") == x), SIGNIFICANT)
+
+
+def _plain(x: float, digits: int) -> str:
+    """``x`` to ``digits`` significant figures in plain notation, trailing zeros kept (``20.00``, ``100.0``)."""
+    if x == 0:
+        return f"{0:.{max(0, digits - 1)}f}"
+    rounded = float(f"{x:.{digits}g}")
+    return f"{rounded:.{max(0, digits - 1 - math.floor(math.log10(abs(rounded))))}f}"
 
 
 def _cell(value: object, format: Format) -> str:
-    """One cell in ``format`` (see the module docstring)."""
+    """One cell in ``format`` (see the module docstring); a boolean as yes or no."""
+    if isinstance(value, (bool, np.bool_)):
+        return "yes" if value else "no"
     if format == "text":
         return MISSING if _missing(value) else str(value)
     if format == "int":

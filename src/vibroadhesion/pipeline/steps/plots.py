@@ -13,7 +13,7 @@ import pandas as pd
 
 from vibroadhesion.core.groups import omega_check
 from vibroadhesion.experiments.pulloff import jkr_mN
-from vibroadhesion.pipeline import dynamics_figures, error_maps, figures
+from vibroadhesion.pipeline import dynamics_figures, error_maps, figures, page_figures
 from vibroadhesion.pipeline.data import read_canonical_pulloff, read_canonical_setup
 from vibroadhesion.pipeline.steps.inputs import experiment_omega_check, fitted, parameter_label, rig, setup_number
 
@@ -126,7 +126,7 @@ def validation_plot(setup_json: Path_, fit_json: Path_ | None, grid_csv: Path_, 
 
 def compliant_sweep_plot(csv: Path_, curve_csv: Path_, pdf: Path_, png: Path_) -> None:
     """The simulated sweep up and down over the refined curve of the same compliant case (Eqs. 87, 90)."""
-    figures.save_figure(figures.plot_compliant_sweep(pd.read_csv(csv), pd.read_csv(curve_csv)), pdf, png)
+    figures.save_figure(page_figures.plot_compliant_sweep(pd.read_csv(csv), pd.read_csv(curve_csv)), pdf, png)
 
 
 def withdrawal_plot(csv: Path_, pdf: Path_, png: Path_) -> None:
