@@ -75,19 +75,6 @@ def code(*sources):
     return import_closure(paths) + ["environment.lock"]
 
 
-# Snakemake 9 runs a Python `script:` as `{py_exec} {fname:q}` with the interpreter unquoted, so every such
-# rule fails when the .venv lies under a path with spaces (snakemake/snakemake#2645, open). There, and only
-# there, run it quoted; this project uses no conda environment or container, the cases the original handles.
-if any(c.isspace() for c in sys.executable):
-    from snakemake.script import PythonScript
-
-    def _execute_quoted(self, fname, edit=False):
-        """PythonScript.execute_script with the interpreter quoted for the shell."""
-        self._execute_cmd("{py_exec:q} {fname:q}", py_exec=sys.executable, fname=fname, is_python_script=True)
-
-    PythonScript.execute_script = _execute_quoted
-
-
 def parameter_inputs(wildcards):
     """The inputs that fix the parameter set ``wildcards.parameters`` (PUBLISHED or FITTED of fit.smk): an input
     function of rule virtual_pulloff."""
