@@ -107,12 +107,10 @@ rule validation:
 
 
 # After every run, finished or stopped by a failed job, the indexes mark the pages older than an artefact they
-# show: the report never presents a mix of outputs of two runs as one state. Then the run ends (common.smk).
+# show: the report never presents a mix of outputs of two runs as one state.
 onsuccess:
     refresh_report()
-    release_scheduler_timers()
 
 
 onerror:
     refresh_report()
-    release_scheduler_timers()

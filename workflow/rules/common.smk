@@ -1,6 +1,5 @@
 # Helpers shared by the rules: the rig's test conditions (read at DAG time) and each rule's code.
 import sys
-import threading
 
 import yaml
 
@@ -79,22 +78,6 @@ def parameter_inputs(wildcards):
     """The inputs that fix the parameter set ``wildcards.parameters`` (PUBLISHED or FITTED of fit.smk): an input
     function of rule virtual_pulloff."""
     return FITTED if wildcards.parameters == "fitted" else PUBLISHED
-
-
-def release_scheduler_timers():
-    """End of a run (the Snakefile's onsuccess and onerror, after Snakemake's scheduler has returned): cancel the
-    scheduler's pending re-evaluation timers, which only keep the interpreter from exiting.
-
-    Snakemake 9's scheduler arms a threading.Timer of the rate limiter's timespan (max-jobs-per-timespan,
-    profiles/default/config.yaml) after every scheduling round, and each finished job starts a new chain of them;
-    the default 100/1s made ~1000 rounds in a cold `all validation` (4 CPU-s of the 2 cores, where the jobs run)
-    and kept the process alive up to 1 s after the last job. The profile's 10000/10s makes a tenth of the rounds;
-    cancelling here ends the run when its jobs end (a path without the hooks, --no-hooks, waits up to 10 s)."""
-    for thread in threading.enumerate():
-        if isinstance(thread, threading.Timer) and "_schedule_reevalutation" in getattr(
-            thread.function, "__qualname__", ""
-        ):
-            thread.cancel()
 
 
 def refresh_report():
