@@ -10,21 +10,6 @@ from vibroadhesion.pipeline.pages import findings_inputs, findings_outdated, ref
 # (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
 PYTHON = sys.executable
 
-# Job priorities (Snakemake starts the ready job of highest priority first, and does not pass a job's priority on to
-# the jobs it waits for), highest first; the aim is a run that ends on the two report index jobs side by side:
-# - the setup and the compiled kernels, which every job or every simulation waits for;
-GATE_PRIORITY = 30
-# - the chain from the measured rows to Figs. 4 and 7 (ingest, fit, tables, plot: about 3.5 s in all), which gates
-#   their pages and the fit page;
-PULLOFF_CHAIN_PRIORITY = 10
-# - the validation's gathers and plots and the pages of Figs. 3, 5, 6 and 8 (under 3 s each), as soon as their inputs
-#   are there: at default priority they waited for every long job and then ran one after another before the last page;
-GATHER_PRIORITY = 8
-# - the validation's long jobs, longest first: the 5-7 s ones (the withdrawal sweep of a fixation, the rig comparison,
-#   the identifiability fits), then the 1.5-4 s ones (slow flow, sensitivities, compliant sweep, benchmarks).
-LONGEST_JOB_PRIORITY = 6
-LONG_JOB_PRIORITY = 5
-
 FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
 
