@@ -11,6 +11,14 @@ from vibroadhesion.core.levels import names
 from vibroadhesion.pipeline.data import DataError, check_inputs
 
 min_version("9.0")
+# Snakemake runs a Python `script:` as `{py_exec} {fname:q}`, the interpreter unquoted (snakemake/snakemake#2645):
+# under a path with whitespace every such rule would fail; refused here, before any job, with the way round it.
+if any(c.isspace() for c in sys.executable):
+    sys.exit(
+        f"error: the Python interpreter's path has whitespace ({sys.executable}), which Snakemake's script: rules "
+        "cannot run (snakemake/snakemake#2645): create the .venv under a path without any, or run "
+        "`<link>/bin/python -m snakemake` through a symbolic link to the .venv whose path has none"
+    )
 
 
 configfile: "workflow/config.yaml"
@@ -99,12 +107,10 @@ rule validation:
 
 
 # After every run, finished or stopped by a failed job, the indexes mark the pages older than an artefact they
-# show: the report never presents a mix of outputs of two runs as one state. Then the run ends (common.smk).
+# show: the report never presents a mix of outputs of two runs as one state.
 onsuccess:
     refresh_report()
-    release_scheduler_timers()
 
 
 onerror:
     refresh_report()
-    release_scheduler_timers()

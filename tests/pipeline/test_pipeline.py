@@ -5,8 +5,8 @@ run has nothing to do; a data edit reruns the fit, the figures and the report an
 else; a code edit reruns exactly the rules whose step imports the module, checked against an
 independent record of the imports (the modules Python loads, and the import instructions in the
 bytecode of every function); bad input stops the run with one line naming file, row and column
-and leaves no partial outputs; the rules run from a path with spaces, the project's and the
-interpreter's), the papermill convention of exactly one ``parameters`` cell, and byte-level
+and leaves no partial outputs; the rules run with the project under a path with spaces, and an interpreter under
+one is refused with one line), the papermill convention of exactly one ``parameters`` cell, and byte-level
 determinism of the writers.
 """
 
@@ -440,14 +440,23 @@ def test_editing_a_module_reruns_exactly_the_rules_whose_step_imports_it(pipelin
 
 
 @pytest.mark.pipeline
-def test_rules_run_with_project_and_interpreter_under_paths_with_spaces(tmp_path: Path) -> None:
+def test_rules_run_with_the_project_under_a_path_with_spaces(tmp_path: Path) -> None:
+    """The project under a path with spaces builds; an interpreter under one is refused before any job, in one line
+    naming the way round it (Snakemake runs a `script:` rule's interpreter unquoted, snakemake/snakemake#2645)."""
     (tmp_path / "a project with spaces").mkdir()
     work = _copy_repo(tmp_path / "a project with spaces")
+    targets = ["results/fit/gent_schultz.json", "results/report/fig3.html"]
+    env = {**os.environ, "PATH": os.defpath}
     (work / "the venv").symlink_to(Path(sys.prefix), target_is_directory=True)
-    python = work / "the venv" / "bin" / "python"
-    out = subprocess.run([str(python), "-m", "snakemake", "-c2", "results/fit/gent_schultz.json",
-                          "results/report/fig3.html"], cwd=work,
-                         capture_output=True, text=True, timeout=900, env={**os.environ, "PATH": os.defpath})
+    refused = subprocess.run([str(work / "the venv" / "bin" / "python"), "-m", "snakemake", "-c2", *targets], cwd=work,
+                             capture_output=True, text=True, timeout=900, env=env)
+    assert refused.returncode != 0
+    lines = [ln for ln in (refused.stdout + refused.stderr).splitlines() if ln.startswith("error:")]
+    assert len(lines) == 1 and "the venv" in lines[0] and "symbolic link" in lines[0], refused.stderr[-4000:]
+    assert not (work / "results").exists()
+    (tmp_path / "venv").symlink_to(Path(sys.prefix), target_is_directory=True)
+    out = subprocess.run([str(tmp_path / "venv" / "bin" / "python"), "-m", "snakemake", "-c2", *targets], cwd=work,
+                         capture_output=True, text=True, timeout=900, env=env)
     assert out.returncode == 0, out.stderr[-4000:]
     for artefact in ("fit/gent_schultz.json", "fig3/fig3.csv", "fig3/fig3.png", "report/fig3.html"):
         assert (work / "results" / artefact).stat().st_size > 0, artefact

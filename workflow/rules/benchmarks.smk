@@ -15,7 +15,6 @@ rule benchmark_j_integrals:
         txt="results/benchmarks/j_integrals.txt",
     log:
         "results/logs/benchmark_j_integrals.log",
-    priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:
@@ -43,7 +42,6 @@ rule benchmark_simulate:
         ),
     log:
         "results/logs/benchmark_simulate.log",
-    priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:
@@ -72,7 +70,6 @@ rule benchmark_speed_vs_error:
         pdf="results/benchmarks/speed_vs_error.pdf",
     log:
         "results/logs/benchmark_speed_vs_error.log",
-    priority: LONG_JOB_PRIORITY
     params:
         python=PYTHON,
     shell:

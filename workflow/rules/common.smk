@@ -1,6 +1,5 @@
 # Helpers shared by the rules: the rig's test conditions (read at DAG time) and each rule's code.
 import sys
-import threading
 
 import yaml
 
@@ -10,21 +9,6 @@ from vibroadhesion.pipeline.pages import findings_inputs, findings_outdated, ref
 # Each step is workflow/scripts/<name>.py, run by `script:` with the interpreter that runs Snakemake
 # (sys.executable: the project's .venv, activated or not); the shell commands use the same one.
 PYTHON = sys.executable
-
-# Job priorities (Snakemake starts the ready job of highest priority first, and does not pass a job's priority on to
-# the jobs it waits for), highest first; the aim is a run that ends on the two report index jobs side by side:
-# - the setup and the compiled kernels, which every job or every simulation waits for;
-GATE_PRIORITY = 30
-# - the chain from the measured rows to Figs. 4 and 7 (ingest, fit, tables, plot: about 3.5 s in all), which gates
-#   their pages and the fit page;
-PULLOFF_CHAIN_PRIORITY = 10
-# - the validation's gathers and plots and the pages of Figs. 3, 5, 6 and 8 (under 3 s each), as soon as their inputs
-#   are there: at default priority they waited for every long job and then ran one after another before the last page;
-GATHER_PRIORITY = 8
-# - the validation's long jobs, longest first: the 5-7 s ones (the withdrawal sweep of a fixation, the rig comparison,
-#   the identifiability fits), then the 1.5-4 s ones (slow flow, sensitivities, compliant sweep, benchmarks).
-LONGEST_JOB_PRIORITY = 6
-LONG_JOB_PRIORITY = 5
 
 FIGURES = ["fig3", "fig4", "fig5", "fig6", "fig7", "fig8"]
 
@@ -75,39 +59,10 @@ def code(*sources):
     return import_closure(paths) + ["environment.lock"]
 
 
-# Snakemake 9 runs a Python `script:` as `{py_exec} {fname:q}` with the interpreter unquoted, so every such
-# rule fails when the .venv lies under a path with spaces (snakemake/snakemake#2645, open). There, and only
-# there, run it quoted; this project uses no conda environment or container, the cases the original handles.
-if any(c.isspace() for c in sys.executable):
-    from snakemake.script import PythonScript
-
-    def _execute_quoted(self, fname, edit=False):
-        """PythonScript.execute_script with the interpreter quoted for the shell."""
-        self._execute_cmd("{py_exec:q} {fname:q}", py_exec=sys.executable, fname=fname, is_python_script=True)
-
-    PythonScript.execute_script = _execute_quoted
-
-
 def parameter_inputs(wildcards):
     """The inputs that fix the parameter set ``wildcards.parameters`` (PUBLISHED or FITTED of fit.smk): an input
     function of rule virtual_pulloff."""
     return FITTED if wildcards.parameters == "fitted" else PUBLISHED
-
-
-def release_scheduler_timers():
-    """End of a run (the Snakefile's onsuccess and onerror, after Snakemake's scheduler has returned): cancel the
-    scheduler's pending re-evaluation timers, which only keep the interpreter from exiting.
-
-    Snakemake 9's scheduler arms a threading.Timer of the rate limiter's timespan (max-jobs-per-timespan,
-    profiles/default/config.yaml) after every scheduling round, and each finished job starts a new chain of them;
-    the default 100/1s made ~1000 rounds in a cold `all validation` (4 CPU-s of the 2 cores, where the jobs run)
-    and kept the process alive up to 1 s after the last job. The profile's 10000/10s makes a tenth of the rounds;
-    cancelling here ends the run when its jobs end (a path without the hooks, --no-hooks, waits up to 10 s)."""
-    for thread in threading.enumerate():
-        if isinstance(thread, threading.Timer) and "_schedule_reevalutation" in getattr(
-            thread.function, "__qualname__", ""
-        ):
-            thread.cancel()
 
 
 def refresh_report():

@@ -17,9 +17,6 @@ rule fig3_fig6_fig8_data:
         "results/logs/fig3_fig6_fig8_data.log",
     benchmark:
         "results/benchmarks/rules/fig3_fig6_fig8_data.tsv"
-    # With fig5_data and the rigid grid, ahead of the pull-off chain: Figs. 3, 5, 6 and 8 are drawn in one process,
-    # the longest job of the default target, which starts only once all four tables and the grid are there.
-    priority: 20
     params:
         fig3=config["fig3"],
         fig6=config["fig6"],
@@ -39,7 +36,6 @@ rule fig4_fig7_data:
         "results/logs/fig4_fig7_data.log",
     benchmark:
         "results/benchmarks/rules/fig4_fig7_data.tsv"
-    priority: PULLOFF_CHAIN_PRIORITY
     params:
         fig4=config["fig4"],
         fig7=config["fig7"],
@@ -63,7 +59,6 @@ rule fig5_data:
         "results/logs/fig5_data.log",
     benchmark:
         "results/benchmarks/rules/fig5_data.tsv"
-    priority: 20
     params:
         lo=config["fig5"]["omega_bar_min"],
         hi=config["fig5"]["omega_bar_max"],
@@ -93,15 +88,11 @@ PLOT_EXTRAS = {
     },
     "fig8": {},
 }
-# The figures in two plot jobs (one matplotlib process each). Figs. 3, 5, 6 and 8 take the longest (Fig. 6 most): with
-# the tables and the rigid grid they wait for, they are the longest chain of the default target and go first
-# (priority 20); Figs. 4 and 7, which overlay the simulated pull-off, are computed and drawn on the other core
-# meanwhile (PULLOFF_CHAIN_PRIORITY, common.smk).
+# The figures in two plot jobs (one matplotlib process each).
 FIGURE_GROUPS = {"pulloff": ["fig4", "fig7"], "steady": ["fig3", "fig5", "fig6", "fig8"]}
 PLOT_RULE = {fig: f"plot_{group}_figures" for group, figs in FIGURE_GROUPS.items() for fig in figs}
 # Figs. 4 and 7 show the measured rows, so they take the fit the figures use; the others reproduce the paper.
 GROUP_PARAMETERS = {"pulloff": FITTED, "steady": PUBLISHED}
-GROUP_PRIORITY = {"pulloff": PULLOFF_CHAIN_PRIORITY, "steady": 20}
 
 
 for group, figs in FIGURE_GROUPS.items():
@@ -121,7 +112,6 @@ for group, figs in FIGURE_GROUPS.items():
             },
         log:
             f"results/logs/plot_{group}_figures.log",
-        priority: GROUP_PRIORITY[group]
         localrule: True
         params:
             panel_n=config["fig3"]["panel_n"],

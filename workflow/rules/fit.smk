@@ -10,7 +10,6 @@ rule fit_gent_schultz:
         "results/logs/fit_gent_schultz.log",
     benchmark:
         "results/benchmarks/rules/fit_gent_schultz.tsv"
-    priority: PULLOFF_CHAIN_PRIORITY
     params:
         figures_use=config["fit"]["figures_use"],
         judgement={key: config["fit"][key] for key in ("relative_scatter", "alpha", "confidence")},

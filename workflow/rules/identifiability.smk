@@ -32,7 +32,6 @@ rule pulloff_sensitivity:
         "results/benchmarks/rules/pulloff_sensitivity_{frequency}Hz.tsv"
     wildcard_constraints:
         frequency=r"[0-9._e+-]+",
-    priority: LONG_JOB_PRIORITY
     params:
         amplitudes=DESIGN["amplitudes_um"],
     script:
@@ -53,7 +52,6 @@ rule identifiability_fit:
         "results/benchmarks/rules/identifiability_fit_{model}.tsv"
     wildcard_constraints:
         model="|".join(FITTED_LEVELS),
-    priority: LONGEST_JOB_PRIORITY
     script:
         "../scripts/identifiability_fit.py"
 
@@ -83,7 +81,6 @@ rule identifiability:
         ),
     log:
         "results/logs/identifiability.log",
-    priority: GATHER_PRIORITY
     params:
         noise=config["identifiability"]["relative_noise"],
     script:
@@ -109,7 +106,6 @@ rule identifiability_design:
         ),
     log:
         "results/logs/identifiability_design.log",
-    priority: GATHER_PRIORITY
     params:
         noise=config["identifiability"]["relative_noise"],
         added=DESIGN["added_tests"],
@@ -134,7 +130,6 @@ rule fit_coverage:
         "results/logs/fit_coverage.log",
     benchmark:
         "results/benchmarks/rules/fit_coverage.tsv"
-    priority: LONG_JOB_PRIORITY
     params:
         level=COVERAGE["level"],
         relative_scatter=COVERAGE["relative_scatter"],

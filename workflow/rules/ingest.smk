@@ -13,7 +13,6 @@ rule ingest_setup:
         "results/data/setup.json",
     log:
         "results/logs/ingest_setup.log",
-    priority: GATE_PRIORITY
     script:
         "../scripts/ingest_setup.py"
 
@@ -29,7 +28,5 @@ rule ingest_pulloff:
         "results/data/pulloff.csv",
     log:
         "results/logs/ingest_pulloff.log",
-    # The measured rows gate the fit and Figs. 4 and 7 (PULLOFF_CHAIN_PRIORITY, common.smk).
-    priority: PULLOFF_CHAIN_PRIORITY
     script:
         "../scripts/ingest_pulloff.py"

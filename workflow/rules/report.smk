@@ -115,14 +115,8 @@ def asked_report_inputs(job, wildcards):
     return report_inputs(REPORT_JOBS[job][1])
 
 
-# The pages of Figs. 3, 5, 6 and 8 need only the paper's figures, drawn early: rendered as soon as they are (with the
-# gathers), they leave the end of the run to the two index jobs, which wait for the last artefacts; of those, the
-# validation index (five pages, the longest) starts first.
-REPORT_PRIORITY = {"report_pages": GATHER_PRIORITY, "report_validation_index": 1}
-
-
-# One job per entry of REPORT_JOBS renders its pages in one kernel (pipeline.steps.report): starting a kernel per
-# page cost as much as executing it. A page's output is its executed notebook and its HTML page; the job of an
+# One job per entry of REPORT_JOBS renders its pages in one kernel (pipeline.steps.report): a kernel's start
+# costs about as much as executing a page. A page's output is its executed notebook and its HTML page; the job of an
 # index also writes the index.
 for job, (index, pages) in REPORT_JOBS.items():
 
@@ -137,7 +131,6 @@ for job, (index, pages) in REPORT_JOBS.items():
             index=[f"results/report/{index}.html"] if index else [],
         log:
             f"results/logs/{job}.log",
-        priority: REPORT_PRIORITY.get(job, 0)
         localrule: True
         params:
             pages={stem: page_parameters(stem) for stem in pages},

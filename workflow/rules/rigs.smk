@@ -10,8 +10,7 @@ rule rigs_part:
     input:
         **PUBLISHED,
         kernels=rules.simulation_kernels.output[0],
-        # The base rig's pull-offs at the test frequencies: the compliant virtual pull-off's (the same families), its
-        # parts (priority 10: ready early, so this job is too).
+        # The base rig's pull-offs at the test frequencies: the compliant virtual pull-off's (the same families).
         virtual=expand(
             rules.virtual_pulloff.output[0], parameters="published", fixation="compliant", frequency=FREQUENCY_JOBS
         ),
@@ -24,7 +23,6 @@ rule rigs_part:
         "results/benchmarks/rules/rigs_part_{case}.tsv"
     wildcard_constraints:
         case=r"(antiresonance|[0-9.]+)(_(antiresonance|[0-9.]+))*",
-    priority: LONGEST_JOB_PRIORITY
     script:
         "../scripts/rigs_part.py"
 
@@ -49,7 +47,6 @@ rule rigs_gather:
         ),
     log:
         "results/logs/rigs_gather.log",
-    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/rigs_gather.py"
@@ -64,7 +61,6 @@ rule rigs_plot:
         png=report("results/validation/rig_comparison.png", caption="../report/rigs.rst", category="Rigs"),
     log:
         "results/logs/rigs_plot.log",
-    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/rigs_plot.py"

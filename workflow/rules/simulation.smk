@@ -6,7 +6,6 @@ rule simulation_kernels:
         "results/simulation/kernels.txt",
     log:
         "results/logs/simulation_kernels.log",
-    priority: GATE_PRIORITY
     script:
         "../scripts/simulation_kernels.py"
 
@@ -31,9 +30,6 @@ rule simulation_rigid:
         "results/benchmarks/rules/simulation_rigid_h1_{h1}.tsv"
     wildcard_constraints:
         h1=r"[0-9._e+-]+",
-    # With the rigid grid, Figs. 3, 5, 6 and 8's tables and their plot (priority 20 each), the longest chain of the
-    # default target: ahead of the virtual pull-off (10), whose chain to Figs. 4 and 7 is shorter.
-    priority: 20
     params:
         lo=config["validation"]["log10_omega_check_min"],
         hi=config["validation"]["log10_omega_check_max"],
@@ -50,7 +46,6 @@ rule simulation_rigid_grid:
         "results/simulation/rigid_grid.csv",
     log:
         "results/logs/simulation_rigid_grid.log",
-    priority: 20
     script:
         "../scripts/simulation_rigid_grid.py"
 
@@ -79,9 +74,6 @@ rule virtual_pulloff:
         parameters="published|fitted",
         fixation="rigid|compliant",
         frequency=r"[0-9._]+",
-    # The second longest chain of the default target (virtual pull-off -> Figs. 4, 7 -> their pages), after the rigid
-    # grid's (simulation_rigid, 20): started early, the shorter jobs fill the other core around them.
-    priority: 10
     script:
         "../scripts/virtual_pulloff.py"
 
@@ -100,9 +92,6 @@ rule virtual_pulloff_fixation:
     wildcard_constraints:
         parameters="published|fitted",
         fixation="rigid|compliant",
-    # Under a second, and on two long chains: the rigid table to Figs. 4 and 7, the compliant one to the withdrawal
-    # sweep (its longest jobs): run as soon as the parts are, not after every job of default priority.
-    priority: 10
     script:
         "../scripts/virtual_pulloff_fixation.py"
 
@@ -116,7 +105,6 @@ rule virtual_pulloff_gather:
         "results/simulation/virtual_pulloff.csv",
     log:
         "results/logs/virtual_pulloff_gather.log",
-    priority: GATHER_PRIORITY
     script:
         "../scripts/virtual_pulloff_gather.py"
 

@@ -23,8 +23,6 @@ rule validation_errors:
         ),
     log:
         "results/logs/validation_errors.log",
-    # Under a second, and it gates the speed-against-error benchmark and the error maps.
-    priority: GATHER_PRIORITY
     script:
         "../scripts/validation_errors.py"
 
@@ -40,7 +38,6 @@ rule validation_plot:
         png=report("results/validation/rigid_error_maps.png", caption="../report/validation.rst", category="Validation"),
     log:
         "results/logs/validation_plot.log",
-    priority: GATHER_PRIORITY
     script:
         "../scripts/validation_plot.py"
 
@@ -64,7 +61,6 @@ rule validation_compliant:
         "results/logs/validation_compliant.log",
     benchmark:
         "results/benchmarks/rules/validation_compliant.tsv"
-    priority: LONG_JOB_PRIORITY
     params:
         sweep=config["validation"]["compliant_sweep"],
         curve_range=[config["fig5"]["omega_bar_min"], config["fig5"]["omega_bar_max"]],
@@ -84,6 +80,5 @@ rule validation_compliant_plot:
         ),
     log:
         "results/logs/validation_compliant_plot.log",
-    priority: GATHER_PRIORITY
     script:
         "../scripts/validation_compliant_plot.py"

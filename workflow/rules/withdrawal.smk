@@ -23,7 +23,6 @@ rule withdrawal:
     wildcard_constraints:
         fixation="rigid|compliant",
         frequency=r"[0-9.]+(_[0-9.]+)*",
-    priority: LONGEST_JOB_PRIORITY
     params:
         speed_ratios=lambda wildcards: config["withdrawal"]["speed_ratios"][wildcards.fixation],
         stop=lambda wildcards: config["withdrawal"]["stop"][wildcards.fixation],
@@ -42,7 +41,6 @@ rule withdrawal_slow_flow:
         "results/logs/withdrawal_slow_flow.log",
     benchmark:
         "results/benchmarks/rules/withdrawal_slow_flow.tsv"
-    priority: LONG_JOB_PRIORITY
     params:
         speed_ratios=config["withdrawal"]["slow_flow_speed_ratios"],
     script:
@@ -71,7 +69,6 @@ rule withdrawal_gather:
         ),
     log:
         "results/logs/withdrawal_gather.log",
-    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/withdrawal_gather.py"
@@ -86,7 +83,6 @@ rule withdrawal_plot:
         png=report("results/withdrawal/speed_sweep.png", caption="../report/withdrawal.rst", category="Withdrawal"),
     log:
         "results/logs/withdrawal_plot.log",
-    priority: GATHER_PRIORITY
     localrule: True
     script:
         "../scripts/withdrawal_plot.py"

@@ -34,9 +34,9 @@ def rigs_part(setup_json: str | Path, virtual_csvs: Sequence[str | Path], out: s
 
     Published parameters (the validation's); the rows of :func:`case_table` of each case (Figs. 1, 2; Eqs. 11, 13),
     in the order given. ``virtual_csvs``: the virtual pull-off jobs' parts of the compliant fixation at the published
-    parameters (results/simulation/published/virtual_pulloff/compliant_*Hz.csv: ready early, their rule has the
-    pipeline's priority), whose simulated rows are the base rig's pull-offs at the test frequencies (the same
-    families: equal to 6e-14, the rounding of omega_check; not traced again).
+    parameters (results/simulation/published/virtual_pulloff/compliant_*Hz.csv), whose simulated rows are the base
+    rig's pull-offs at the test frequencies (the same families: equal to 6e-14, the rounding of omega_check; not
+    traced again).
     """
     virtual = pd.concat([pd.read_csv(p) for p in virtual_csvs], ignore_index=True)
     setup, params, chi0 = rig(setup_json)
