@@ -73,7 +73,7 @@ def main(argv: list[str] | None = None) -> None:
     parser.add_argument("b", type=Path, help="checkout B (the change)")
     parser.add_argument("targets", nargs="*", help="Snakemake targets (default: the default target)")
     parser.add_argument("--repeats", type=int, default=3)
-    args = parser.parse_args(argv)
+    args = parser.parse_intermixed_args(argv)  # --repeats before, between or after the positionals
     checkouts = {"A": args.a.resolve(), "B": args.b.resolve()}
     print(table(checkouts, measure(checkouts, args.repeats, args.targets)))
 
