@@ -174,8 +174,12 @@ def validation(errors_csv: Path_, summary_csv: Path_, setup_json: Path_) -> str:
     return (f"At the paper's test conditions the paper's formulas (leading order and refined) miss the simulated "
             f"effective work of adhesion w_eff by {_percent_span([by.min()['refined'], by.max()['refined']])}; exact "
             f"harmonic balance misses it as much ({_percent_span([by.max()['exact_hb']])} at most). The most accurate "
-            f"level there, {levels.level(str(best)).label}, errs by up to "
-            f"{significant(100 * summary.loc[best, 'max_error_experiments_applicable'], 2)} % in any quantity.")
+            f"level there, {_errs_by(best, summary.loc[best, 'max_error_experiments_applicable'])} in any quantity.")
+
+
+def _errs_by(model: object, relative_error: float) -> str:
+    """``<level label>, errs by up to <x> %``: the most accurate level of a lead and its largest relative error."""
+    return f"{levels.level(str(model)).label}, errs by up to {significant(100 * float(relative_error), 2)} %"
 
 
 def rigs(equivalence_csv: Path_) -> str:
@@ -200,8 +204,8 @@ def benchmarks(speed_csv: Path_) -> str:
     row = levels_only.loc[best]
     return (f"Every asymptotic level solves a test point in {_span(1e3 * levels_only['seconds_per_point_median'], 2)}"
             f" ms, the direct simulation in {significant(1e3 * sim['seconds_per_point_median'], 2)} ms. The most "
-            f"accurate level, {levels.level(str(best)).label}, errs by up to "
-            f"{significant(100 * row['max_relative_error_vs_simulation'], 2)} % at the test conditions, the others by "
+            f"accurate level, {_errs_by(best, row['max_relative_error_vs_simulation'])} at the test conditions, the "
+            f"others by "
             f"up to {_percent_span([levels_only['max_relative_error_vs_simulation'].max()])}.")
 
 

@@ -40,17 +40,15 @@ def _markdown(frame: pd.DataFrame) -> str:
     return "\n".join(lines) + "\n"
 
 
-def machine_line(results: Path) -> str:
-    """The machine of the run, as the J-integral benchmark recorded it (its first line, after "on", without repeats)."""
-    first = (results / J_INTEGRALS_TEXT).read_text(encoding="utf-8").splitlines()[0]
-    machine = first.split(" on ", 1)[1] if " on " in first else first
-    return re.sub(r", \d+ repeats in turn$", "", machine)
+def machine_and_load(results: Path) -> tuple[str, str]:
+    """The machine and its load at the start, as the J-integral benchmark recorded them (its first two lines).
 
-
-def load_line(results: Path) -> str:
-    """The machine's load when the J-integral benchmark started, as it recorded it (its second line)."""
-    second = (results / J_INTEGRALS_TEXT).read_text(encoding="utf-8").splitlines()[1]
-    return second.split(": ", 1)[1] if ": " in second else second
+    The machine is what follows "on" in the first line, without the count of repeats; the load what follows the
+    colon of the second.
+    """
+    first, second = (results / J_INTEGRALS_TEXT).read_text(encoding="utf-8").splitlines()[:2]
+    machine = re.sub(r", \d+ repeats in turn$", "", first.split(" on ", 1)[-1])
+    return machine, second.split(": ", 1)[-1]
 
 
 def rules_table(results: Path) -> pd.DataFrame:
@@ -85,8 +83,9 @@ def j_integrals_table(results: Path) -> pd.DataFrame:
 def performance_markdown(results: str | Path) -> str:
     """The whole of docs/performance.md, from the artefacts under ``results``."""
     root = Path(results)
+    machine, load = machine_and_load(root)
     return "\n".join([
-        INTRO.format(machine=machine_line(root), load=load_line(root)),
+        INTRO.format(machine=machine, load=load),
         "## Jobs\n\nEach job of the run with a Snakemake `benchmark:` file (one run, interpreter start-up included).\n",
         _markdown(rules_table(root)),
         "## Model levels: speed against error\n\nAt the rig's 15 test conditions, each point solved 5 times per "
